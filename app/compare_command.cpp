@@ -1,0 +1,146 @@
+#include "app/compare_command.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+
+#include "app/flag_checks.h"
+#include "studies/comparison.h"
+#include "studies/comparison_json.h"
+#include "studies/comparison_plot.h"
+#include "studies/history_csv.h"
+
+namespace shockmap {
+namespace {
+
+struct CompareFlags {
+  CantileverImpact problem;
+  ComparisonOptions options;
+  double dt_s = 0.0;
+  std::string dt_rule = "sharp";
+  std::string scheme = "explicit-modal";
+  std::string out_dir;
+  bool json = false;
+  bool plot = false;
+};
+
+std::string Scored(const std::optional<double>& v, const char* format) {
+  return v ? fmt::format(fmt::runtime(format), *v) : "not scored";
+}
+
+void PrintShock(const char* label, const std::vector<Shock>& shocks) {
+  if (shocks.empty()) {
+    fmt::print("  first shock, {:<9} none in the window\n", label);
+    return;
+  }
+  const Shock& s = shocks.front();
+  fmt::print(
+      "  first shock, {:<9} t = {:.5f} s, impulse {:.4g} N s, peak {:.4g} N, {:.3g} ms, {} "
+      "rebounds\n",
+      label, s.start_s, s.impulse_n_s, s.peak_force_n, 1e3 * s.Duration(), s.Rebounds());
+}
+
+void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
+  const auto& ref = r.reference;
+  fmt::print("shockmap compare: R_k = {:g}, R_ftrunc = {:g}, {}, window [0, {:g}] s\n",
+             f.problem.r_k, f.options.r_ftrunc, ToString(f.options.scheme), f.options.window_s);
+  fmt::print("  status            {}{}\n", r.status,
+             r.message.empty() ? "" : " (" + r.message + ")");
+  fmt::print("  Err               {}  (eq. 8, PSD of the tip displacement)\n",
+             Scored(r.err, "{:.4f}"));
+  fmt::print("  SRf               {}  (eq. 9, impulse of the first shock)\n",
+             Scored(r.srf, "{:.4f}"));
+  fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
+             r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", r.numerical.dt_used_s,
+             r.numerical.dt_requested_s, r.numerical.steps_taken);
+  fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
+             r.bounds.dt_paper_s, r.bounds.dt_sharp_s);
+  fmt::print(
+      "  reference         R_fref = {:g} ({} free / {} contact modes, {} transitions), "
+      "differs from R_fref = {:g} by {:.2e} of the amplitude\n",
+      ref.convergence.r_fref, ref.summary.n_modes_free, ref.summary.n_modes_contact,
+      ref.summary.n_transitions, ref.convergence.r_fref_check, ref.convergence.difference);
+  PrintShock("numerical", r.shocks_numerical);
+  PrintShock("reference", ref.shocks);
+  fmt::print("  wall time         reference {:.4f} s, numerical {:.6f} s (CPU {:.6f} s)\n",
+             ref.wall_s, r.numerical.wall_s, r.numerical.cpu_s);
+}
+
+void Run(const CompareFlags& flags) {
+  CompareFlags f = flags;
+  if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
+  f.options.dt.rule = *DtRuleFromString(f.dt_rule);
+  f.options.scheme = *SchemeFromString(f.scheme);
+  std::string error;
+  if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
+
+  const ComparisonResult result = RunComparison(f.problem, f.options);
+  if (f.json) {
+    std::cout << ComparisonToJson(f.problem, f.options, result).dump(2) << '\n';
+  } else {
+    PrintHuman(f, result);
+  }
+  if (!f.out_dir.empty()) {
+    WriteComparisonCsv(result, f.out_dir);
+    if (f.plot) {
+      const auto png = PlotComparison(result, f.problem, f.options, f.out_dir);
+      if (!f.json) fmt::print("  plot              {}\n", png.string());
+    }
+    if (!f.json) fmt::print("  histories         {}/numerical.csv, reference.csv\n", f.out_dir);
+  }
+}
+
+}  // namespace
+
+void AddCompareCommand(CLI::App& app) {
+  auto flags = std::make_shared<CompareFlags>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Run the numerical solver and the semi-analytical reference on the paper's "
+      "beam-impact problem and score them (Err, SRf)");
+  cmd->add_option("--rk", flags->problem.r_k, "stiffness ratio R_k = k_s / K_bend")
+      ->required()
+      ->check(Positive());
+  cmd->add_option("--rftrunc", flags->options.r_ftrunc, "modal truncation ratio f_trunc / f1")
+      ->required()
+      ->check(FiniteAbove(1.0, false));
+  auto* dt = cmd->add_option("--dt", flags->dt_s, "time step in seconds")->check(Positive());
+  cmd->add_option("--dt-factor", flags->options.dt.factor,
+                  "time step as a factor of the bound chosen by --dt-rule")
+      ->capture_default_str()
+      ->check(Positive())
+      ->excludes(dt);
+  cmd->add_option("--dt-rule", flags->dt_rule,
+                  "bound --dt-factor applies to: paper = 1/(4 f_trunc), sharp = 2/omega_max")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"paper", "sharp"}))
+      ->excludes(dt);
+  cmd->add_option("--window", flags->options.window_s, "observation window in seconds")
+      ->capture_default_str()
+      ->check(Positive());
+  cmd->add_option("--scheme", flags->scheme, "numerical scheme")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"explicit-modal", "implicit-full"}));
+  cmd->add_option("--rfref", flags->options.reference.r_fref,
+                  "truncation ratio of the reference f_ref / f1")
+      ->capture_default_str()
+      ->check(FiniteAbove(1.0, false));
+  cmd->add_option("--elements", flags->options.n_elements,
+                  "finite elements of the beam (0: enough for every retained mode)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 100000));
+  cmd->add_option("--out", flags->out_dir, "directory for the CSV histories (and the plot)");
+  cmd->add_flag("--json", flags->json, "print the result as one JSON object");
+  cmd->add_flag("--plot", flags->plot,
+                "draw the histories as the paper's Fig. 3 (PNG, needs --out)");
+  cmd->callback([flags, cmd] {
+    if (flags->plot && flags->out_dir.empty()) {
+      throw CLI::ValidationError("--plot", "needs --out DIR to write the CSV files and PNG into");
+    }
+    Run(*flags);
+  });
+}
+
+}  // namespace shockmap

@@ -1,0 +1,30 @@
+#include "app/flag_checks.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace shockmap {
+
+CLI::Validator FiniteAbove(double lo, bool strict) {
+  std::ostringstream allowed;
+  allowed << "finite and " << (strict ? "> " : ">= ") << lo;
+  const std::string description = allowed.str();
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        std::size_t used = 0;
+        double value = 0.0;
+        try {
+          value = std::stod(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size()) return "value '" + text + "' is not a number";
+        if (!std::isfinite(value) || value < lo || (strict && value == lo)) {
+          return "value " + text + " must be " + description;
+        }
+        return "";
+      },
+      description);
+}
+
+}  // namespace shockmap

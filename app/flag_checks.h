@@ -1,0 +1,12 @@
+#pragma once
+// CLI11 validators whose messages name the value and what is allowed; CLI11 prefixes the flag.
+
+#include <CLI/CLI.hpp>
+
+namespace shockmap {
+
+// A finite number > lo (strict) or >= lo.
+CLI::Validator FiniteAbove(double lo, bool strict);
+inline CLI::Validator Positive() { return FiniteAbove(0.0, true); }
+
+}  // namespace shockmap

@@ -1,0 +1,30 @@
+// shockmap: maps where a truncated modal basis with explicit integration gives contact forces
+// that can be trusted. Exit codes: 0 success, 1 internal failure, 2 bad input.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "app/compare_command.h"
+#include "core/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "shockmap: validity maps of modal reduction with explicit integration for "
+      "structures with clearances"};
+  app.require_subcommand(1);
+  shockmap::AddCompareCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "shockmap: error: " << e.what() << '\n';
+    return 2;
+  } catch (const shockmap::InputError& e) {
+    std::cerr << "shockmap: error: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "shockmap: internal error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,26 @@
+#include "core/newmark.h"
+
+namespace shockmap {
+
+NewmarkIntegrator::NewmarkIntegrator(NewmarkParameters parameters, SecondOrderSystem& system)
+    : p_(parameters), system_(system) {}
+
+bool NewmarkIntegrator::Init(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0) {
+  x_ = x0;
+  v_ = v0;
+  a_.resize(x0.size());
+  return system_.SolveAcceleration(0.0, 0.0, x_, v_, a_);
+}
+
+bool NewmarkIntegrator::Step(double dt) {
+  const double dt2 = dt * dt;
+  // x and v become the predictors in place; a still holds a_n.
+  x_.noalias() += dt * v_ + ((0.5 - p_.beta) * dt2) * a_;
+  v_.noalias() += ((1.0 - p_.gamma) * dt) * a_;
+  if (!system_.SolveAcceleration(p_.beta * dt2, p_.gamma * dt, x_, v_, a_)) return false;
+  if (p_.beta != 0.0) x_.noalias() += (p_.beta * dt2) * a_;
+  v_.noalias() += (p_.gamma * dt) * a_;
+  return true;
+}
+
+}  // namespace shockmap

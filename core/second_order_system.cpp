@@ -1,0 +1,30 @@
+#include "core/second_order_system.h"
+
+namespace shockmap {
+
+double ContactEnergy(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x) {
+  double e = 0.0;
+  for (const auto& c : contacts) e += PenaltyEnergy(c, c.row.dot(x));
+  return e;
+}
+
+bool AnyContactDamping(const std::vector<PointContact>& contacts) {
+  for (const auto& c : contacts) {
+    if (c.damping_n_s_per_m != 0.0) return true;
+  }
+  return false;
+}
+
+double ContactDampingPower(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& v) {
+  double p = 0.0;
+  for (const auto& c : contacts) {
+    if (c.damping_n_s_per_m == 0.0) continue;
+    const double u = c.row.dot(x);
+    const double w = c.row.dot(v);
+    if (PenaltyForce(c, u, w) > 0.0) p += c.damping_n_s_per_m * w * w;
+  }
+  return p;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,52 @@
+#pragma once
+// What a Newmark integrator needs from a structure: M a + C v + K x = f_contact(x, v).
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "core/point_contact.h"
+
+namespace shockmap {
+
+// Mechanical energies at one state (J).
+struct Energies {
+  double kinetic_j = 0.0;
+  double strain_j = 0.0;
+  double contact_j = 0.0;
+  double Total() const { return kinetic_j + strain_j + contact_j; }
+};
+
+class SecondOrderSystem {
+ public:
+  virtual ~SecondOrderSystem() = default;
+
+  virtual int Size() const = 0;
+
+  // Newmark's equation for the new acceleration a (as MFEM's ImplicitSolve):
+  //   M a + C (v_pred + gamma_dt a) + K (x_pred + beta_dt2 a)
+  //     = f_contact(x_pred + beta_dt2 a, v_pred + gamma_dt a).
+  // beta_dt2 = gamma_dt = 0 gives the acceleration at a known state.
+  // Returns false when the contact iteration does not converge (a is then unspecified).
+  virtual bool SolveAcceleration(double beta_dt2, double gamma_dt, const Eigen::VectorXd& x_pred,
+                                 const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) = 0;
+
+  virtual Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
+
+  // True when the system declares structural or contact damping; otherwise DissipatedPower is
+  // identically zero and callers skip it.
+  virtual bool Dissipates() const = 0;
+
+  // Power dissipated by structural and contact damping at a state (W), >= 0.
+  virtual double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
+
+  virtual const std::vector<PointContact>& Contacts() const = 0;
+};
+
+// Sum over contacts of the penalty energy at state x.
+double ContactEnergy(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x);
+bool AnyContactDamping(const std::vector<PointContact>& contacts);
+// Sum over contacts of F * (-v_point) for the viscous part of each active contact (W).
+double ContactDampingPower(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x,
+                           const Eigen::VectorXd& v);
+
+}  // namespace shockmap

@@ -1,0 +1,142 @@
+#include "core/transient_run.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/cpu_timer.h"
+#include "core/validity.h"
+
+namespace shockmap {
+
+bool TransientOptions::IsValid(std::string* error) const {
+  if (!RequirePositive("end_time_s", end_time_s, error) || !RequirePositive("dt_s", dt_s, error) ||
+      !RequireAtLeast("record_stride", record_stride, 1, error) ||
+      !RequireAtLeast("divergence_check_stride", divergence_check_stride, 1, error) ||
+      !RequireAtLeast("energy_growth_limit", energy_growth_limit, 1.0, error)) {
+    return false;
+  }
+  const double steps = std::ceil(end_time_s / dt_s - 1e-9);
+  if (steps > static_cast<double>(max_steps)) {
+    if (error != nullptr) {
+      std::ostringstream out;
+      out << "end_time_s / dt_s = " << steps << " steps: must be <= " << max_steps;
+      *error = out.str();
+    }
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+struct Recorder {
+  const SecondOrderSystem& system;
+  const TransientOptions& options;
+  TransientResult& result;
+
+  void Start(double dt_record) {
+    auto init = [&](std::vector<UniformSignal>& v, std::size_t n) {
+      v.assign(n, UniformSignal{0.0, dt_record, {}});
+    };
+    init(result.displacement_m, options.observed_rows.size());
+    init(result.velocity_m_s, options.observed_rows.size());
+    init(result.contact_force_n, system.Contacts().size());
+    if (options.record_energy) {
+      for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
+                      &result.energy.dissipated_j}) {
+        *s = UniformSignal{0.0, dt_record, {}};
+      }
+    }
+  }
+
+  void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j) {
+    for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
+      result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
+      result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
+    }
+    const auto& contacts = system.Contacts();
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+      result.contact_force_n[c].values.push_back(
+          PenaltyForce(contacts[c], contacts[c].row.dot(x), contacts[c].row.dot(v)));
+    }
+    if (options.record_energy) {
+      const Energies e = system.EnergyAt(x, v);
+      result.energy.kinetic_j.values.push_back(e.kinetic_j);
+      result.energy.strain_j.values.push_back(e.strain_j);
+      result.energy.contact_j.values.push_back(e.contact_j);
+      result.energy.dissipated_j.values.push_back(dissipated_j);
+    }
+  }
+};
+
+}  // namespace
+
+TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme,
+                             const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                             const TransientOptions& options) {
+  const CpuTimer timer;
+  TransientResult result;
+  RunSummary& summary = result.summary;
+  summary.dt_requested_s = options.dt_s;
+  summary.steps_requested =
+      static_cast<std::int64_t>(std::ceil(options.end_time_s / options.dt_s - 1e-9));
+  summary.dt_used_s = options.end_time_s / static_cast<double>(summary.steps_requested);
+  const double dt = summary.dt_used_s;
+
+  Recorder recorder{system, options, result};
+  recorder.Start(dt * options.record_stride);
+  auto finish = [&](RunStatus status, std::string message) {
+    summary.status = status;
+    summary.message = std::move(message);
+    summary.wall_s = timer.WallSeconds();
+    summary.cpu_s = timer.CpuSeconds();
+    return std::move(result);
+  };
+
+  NewmarkIntegrator integrator(scheme, system);
+  if (!integrator.Init(x0, v0)) {
+    return finish(RunStatus::kFailed, "initial acceleration: the system solve failed");
+  }
+  const bool dissipates = system.Dissipates();
+  double dissipated = 0.0;
+  double power_before = dissipates ? system.DissipatedPower(x0, v0) : 0.0;
+  summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
+  recorder.Record(integrator.X(), integrator.V(), dissipated);
+
+  for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
+    if (!integrator.Step(dt)) {
+      summary.steps_taken = n - 1;
+      std::ostringstream msg;
+      msg << "step " << n << " (t = " << n * dt << " s): the system solve failed";
+      return finish(RunStatus::kFailed, msg.str());
+    }
+    summary.steps_taken = n;
+    if (dissipates) {
+      const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
+      dissipated += 0.5 * dt * (power_before + power_now);
+      power_before = power_now;
+    }
+    if (n % options.record_stride == 0) recorder.Record(integrator.X(), integrator.V(), dissipated);
+    if (n % options.divergence_check_stride == 0 || n == summary.steps_requested) {
+      const double total = system.EnergyAt(integrator.X(), integrator.V()).Total() + dissipated;
+      if (!std::isfinite(total) || !integrator.X().allFinite()) {
+        std::ostringstream msg;
+        msg << "non-finite state at step " << n << " (t = " << n * dt << " s)";
+        return finish(RunStatus::kDiverged, msg.str());
+      }
+      if (summary.initial_energy_j > 0.0) {
+        const double ratio = total / summary.initial_energy_j;
+        summary.max_energy_ratio = std::max(summary.max_energy_ratio, ratio);
+        if (ratio > options.energy_growth_limit) {
+          std::ostringstream msg;
+          msg << "energy grew to " << ratio << " times its initial value at step " << n
+              << " (t = " << n * dt << " s), limit " << options.energy_growth_limit;
+          return finish(RunStatus::kDiverged, msg.str());
+        }
+      }
+    }
+  }
+  return finish(RunStatus::kOk, "");
+}
+
+}  // namespace shockmap

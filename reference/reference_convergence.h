@@ -1,0 +1,23 @@
+#pragma once
+// Self-convergence of the truncated reference (DESIGN §2): the same problem at two truncations.
+
+#include "reference/reference_solver.h"
+
+namespace shockmap {
+
+struct ReferenceConvergence {
+  double r_fref = 0.0;        // The reference scored against.
+  double r_fref_check = 0.0;  // The coarser one it is checked with.
+  // max_t |u_ref(t) - u_check(t)| / max_t |u_ref(t)| of the tip over [0, window].
+  double difference = 0.0;
+  double wall_check_s = 0.0;
+};
+
+// The coarser truncation is r_fref / ratio; its error dominates the difference, so the figure
+// is an upper estimate of the finer reference's own error.
+ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
+                                                 const ReferenceOptions& options,
+                                                 const ReferenceSolution& reference,
+                                                 double window_s, double ratio = 3.0);
+
+}  // namespace shockmap

@@ -1,0 +1,261 @@
+#include "reference/reference_solver.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/input_error.h"
+
+#include "core/cpu_timer.h"
+#include "core/validity.h"
+#include "reference/analytic_basis.h"
+
+namespace shockmap {
+
+bool ReferenceOptions::IsValid(std::string* error) const {
+  return RequireAtLeast("r_fref", r_fref, 1.0, error) &&
+         RequirePositive("end_time_s", end_time_s, error) &&
+         RequireAtLeast("crossing_samples_per_period", crossing_samples_per_period, 4, error) &&
+         RequireAtLeast("max_transitions", max_transitions, 1, error);
+}
+
+// One linear configuration: its basis, damped frequencies and the static tip offset u_s(L)
+// about which it oscillates (nonzero only on the spring with a nonzero gap).
+struct ReferenceSolution::Configuration {
+  AnalyticBasis basis;
+  Eigen::VectorXd omega_d;
+  double half_alpha = 0.0;  // alpha / 2 (1/s)
+  double tip_offset_m = 0.0;
+
+  // Tip deflection tau after the start of phase p.
+  double Tip(const ReferencePhase& p, double tau) const {
+    double u = 0.0;
+    for (int i = 0; i < omega_d.size(); ++i) {
+      const double w = omega_d[i] * tau;
+      u += basis.tip[i] * (p.a[i] * std::cos(w) + p.b[i] * std::sin(w));
+    }
+    return tip_offset_m + std::exp(-half_alpha * tau) * u;
+  }
+
+  // Modal displacements and velocities tau after the start of phase p.
+  void State(const ReferencePhase& p, double tau, Eigen::VectorXd& q, Eigen::VectorXd& qd) const {
+    const double decay = std::exp(-half_alpha * tau);
+    const Eigen::ArrayXd w = omega_d.array() * tau;
+    const Eigen::ArrayXd c = w.cos(), s = w.sin();
+    q = (decay * (p.a.array() * c + p.b.array() * s)).matrix();
+    qd = (decay * omega_d.array() * (p.b.array() * c - p.a.array() * s)).matrix() - half_alpha * q;
+  }
+
+  // Coefficients of a phase starting from modal state (q, qd).
+  void StartPhase(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, ReferencePhase& p) const {
+    p.a = q;
+    p.b = ((qd + half_alpha * q).array() / omega_d.array()).matrix();
+  }
+};
+
+ReferenceSolution::ReferenceSolution(const CantileverImpact& problem,
+                                     std::vector<ReferencePhase> phases,
+                                     std::shared_ptr<const Configuration> free,
+                                     std::shared_ptr<const Configuration> contact,
+                                     ReferenceSummary summary)
+    : gap_m_(problem.gap_m),
+      stiffness_n_per_m_(problem.SpringStiffness()),
+      phases_(std::move(phases)),
+      free_(std::move(free)),
+      contact_(std::move(contact)),
+      summary_(summary) {}
+
+const ReferencePhase& ReferenceSolution::PhaseAt(double t_s) const {
+  auto it = std::upper_bound(phases_.begin(), phases_.end(), t_s,
+                             [](double t, const ReferencePhase& p) { return t < p.start_s; });
+  return it == phases_.begin() ? phases_.front() : *std::prev(it);
+}
+
+const ReferenceSolution::Configuration& ReferenceSolution::ConfigurationOf(
+    const ReferencePhase& p) const {
+  return p.in_contact ? *contact_ : *free_;
+}
+
+double ReferenceSolution::TipDisplacement(double t_s) const {
+  const ReferencePhase& p = PhaseAt(t_s);
+  return ConfigurationOf(p).Tip(p, t_s - p.start_s);
+}
+
+double ReferenceSolution::ContactForce(double t_s) const {
+  const ReferencePhase& p = PhaseAt(t_s);
+  if (!p.in_contact) return 0.0;
+  return std::max(0.0, stiffness_n_per_m_ * (gap_m_ - contact_->Tip(p, t_s - p.start_s)));
+}
+
+UniformSignal ReferenceSolution::SampleTipDisplacement(double dt_s, double end_s) const {
+  UniformSignal s{0.0, dt_s, {}};
+  const auto n = static_cast<std::size_t>(std::floor(end_s / dt_s + 1e-9)) + 1;
+  s.values.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) s.values.push_back(TipDisplacement(s.TimeAt(i)));
+  return s;
+}
+
+UniformSignal ReferenceSolution::SampleContactForce(double dt_s, double end_s) const {
+  UniformSignal s{0.0, dt_s, {}};
+  const auto n = static_cast<std::size_t>(std::floor(end_s / dt_s + 1e-9)) + 1;
+  s.values.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) s.values.push_back(ContactForce(s.TimeAt(i)));
+  return s;
+}
+
+namespace {
+
+using Configuration = ReferenceSolution::Configuration;
+
+std::shared_ptr<Configuration> MakeConfiguration(const CantileverImpact& problem, double kappa,
+                                                 double f_ref_hz, const BeamQuadrature& quad) {
+  auto c = std::make_shared<Configuration>();
+  c->basis = MakeAnalyticBasis(problem.beam, kappa, f_ref_hz, quad);
+  c->half_alpha = 0.5 * problem.mass_damping_per_s;
+  c->omega_d.resize(c->basis.NumModes());
+  for (int i = 0; i < c->basis.NumModes(); ++i) {
+    const double w = c->basis.omega_rad_s[i];
+    if (c->half_alpha >= w) {
+      std::ostringstream msg;
+      msg << "mass_damping_per_s = " << problem.mass_damping_per_s << ": overdamps mode " << i + 1
+          << " (omega = " << w << " rad/s); the reference needs alpha / 2 < omega_1";
+      throw InputError(msg.str());
+    }
+    c->omega_d[i] = std::sqrt(w * w - c->half_alpha * c->half_alpha);
+  }
+  return c;
+}
+
+// First tau in (0, tau_max] where the tip leaves the phase's side of the gap, or nullopt.
+// Samples that start on the wrong side (the projection on a truncated basis puts the tip a
+// hair off the gap) are skipped until the tip is inside; if it never gets inside within one
+// shortest period the phase is a graze and ends at once (tau = 0).
+std::optional<double> FindExit(const Configuration& c, const ReferencePhase& p, double gap,
+                               double step, double tau_max) {
+  auto s = [&](double tau) { return c.Tip(p, tau) - gap; };
+  auto inside = [&](double v) { return p.in_contact ? v < 0.0 : v > 0.0; };
+  auto outside = [&](double v) { return p.in_contact ? v > 0.0 : v < 0.0; };
+  const double grace = 16.0 * step;
+  bool seen_inside = false;
+  double prev = 0.0;
+  for (long k = 1;; ++k) {
+    const double tau = std::min(static_cast<double>(k) * step, tau_max);
+    const double v = s(tau);
+    if (!seen_inside) {
+      if (inside(v)) {
+        seen_inside = true;
+      } else if (tau >= grace) {
+        return 0.0;
+      }
+    } else if (outside(v)) {
+      struct Ctx {
+        const decltype(s)* f;
+      } ctx{&s};
+      gsl_function fn;
+      fn.function = [](double t, void* x) { return (*static_cast<Ctx*>(x)->f)(t); };
+      fn.params = &ctx;
+      std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+          gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+      gsl_root_fsolver_set(solver.get(), &fn, prev, tau);
+      double lo = prev, hi = tau;
+      for (int iter = 0; iter < 200; ++iter) {
+        gsl_root_fsolver_iterate(solver.get());
+        lo = gsl_root_fsolver_x_lower(solver.get());
+        hi = gsl_root_fsolver_x_upper(solver.get());
+        if (gsl_root_test_interval(lo, hi, 1e-15, 1e-14) == GSL_SUCCESS) break;
+      }
+      return hi;  // The outside end, so the next phase starts across the gap.
+    }
+    prev = tau;
+    if (tau >= tau_max) return std::nullopt;
+  }
+}
+
+}  // namespace
+
+ReferenceSolution SolveReference(const CantileverImpact& problem, const ReferenceOptions& options) {
+  if (problem.contact_damping_n_s_per_m != 0.0) {
+    std::ostringstream msg;
+    msg << "contact_damping_n_s_per_m = " << problem.contact_damping_n_s_per_m
+        << ": the reference represents only zero or mass-proportional damping (the same "
+           "operator with and without the spring); use 0";
+    throw InputError(msg.str());
+  }
+  gsl_set_error_handler_off();
+  const CpuTimer timer;
+  const BeamProperties& beam = problem.beam;
+  const double f_ref_hz = options.r_fref * problem.F1Hz();
+  const double kappa = 3.0 * problem.r_k;  // k_s L^3 / EI = 3 R_k
+  const double b_max = std::sqrt(2.0 * std::numbers::pi * f_ref_hz / beam.OmegaOf(1.0)) + 4.0;
+  const BeamQuadrature quad = MakeBeamQuadrature(b_max);
+
+  auto free = MakeConfiguration(problem, 0.0, f_ref_hz, quad);
+  auto contact = MakeConfiguration(problem, kappa, f_ref_hz, quad);
+  // Static deflection on the spring with gap g: u_s(x) = u_s(L) x^2 (3L - x) / (2 L^3),
+  // u_s(L) = g R_k / (1 + R_k); the contact phase oscillates about it.
+  contact->tip_offset_m = problem.gap_m * problem.r_k / (1.0 + problem.r_k);
+  const double tip_static = contact->tip_offset_m;
+  auto static_shape = [tip_static](double xi) { return tip_static * xi * xi * (3.0 - xi) / 2.0; };
+  const Eigen::VectorXd static_on_contact =
+      ProjectDeflection(beam, contact->basis, static_shape, quad);
+  const Eigen::VectorXd static_on_free = ProjectDeflection(beam, free->basis, static_shape, quad);
+  const Eigen::MatrixXd to_contact = MassProjection(beam, contact->basis, free->basis, quad);
+  const Eigen::MatrixXd to_free = MassProjection(beam, free->basis, contact->basis, quad);
+
+  ReferenceSummary summary;
+  summary.n_modes_free = free->basis.NumModes();
+  summary.n_modes_contact = contact->basis.NumModes();
+  const double omega_max =
+      std::max(free->basis.omega_rad_s.maxCoeff(), contact->basis.omega_rad_s.maxCoeff());
+  summary.shortest_period_s = 2.0 * std::numbers::pi / omega_max;
+  const double step = summary.shortest_period_s / options.crossing_samples_per_period;
+
+  // Released at rest from the first clamped-free mode, tip at initial_tip_m.
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(free->basis.NumModes());
+  Eigen::VectorXd qd = Eigen::VectorXd::Zero(free->basis.NumModes());
+  q[0] = problem.initial_tip_m / free->basis.tip[0];
+  std::vector<ReferencePhase> phases(1);
+  phases[0].start_s = 0.0;
+  phases[0].in_contact = problem.initial_tip_m < problem.gap_m;
+  if (phases[0].in_contact) {
+    contact->StartPhase(to_contact * q - static_on_contact, to_contact * qd, phases[0]);
+  } else {
+    free->StartPhase(q, qd, phases[0]);
+  }
+
+  while (true) {
+    const ReferencePhase& p = phases.back();
+    const Configuration& c = p.in_contact ? *contact : *free;
+    const auto exit = FindExit(c, p, problem.gap_m, step, options.end_time_s - p.start_s);
+    if (!exit) break;
+    if (summary.n_transitions >= options.max_transitions) {
+      std::ostringstream msg;
+      msg << "max_transitions = " << options.max_transitions
+          << " reached at t = " << p.start_s + *exit
+          << " s before end_time_s = " << options.end_time_s;
+      throw std::runtime_error(msg.str());
+    }
+    c.State(p, *exit, q, qd);
+    ReferencePhase next;
+    next.start_s = p.start_s + *exit;
+    next.in_contact = !p.in_contact;
+    if (next.in_contact) {
+      contact->StartPhase(to_contact * q - static_on_contact, to_contact * qd, next);
+    } else {
+      free->StartPhase(to_free * q + static_on_free, to_free * qd, next);
+    }
+    phases.push_back(std::move(next));
+    ++summary.n_transitions;
+  }
+  summary.wall_s = timer.WallSeconds();
+  return ReferenceSolution(problem, std::move(phases), std::move(free), std::move(contact),
+                           summary);
+}
+
+}  // namespace shockmap

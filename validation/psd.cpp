@@ -1,0 +1,200 @@
+#include "validation/psd.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace shockmap {
+namespace {
+
+constexpr std::int64_t kMaxFftLength = std::int64_t{1} << 30;
+
+// The FFTW planner keeps global state: every fftw_plan_* and fftw_destroy_plan call in the
+// process must hold this lock. fftw_execute on distinct plans/arrays needs no lock.
+std::mutex& FftwPlannerMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+struct FftwFree {
+  void operator()(void* p) const { fftw_free(p); }
+};
+
+struct FftwPlanDestroy {
+  void operator()(fftw_plan_s* plan) const {
+    const std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    fftw_destroy_plan(plan);
+  }
+};
+
+std::int64_t NextPowerOfTwo(std::int64_t n) {
+  std::int64_t p = 1;
+  while (p < n) {
+    p *= 2;
+  }
+  return p;
+}
+
+std::string Describe(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+std::string ToString(PsdWindow window) {
+  switch (window) {
+    case PsdWindow::kRectangular:
+      return "rectangular";
+    case PsdWindow::kHann:
+      return "hann";
+  }
+  return "unknown";
+}
+
+std::optional<PsdWindow> PsdWindowFromString(std::string_view name) {
+  for (const PsdWindow w : {PsdWindow::kRectangular, PsdWindow::kHann}) {
+    if (name == ToString(w)) {
+      return w;
+    }
+  }
+  return std::nullopt;
+}
+
+int PsdOptions::FftLength() const {
+  return static_cast<int>(NextPowerOfTwo(std::int64_t{n_samples} * zero_padding_factor));
+}
+
+bool PsdOptions::IsValid(std::string* error) const {
+  auto fail = [error](const std::string& message) {
+    if (error != nullptr) {
+      *error = message;
+    }
+    return false;
+  };
+  if (n_samples < 2) {
+    return fail("n_samples = " + std::to_string(n_samples) + ": must be >= 2");
+  }
+  if (zero_padding_factor < 1) {
+    return fail("zero_padding_factor = " + std::to_string(zero_padding_factor) + ": must be >= 1");
+  }
+  if (window != PsdWindow::kRectangular && window != PsdWindow::kHann) {
+    return fail("window = " + std::to_string(static_cast<int>(window)) +
+                ": must be rectangular or hann");
+  }
+  if (NextPowerOfTwo(std::int64_t{n_samples} * zero_padding_factor) > kMaxFftLength) {
+    return fail("n_samples * zero_padding_factor = " + std::to_string(n_samples) + " * " +
+                std::to_string(zero_padding_factor) + ": FFT length must be <= 2^30");
+  }
+  return true;
+}
+
+std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, double t_end_s,
+                                   int n_samples) {
+  if (!std::isfinite(t_begin_s) || !std::isfinite(t_end_s) || !(t_begin_s < t_end_s)) {
+    throw std::invalid_argument("PSD observation window [" + Describe(t_begin_s) + ", " +
+                                Describe(t_end_s) + "] s: must be finite with begin < end");
+  }
+  if (n_samples < 2) {
+    throw std::invalid_argument("PSD n_samples = " + std::to_string(n_samples) + ": must be >= 2");
+  }
+  if (s.values.size() < 2 || !std::isfinite(s.dt_s) || !(s.dt_s > 0.0) || !std::isfinite(s.t0_s)) {
+    throw std::invalid_argument("PSD input signal (" + std::to_string(s.values.size()) +
+                                " samples, dt_s = " + Describe(s.dt_s) +
+                                "): must have >= 2 samples and a finite dt_s > 0");
+  }
+  // Rounding slack on the window bounds: a caller passing t_end = the nominal end of a run must
+  // not be refused because t0 + (n - 1) dt rounded down by an ulp.
+  const double magnitude =
+      std::max({std::abs(t_begin_s), std::abs(t_end_s), std::abs(s.t0_s), std::abs(s.EndTime())});
+  const double slack = 1e-6 * s.dt_s + 8.0 * std::numeric_limits<double>::epsilon() * magnitude;
+  if (t_begin_s < s.t0_s - slack || t_end_s > s.EndTime() + slack) {
+    throw std::invalid_argument("PSD observation window [" + Describe(t_begin_s) + ", " +
+                                Describe(t_end_s) + "] s: must lie within the signal [" +
+                                Describe(s.t0_s) + ", " + Describe(s.EndTime()) + "] s");
+  }
+  // Every input sample the window touches must be finite, not only those the resampling lands
+  // next to: a NaN between two resampled points would otherwise pass unseen.
+  const auto last = static_cast<double>(s.values.size() - 1);
+  const auto i_lo =
+      static_cast<std::size_t>(std::clamp(std::floor((t_begin_s - s.t0_s) / s.dt_s), 0.0, last));
+  const auto i_hi =
+      static_cast<std::size_t>(std::clamp(std::ceil((t_end_s - s.t0_s) / s.dt_s), 0.0, last));
+  for (std::size_t i = i_lo; i <= i_hi; ++i) {
+    if (!std::isfinite(s.values[i])) {
+      throw std::invalid_argument("PSD input signal is not finite at t = " + Describe(s.TimeAt(i)) +
+                                  " s: a diverged run cannot be scored");
+    }
+  }
+  const double step_s = (t_end_s - t_begin_s) / n_samples;
+  std::vector<double> x(static_cast<std::size_t>(n_samples));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = s.At(t_begin_s + static_cast<double>(i) * step_s);
+  }
+  return x;
+}
+
+PowerSpectrum OneSidedPsd(const UniformSignal& s, double t_begin_s, double t_end_s,
+                          const PsdOptions& options) {
+  std::string error;
+  if (!options.IsValid(&error)) {
+    throw std::invalid_argument("PsdOptions: " + error);
+  }
+  const std::vector<double> x = ResampleForPsd(s, t_begin_s, t_end_s, options.n_samples);
+  const std::size_t n = x.size();
+  const double fs_hz = static_cast<double>(n) / (t_end_s - t_begin_s);
+  const int n_fft = options.FftLength();
+  const std::size_t n_bins = static_cast<std::size_t>(n_fft) / 2 + 1;
+
+  const std::unique_ptr<double, FftwFree> in(fftw_alloc_real(static_cast<std::size_t>(n_fft)));
+  const std::unique_ptr<fftw_complex, FftwFree> out(fftw_alloc_complex(n_bins));
+  if (!in || !out) {
+    throw std::bad_alloc();
+  }
+  double sum_w2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = options.window == PsdWindow::kHann
+                         ? 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) /
+                                                 static_cast<double>(n)))
+                         : 1.0;
+    in.get()[i] = w * x[i];
+    sum_w2 += w * w;
+  }
+  std::fill(in.get() + n, in.get() + n_fft, 0.0);
+
+  std::unique_ptr<fftw_plan_s, FftwPlanDestroy> plan;
+  {
+    const std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    // FFTW_ESTIMATE does not touch the arrays while planning, so `in` keeps its data.
+    plan.reset(fftw_plan_dft_r2c_1d(n_fft, in.get(), out.get(), FFTW_ESTIMATE));
+  }
+  if (!plan) {
+    throw std::runtime_error("FFTW could not plan an r2c transform of length " +
+                             std::to_string(n_fft));
+  }
+  fftw_execute(plan.get());
+
+  PowerSpectrum psd;
+  psd.df_hz = fs_hz / n_fft;
+  psd.density.resize(n_bins);
+  const double scale = 1.0 / (fs_hz * sum_w2);
+  for (std::size_t k = 0; k < n_bins; ++k) {
+    const double re = out.get()[k][0];
+    const double im = out.get()[k][1];
+    const bool unpaired = (k == 0 || k == n_bins - 1);  // DC and Nyquist have no mirror bin.
+    psd.density[k] = (unpaired ? 1.0 : 2.0) * (re * re + im * im) * scale;
+  }
+  return psd;
+}
+
+}  // namespace shockmap
