@@ -1,0 +1,99 @@
+// The command line as a user meets it: exit codes, messages naming the flag, JSON keys.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace {
+
+struct Outcome {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr together
+};
+
+Outcome RunShockmap(const std::string& args) {
+  const std::string command = std::string(SHOCKMAP_BIN) + " " + args + " 2>&1";
+  Outcome o;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) o.output += buffer.data();
+  const int status = pclose(pipe);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+struct BadFlag {
+  const char* name;
+  const char* args;
+  const char* must_mention;
+};
+
+class CompareRejects : public ::testing::TestWithParam<BadFlag> {};
+
+TEST_P(CompareRejects, WithExitCodeTwoNamingTheFlag) {
+  const Outcome o = RunShockmap(std::string("compare ") + GetParam().args);
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find(GetParam().must_mention), std::string::npos) << o.output;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadValues, CompareRejects,
+    ::testing::Values(
+        BadFlag{"NegativeStiffness", "--rk -5 --rftrunc 300", "--rk"},
+        BadFlag{"ZeroStiffness", "--rk 0 --rftrunc 300", "--rk"},
+        BadFlag{"NanStiffness", "--rk nan --rftrunc 300", "--rk"},
+        BadFlag{"InfStiffness", "--rk inf --rftrunc 300", "--rk"},
+        BadFlag{"NotANumber", "--rk 3e3x --rftrunc 300", "--rk"},
+        BadFlag{"TruncationBelowOne", "--rk 3000 --rftrunc 0.5", "--rftrunc"},
+        BadFlag{"ZeroWindow", "--rk 3000 --rftrunc 300 --window 0", "--window"},
+        BadFlag{"NegativeDt", "--rk 3000 --rftrunc 300 --dt -1e-5", "--dt"},
+        BadFlag{"DtAndFactor", "--rk 3000 --rftrunc 300 --dt 1e-5 --dt-factor 2", "--dt"},
+        BadFlag{"UnknownRule", "--rk 3000 --rftrunc 300 --dt-rule loose", "--dt-rule"},
+        BadFlag{"UnknownScheme", "--rk 3000 --rftrunc 300 --scheme rk4", "--scheme"},
+        BadFlag{"MissingStiffness", "--rftrunc 300", "--rk"},
+        BadFlag{"PlotWithoutOut", "--rk 3000 --rftrunc 300 --plot", "--out"},
+        BadFlag{"UnknownFlag", "--rk 3000 --rftrunc 300 --speed 3", "--speed"},
+        BadFlag{"UnwritableOut", "--rk 3000 --rftrunc 10 --out /proc/shockmap", "/proc/shockmap"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(CompareCommand, PaperRuleDivergesAndHalfSharpBoundIsOk) {
+  const Outcome paper =
+      RunShockmap("compare --rk 3000 --rftrunc 10 --dt-rule paper --dt-factor 1 --json");
+  ASSERT_EQ(paper.exit_code, 0) << paper.output;
+  const auto p = nlohmann::json::parse(paper.output);
+  EXPECT_EQ(p["status"], "diverged");
+  EXPECT_TRUE(p["err"].is_null());
+  EXPECT_GT(p["dt_paper_s"].get<double>(), p["dt_sharp_s"].get<double>());
+
+  const Outcome sharp =
+      RunShockmap("compare --rk 3000 --rftrunc 10 --dt-rule sharp --dt-factor 0.5 --json");
+  ASSERT_EQ(sharp.exit_code, 0) << sharp.output;
+  const auto s = nlohmann::json::parse(sharp.output);
+  EXPECT_EQ(s["status"], "ok");
+  EXPECT_NEAR(s["dt_requested_s"].get<double>(), 0.5 * s["dt_sharp_s"].get<double>(), 1e-15);
+}
+
+TEST(CompareCommand, JsonCarriesEveryDocumentedKey) {
+  const Outcome o = RunShockmap("compare --rk 3000 --rftrunc 300 --json");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  const auto j = nlohmann::json::parse(o.output);
+  for (const char* key : {"err", "srf", "status", "n_modes", "dt_s", "dt_paper_s", "dt_sharp_s",
+                          "ref_convergence", "wall_ref_s", "wall_num_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["status"], "ok");
+  EXPECT_LT(j["err"].get<double>(), 0.10);
+}
+
+TEST(CompareCommand, HelpExitsZero) {
+  const Outcome o = RunShockmap("compare --help");
+  EXPECT_EQ(o.exit_code, 0);
+  EXPECT_NE(o.output.find("--rftrunc"), std::string::npos);
+}
+
+}  // namespace
