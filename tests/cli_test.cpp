@@ -33,6 +33,8 @@ struct BadFlag {
   const char* must_mention;
 };
 
+void PrintTo(const BadFlag& f, std::ostream* os) { *os << f.name << ": " << f.args; }
+
 class CompareRejects : public ::testing::TestWithParam<BadFlag> {};
 
 TEST_P(CompareRejects, WithExitCodeTwoNamingTheFlag) {

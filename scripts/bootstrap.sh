@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages shockmap needs (only those missing), then configures and
+# builds it in ./build. Sourced by run-main and run-tests; safe to run again.
+set -euo pipefail
+
+SHOCKMAP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+SHOCKMAP_BUILD=${SHOCKMAP_BUILD:-$SHOCKMAP_ROOT/build}
+
+# Each package and why it is here is listed in the README ("Dependencies").
+SHOCKMAP_PACKAGES=(
+  build-essential cmake pkg-config git
+  libeigen3-dev libgsl-dev libfftw3-dev libsqlite3-dev sqlite3
+  nlohmann-json3-dev libcli11-dev libfmt-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  gnuplot-nox
+)
+
+install_missing_packages() {
+  local missing=()
+  for p in "${SHOCKMAP_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    return
+  fi
+  echo "shockmap: installing ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build_shockmap() {
+  cmake -S "$SHOCKMAP_ROOT" -B "$SHOCKMAP_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$SHOCKMAP_BUILD" -j "$(nproc)"
+}
+
+install_missing_packages
+build_shockmap
