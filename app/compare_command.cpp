@@ -42,7 +42,7 @@ void PrintShock(const char* label, const std::vector<Shock>& shocks) {
 }
 
 void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
-  const auto& ref = r.reference;
+  const auto& ref = *r.reference;
   fmt::print("shockmap compare: R_k = {:g}, R_ftrunc = {:g}, {}, window [0, {:g}] s\n",
              f.problem.r_k, f.options.r_ftrunc, ToString(f.options.scheme), f.options.window_s);
   fmt::print("  status            {}{}\n", r.status,

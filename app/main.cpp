@@ -5,7 +5,9 @@
 #include <iostream>
 
 #include "app/compare_command.h"
+#include "app/study_command.h"
 #include "core/input_error.h"
+#include "db/sqlite_handle.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -13,6 +15,8 @@ int main(int argc, char** argv) {
       "structures with clearances"};
   app.require_subcommand(1);
   shockmap::AddCompareCommand(app);
+  shockmap::AddStudyCommand(app);
+  shockmap::AddQueryCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -21,6 +25,11 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const shockmap::InputError& e) {
     std::cerr << "shockmap: error: " << e.what() << '\n';
+    return 2;
+  } catch (const shockmap::DbError& e) {
+    // The database named by the user is missing, foreign, corrupt, newer, locked, or the SQL
+    // given is invalid or would write: all input the user can fix.
+    std::cerr << "shockmap: database error: " << e.what() << '\n';
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "shockmap: internal error: " << e.what() << '\n';

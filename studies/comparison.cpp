@@ -24,13 +24,15 @@ ShockSegmentationOptions ComparisonOptions::Shocks(double f1_hz) const {
 }
 
 ComparisonResult RunComparison(const CantileverImpact& problem, const ComparisonOptions& options) {
-  return ScoreAgainstReference(problem, options,
-                               ComputeReferenceRun(problem, options.reference, options.window_s,
-                                                   options.Shocks(problem.F1Hz())));
+  return ScoreAgainstReference(
+      problem, options,
+      std::make_shared<const ReferenceRun>(ComputeReferenceRun(
+          problem, options.reference, options.window_s, options.Shocks(problem.F1Hz()))));
 }
 
 ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
-                                       const ComparisonOptions& options, ReferenceRun reference) {
+                                       const ComparisonOptions& options,
+                                       std::shared_ptr<const ReferenceRun> reference) {
   ComparisonResult result;
   const ImpactModel model =
       BuildImpactModel(problem, options.scheme, options.r_ftrunc, options.n_elements);
@@ -44,16 +46,15 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   run.dt_s = options.dt.Resolve(model.bounds);
   run.observed_rows = {model.tip_row};
   std::string error;
+  result.reference = std::move(reference);
   if (!run.IsValid(&error)) {
     result.status = ToString(RunStatus::kFailed);
     result.message = error;
-    result.reference = std::move(reference);
     return result;
   }
   result.histories =
       RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run);
   result.numerical = result.histories.summary;
-  result.reference = std::move(reference);
   result.status = ToString(result.numerical.status);
   result.message = result.numerical.message;
   if (result.numerical.status != RunStatus::kOk) return result;
@@ -61,14 +62,14 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   const ShockSegmentationOptions shocks = options.Shocks(problem.F1Hz());
   result.shocks_numerical =
       SegmentShocks(result.histories.contact_force_n[0], shocks, options.window_s);
-  if (result.reference.convergence.difference > options.reference_tolerance) {
+  if (result.reference->convergence.difference > options.reference_tolerance) {
     result.status = "reference_unconverged";
     result.message = "the reference truncations differ by more than reference_tolerance";
     return result;
   }
-  result.err = SpectralError(result.histories.displacement_m[0], result.reference.tip_m, 0.0,
+  result.err = SpectralError(result.histories.displacement_m[0], result.reference->tip_m, 0.0,
                              options.window_s, options.psd);
-  result.srf = FirstShockImpulseRatio(result.shocks_numerical, result.reference.shocks);
+  result.srf = FirstShockImpulseRatio(result.shocks_numerical, result.reference->shocks);
   return result;
 }
 

@@ -2,6 +2,7 @@
 // One point of a study: the numerical solver against the reference on the canonical problem,
 // scored with Err (paper eq. 8) and SRf (eq. 9).
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,7 +51,7 @@ struct ComparisonResult {
   StabilityBounds bounds;
   RunSummary numerical;  // dt asked / used, steps, wall and CPU time.
   std::vector<Shock> shocks_numerical;
-  ReferenceRun reference;
+  std::shared_ptr<const ReferenceRun> reference;  // Shared by every point of the same problem.
   TransientResult histories;  // Tip displacement, tip velocity, contact force, energies.
 };
 
@@ -60,6 +61,7 @@ ComparisonResult RunComparison(const CantileverImpact& problem, const Comparison
 
 // Scores a numerical run against a reference computed for the same problem and window.
 ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
-                                       const ComparisonOptions& options, ReferenceRun reference);
+                                       const ComparisonOptions& options,
+                                       std::shared_ptr<const ReferenceRun> reference);
 
 }  // namespace shockmap

@@ -23,7 +23,7 @@ nlohmann::json ShockToJson(const Shock& shock) {
 
 nlohmann::json ComparisonToJson(const CantileverImpact& problem, const ComparisonOptions& options,
                                 const ComparisonResult& result) {
-  const ReferenceRun& ref = result.reference;
+  const ReferenceRun& ref = *result.reference;
   return {{"rk", problem.r_k},
           {"rftrunc", options.r_ftrunc},
           {"scheme", ToString(options.scheme)},

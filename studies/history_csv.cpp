@@ -44,9 +44,9 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
   const auto ref_file = dir / "reference.csv";
   std::ofstream ref = OpenForWriting(ref_file);
   ref << "t_s,tip_displacement_m,contact_force_n\n";
-  const UniformSignal& u = result.reference.tip_m;
+  const UniformSignal& u = result.reference->tip_m;
   for (std::size_t i = 0; i < u.values.size(); ++i) {
-    ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference.force_n.values[i] << '\n';
+    ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference->force_n.values[i] << '\n';
   }
   Close(ref, ref_file);
 }

@@ -12,20 +12,20 @@ class PaperFig3 : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     const ComparisonOptions defaults;
-    reference_ = new ReferenceRun(ComputeReferenceRun(
+    reference_ = std::make_shared<const ReferenceRun>(ComputeReferenceRun(
         problem_, defaults.reference, defaults.window_s, defaults.Shocks(problem_.F1Hz())));
   }
-  static void TearDownTestSuite() { delete reference_; }
+  static void TearDownTestSuite() { reference_.reset(); }
 
   static ComparisonResult Compare(double r_ftrunc, TimeStepRequest dt = {}) {
     ComparisonOptions o;
     o.r_ftrunc = r_ftrunc;
     o.dt = dt;
-    return ScoreAgainstReference(problem_, o, *reference_);
+    return ScoreAgainstReference(problem_, o, reference_);
   }
 
   static inline const CantileverImpact problem_{};  // R_k = 3000, the paper's beam.
-  static inline ReferenceRun* reference_ = nullptr;
+  static inline std::shared_ptr<const ReferenceRun> reference_;
 };
 
 TEST_F(PaperFig3, ReferenceIsConvergedOverTheWindow) {
@@ -79,7 +79,7 @@ TEST_F(PaperFig3, ImplicitSchemeIsStableAboveTheExplicitBound) {
   o.r_ftrunc = 300.0;
   o.scheme = Scheme::kImplicitFull;
   o.dt = {std::nullopt, 2.0, DtRule::kSharp};
-  const ComparisonResult r = ScoreAgainstReference(problem_, o, *reference_);
+  const ComparisonResult r = ScoreAgainstReference(problem_, o, reference_);
   EXPECT_EQ(r.status, "ok") << r.message;
   EXPECT_LT(r.numerical.max_energy_ratio, 1.05);
 }

@@ -1,0 +1,168 @@
+#include "db/schema.h"
+
+#include <string>
+
+namespace shockmap {
+namespace {
+
+// Migration i brings user_version from i to i + 1.
+constexpr const char* kMigrations[] = {
+    R"sql(
+CREATE TABLE studies (
+  study_id    INTEGER PRIMARY KEY,
+  name        TEXT NOT NULL UNIQUE,
+  spec_json   TEXT NOT NULL,
+  created_utc TEXT NOT NULL,
+  updated_utc TEXT NOT NULL
+);
+CREATE TABLE runs (
+  run_id       INTEGER PRIMARY KEY,
+  study_id     INTEGER NOT NULL REFERENCES studies(study_id),
+  code_version TEXT NOT NULL,
+  compiler     TEXT NOT NULL,
+  build_type   TEXT NOT NULL,
+  host         TEXT NOT NULL,
+  pid          INTEGER NOT NULL,
+  jobs         INTEGER NOT NULL,
+  started_utc  TEXT NOT NULL,
+  ended_utc    TEXT,
+  points_done  INTEGER NOT NULL DEFAULT 0
+);
+CREATE TABLE reference_runs (
+  reference_id    INTEGER PRIMARY KEY,
+  reference_key   TEXT NOT NULL UNIQUE,
+  r_k             REAL NOT NULL,
+  r_fref          REAL NOT NULL,
+  r_fref_check    REAL NOT NULL,
+  window_s        REAL NOT NULL,
+  convergence     REAL NOT NULL,
+  n_modes_free    INTEGER NOT NULL,
+  n_modes_contact INTEGER NOT NULL,
+  n_transitions   INTEGER NOT NULL,
+  wall_s          REAL NOT NULL,
+  output_dt_s     REAL NOT NULL,
+  tip_m           BLOB NOT NULL,
+  force_n         BLOB NOT NULL,
+  shocks_json     TEXT NOT NULL,
+  run_id          INTEGER REFERENCES runs(run_id),
+  created_utc     TEXT NOT NULL
+);
+CREATE TABLE points (
+  point_id           INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key          TEXT NOT NULL,
+  reference_key      TEXT NOT NULL,
+  r_k                REAL NOT NULL,
+  r_ftrunc           REAL NOT NULL,
+  scheme             TEXT NOT NULL,
+  dt_rule            TEXT,
+  dt_factor          REAL,
+  dt_asked_s         REAL,
+  window_s           REAL NOT NULL,
+  n_elements_asked   INTEGER NOT NULL,
+  mass_damping_per_s REAL NOT NULL,
+  status             TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'failed', 'reference_unconverged')),
+  message            TEXT NOT NULL DEFAULT '',
+  run_id             INTEGER REFERENCES runs(run_id),
+  updated_utc        TEXT NOT NULL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX points_by_status ON points(study_id, status);
+CREATE TABLE scores (
+  point_id                 INTEGER PRIMARY KEY REFERENCES points(point_id),
+  reference_id             INTEGER NOT NULL REFERENCES reference_runs(reference_id),
+  err                      REAL,
+  srf                      REAL,
+  n_modes                  INTEGER NOT NULL,
+  n_elements               INTEGER NOT NULL,
+  n_dofs                   INTEGER NOT NULL,
+  dt_requested_s           REAL NOT NULL,
+  dt_used_s                REAL NOT NULL,
+  dt_paper_s               REAL NOT NULL,
+  dt_sharp_s               REAL NOT NULL,
+  steps                    INTEGER NOT NULL,
+  wall_s                   REAL NOT NULL,
+  cpu_s                    REAL NOT NULL,
+  max_energy_ratio         REAL NOT NULL,
+  n_shocks                 INTEGER NOT NULL,
+  first_shock_start_s      REAL,
+  first_shock_impulse_n_s  REAL,
+  first_shock_peak_n       REAL,
+  first_shock_duration_s   REAL,
+  first_shock_rebounds     INTEGER,
+  shocks_json              TEXT NOT NULL
+);
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, ru.host, p.updated_utc
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+};
+constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
+static_assert(kMigrationCount == kSchemaVersion);
+
+int PragmaInt(Connection& db, const char* pragma) {
+  Statement s = db.Prepare(std::string("PRAGMA ") + pragma);
+  return s.Step() ? static_cast<int>(s.GetInt(0)) : 0;
+}
+
+// Throws unless the file is empty, or ours at a version this build can read.
+int CheckedVersion(Connection& db) {
+  {
+    Statement check = db.Prepare("PRAGMA quick_check");
+    const std::string verdict = check.Step() ? check.GetText(0) : "no answer";
+    if (verdict != "ok") {
+      throw DbError(db.Path() + ": not a sound SQLite database (quick_check: " + verdict + ")");
+    }
+  }
+  const int version = PragmaInt(db, "user_version");
+  const int app_id = PragmaInt(db, "application_id");
+  Statement tables = db.Prepare("SELECT count(*) FROM sqlite_schema");
+  tables.Step();
+  const bool empty = tables.GetInt(0) == 0;
+  if (empty && version == 0 && app_id == 0) return 0;
+  if (app_id != kApplicationId) {
+    throw DbError(db.Path() + ": not a shockmap database (application_id " +
+                  std::to_string(app_id) + "); refusing to touch it");
+  }
+  if (version > kSchemaVersion) {
+    throw DbError(db.Path() + ": written by a newer shockmap (schema version " +
+                  std::to_string(version) + ", this build reads up to " +
+                  std::to_string(kSchemaVersion) + ")");
+  }
+  return version;
+}
+
+}  // namespace
+
+void CheckSchema(Connection& db) {
+  if (CheckedVersion(db) != kSchemaVersion) {
+    throw DbError(db.Path() +
+                  ": schema is older than this build's; open it once for writing "
+                  "(e.g. shockmap study status) to migrate");
+  }
+}
+
+void MigrateToCurrent(Connection& db) {
+  for (int version = CheckedVersion(db); version < kSchemaVersion; ++version) {
+    Transaction t(db);
+    db.Execute(kMigrations[version]);
+    db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
+    db.Execute("PRAGMA user_version = " + std::to_string(version + 1));
+    t.Commit();
+  }
+}
+
+}  // namespace shockmap

@@ -1,0 +1,21 @@
+#pragma once
+// The study database schema, versioned by PRAGMA user_version, with forward migrations.
+
+#include "db/sqlite_handle.h"
+
+namespace shockmap {
+
+inline constexpr int kSchemaVersion = 1;
+// PRAGMA application_id of every shockmap database ("SHMP"): tells ours from a foreign file.
+inline constexpr int kApplicationId = 0x53484D50;
+
+// Brings a database to kSchemaVersion, each migration in its own transaction. A new, empty
+// file is initialized. Throws DbError without modifying the file when it is not a shockmap
+// database (foreign application id or foreign tables), was written by a newer shockmap
+// (user_version > kSchemaVersion), or fails PRAGMA quick_check.
+void MigrateToCurrent(Connection& db);
+
+// The same checks without writing: for read-only connections.
+void CheckSchema(Connection& db);
+
+}  // namespace shockmap

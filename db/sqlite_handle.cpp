@@ -1,0 +1,150 @@
+#include "db/sqlite_handle.h"
+
+#include <cstring>
+
+namespace shockmap {
+
+Connection::Connection(const std::string& path, Mode mode) : path_(path) {
+  const int flags =
+      mode == Mode::kReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+  if (rc != SQLITE_OK) {
+    const std::string msg = db_ != nullptr ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    sqlite3_close(db_);
+    db_ = nullptr;
+    throw DbError("cannot open database " + path + ": " + msg);
+  }
+  sqlite3_extended_result_codes(db_, 1);
+  // A second writer waits up to 10 s for the lock, then fails with "database is locked".
+  sqlite3_busy_timeout(db_, 10000);
+  if (mode == Mode::kReadOnly) Execute("PRAGMA query_only = 1");
+}
+
+Connection::~Connection() { sqlite3_close_v2(db_); }
+
+void Connection::Execute(std::string_view sql) {
+  char* err = nullptr;
+  const std::string text(sql);
+  if (sqlite3_exec(db_, text.c_str(), nullptr, nullptr, &err) != SQLITE_OK) {
+    const std::string msg = err != nullptr ? err : sqlite3_errmsg(db_);
+    sqlite3_free(err);
+    throw DbError(path_ + ": " + msg + " (in: " + text.substr(0, 200) + ")");
+  }
+}
+
+Statement Connection::Prepare(std::string_view sql) {
+  sqlite3_stmt* stmt = nullptr;
+  const char* tail = nullptr;
+  const int rc = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &stmt, &tail);
+  if (rc != SQLITE_OK) {
+    throw DbError(std::string(sqlite3_errmsg(db_)) + " (in: " + std::string(sql.substr(0, 200)) +
+                  ")");
+  }
+  if (stmt == nullptr) throw DbError("empty SQL statement");
+  return Statement(db_, stmt, std::string(sql));
+}
+
+std::int64_t Connection::LastInsertRowId() const { return sqlite3_last_insert_rowid(db_); }
+
+Statement::Statement(sqlite3* db, sqlite3_stmt* stmt, std::string sql)
+    : db_(db), stmt_(stmt), sql_(std::move(sql)) {}
+
+Statement::~Statement() { sqlite3_finalize(stmt_); }
+
+Statement::Statement(Statement&& other) noexcept
+    : db_(other.db_), stmt_(other.stmt_), sql_(std::move(other.sql_)) {
+  other.stmt_ = nullptr;
+}
+
+void Statement::Check(int rc) const {
+  if (rc != SQLITE_OK) throw DbError(std::string(sqlite3_errmsg(db_)) + " (in: " + sql_ + ")");
+}
+
+Statement& Statement::Bind(int i, double v) {
+  Check(sqlite3_bind_double(stmt_, i, v));
+  return *this;
+}
+
+Statement& Statement::Bind(int i, std::int64_t v) {
+  Check(sqlite3_bind_int64(stmt_, i, v));
+  return *this;
+}
+
+Statement& Statement::Bind(int i, std::string_view v) {
+  Check(sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT));
+  return *this;
+}
+
+Statement& Statement::Bind(int i, const std::vector<double>& blob) {
+  Check(sqlite3_bind_blob64(stmt_, i, blob.data(), blob.size() * sizeof(double), SQLITE_TRANSIENT));
+  return *this;
+}
+
+Statement& Statement::BindNull(int i) {
+  Check(sqlite3_bind_null(stmt_, i));
+  return *this;
+}
+
+bool Statement::Step() {
+  const int rc = sqlite3_step(stmt_);
+  if (rc == SQLITE_ROW) return true;
+  if (rc == SQLITE_DONE) return false;
+  throw DbError(std::string(sqlite3_errmsg(db_)) + " (in: " + sql_.substr(0, 200) + ")");
+}
+
+void Statement::Run() {
+  while (Step()) {
+  }
+  Reset();
+}
+
+void Statement::Reset() {
+  sqlite3_reset(stmt_);
+  sqlite3_clear_bindings(stmt_);
+}
+
+int Statement::ColumnCount() const { return sqlite3_column_count(stmt_); }
+std::string Statement::ColumnName(int i) const { return sqlite3_column_name(stmt_, i); }
+bool Statement::IsNull(int i) const { return sqlite3_column_type(stmt_, i) == SQLITE_NULL; }
+int Statement::ColumnType(int i) const { return sqlite3_column_type(stmt_, i); }
+double Statement::GetDouble(int i) const { return sqlite3_column_double(stmt_, i); }
+std::int64_t Statement::GetInt(int i) const { return sqlite3_column_int64(stmt_, i); }
+
+std::string Statement::GetText(int i) const {
+  const auto* p = sqlite3_column_text(stmt_, i);
+  return p != nullptr ? std::string(reinterpret_cast<const char*>(p)) : std::string();
+}
+
+std::optional<double> Statement::GetOptionalDouble(int i) const {
+  if (IsNull(i)) return std::nullopt;
+  return GetDouble(i);
+}
+
+std::vector<double> Statement::GetBlob(int i) const {
+  const void* p = sqlite3_column_blob(stmt_, i);
+  const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, i));
+  std::vector<double> v(bytes / sizeof(double));
+  if (p != nullptr && !v.empty()) std::memcpy(v.data(), p, v.size() * sizeof(double));
+  return v;
+}
+
+bool Statement::IsReadOnly() const { return sqlite3_stmt_readonly(stmt_) != 0; }
+
+Transaction::Transaction(Connection& c) : c_(c) { c_.Execute("BEGIN IMMEDIATE"); }
+
+Transaction::~Transaction() {
+  if (!done_) {
+    try {
+      c_.Execute("ROLLBACK");
+    } catch (const DbError&) {
+      // Nothing more can be done from a destructor; the transaction is abandoned.
+    }
+  }
+}
+
+void Transaction::Commit() {
+  c_.Execute("COMMIT");
+  done_ = true;
+}
+
+}  // namespace shockmap

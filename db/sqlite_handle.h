@@ -1,0 +1,103 @@
+#pragma once
+// Thin RAII over the SQLite C API: a connection and prepared statements that throw DbError with
+// SQLite's message and the SQL involved.
+
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shockmap {
+
+class DbError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Statement;
+
+class Connection {
+ public:
+  enum class Mode { kReadWriteCreate, kReadOnly };
+  // Opens `path`. Throws DbError naming the path when it cannot be opened. A read-only
+  // connection never creates the file and sets PRAGMA query_only.
+  Connection(const std::string& path, Mode mode);
+  ~Connection();
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  // Runs one or more statements without results.
+  void Execute(std::string_view sql);
+  Statement Prepare(std::string_view sql);
+  std::int64_t LastInsertRowId() const;
+  const std::string& Path() const { return path_; }
+  sqlite3* Raw() const { return db_; }
+
+ private:
+  std::string path_;
+  sqlite3* db_ = nullptr;
+};
+
+// A prepared statement. Bind parameters are 1-based as in SQLite.
+class Statement {
+ public:
+  Statement(sqlite3* db, sqlite3_stmt* stmt, std::string sql);
+  ~Statement();
+  Statement(Statement&& other) noexcept;
+  Statement& operator=(Statement&&) = delete;
+  Statement(const Statement&) = delete;
+
+  Statement& Bind(int i, double v);
+  Statement& Bind(int i, std::int64_t v);
+  Statement& Bind(int i, int v) { return Bind(i, static_cast<std::int64_t>(v)); }
+  Statement& Bind(int i, std::string_view v);
+  Statement& Bind(int i, const char* v) { return Bind(i, std::string_view(v)); }
+  Statement& Bind(int i, const std::vector<double>& blob);
+  Statement& BindNull(int i);
+  template <typename T>
+  Statement& Bind(int i, const std::optional<T>& v) {
+    return v ? Bind(i, *v) : BindNull(i);
+  }
+
+  // Advances; true while a row is available.
+  bool Step();
+  // Runs a statement without results to completion.
+  void Run();
+  void Reset();
+
+  int ColumnCount() const;
+  std::string ColumnName(int i) const;
+  bool IsNull(int i) const;
+  int ColumnType(int i) const;
+  double GetDouble(int i) const;
+  std::int64_t GetInt(int i) const;
+  std::string GetText(int i) const;
+  std::optional<double> GetOptionalDouble(int i) const;
+  std::vector<double> GetBlob(int i) const;
+  // True when the statement cannot modify the database (sqlite3_stmt_readonly).
+  bool IsReadOnly() const;
+
+ private:
+  void Check(int rc) const;
+  sqlite3* db_;
+  sqlite3_stmt* stmt_;
+  std::string sql_;
+};
+
+// BEGIN IMMEDIATE ... COMMIT, rolled back if destroyed before Commit().
+class Transaction {
+ public:
+  explicit Transaction(Connection& c);
+  ~Transaction();
+  void Commit();
+
+ private:
+  Connection& c_;
+  bool done_ = false;
+};
+
+}  // namespace shockmap

@@ -1,0 +1,56 @@
+#pragma once
+// Strict reading of JSON input files: every error names the file, the key path (e.g.
+// grids[1].rk.logspace), the value found and what is allowed; unknown keys are errors.
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/input_error.h"
+
+namespace shockmap {
+
+// Parses `path` as JSON; throws InputError naming the file (missing, unreadable, not JSON).
+nlohmann::json ReadJsonFile(const std::string& path);
+
+// One JSON object being read. Call Finish() once every known key has been read: it rejects the
+// keys nobody asked for.
+class JsonObjectReader {
+ public:
+  JsonObjectReader(const nlohmann::json& value, std::string file, std::string path);
+
+  bool Has(const std::string& key) const { return object_.contains(key); }
+  // The raw value of a key (marking it read), or nullptr when absent.
+  const nlohmann::json* Get(const std::string& key);
+  // Path of a key of this object, for nested readers and messages.
+  std::string PathOf(const std::string& key) const;
+
+  double Number(const std::string& key, double fallback);
+  double RequiredNumber(const std::string& key);
+  int Integer(const std::string& key, int fallback);
+  std::string String(const std::string& key, const std::string& fallback);
+  std::string RequiredString(const std::string& key);
+  void Finish() const;
+
+  // Throws InputError "<file>: <path>: <message>".
+  [[noreturn]] void Fail(const std::string& key, const std::string& message) const;
+  const std::string& File() const { return file_; }
+
+ private:
+  const nlohmann::json& object_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+// Throws InputError "<file>: <path>: <message>".
+[[noreturn]] void FailAt(const std::string& file, const std::string& path,
+                         const std::string& message);
+// A finite number at `path`, or InputError.
+double NumberAt(const nlohmann::json& value, const std::string& file, const std::string& path);
+// The value as it appears in the file, shortened, for messages.
+std::string Shown(const nlohmann::json& value);
+
+}  // namespace shockmap
