@@ -21,8 +21,11 @@ double ContactDampingPower(const std::vector<PointContact>& contacts, const Eige
   for (const auto& c : contacts) {
     if (c.damping_n_s_per_m == 0.0) continue;
     const double u = c.row.dot(x);
+    if (u >= c.gap_m) continue;
+    // d/dt (kinetic + strain + spring) = -(k (g - u) - F) w: the damper's share, c w^2 while
+    // the force is positive, and the whole spring power k (g - u) w while it is clamped at 0.
     const double w = c.row.dot(v);
-    if (PenaltyForce(c, u, w) > 0.0) p += c.damping_n_s_per_m * w * w;
+    p += (c.stiffness_n_per_m * (c.gap_m - u) - PenaltyForce(c, u, w)) * w;
   }
   return p;
 }

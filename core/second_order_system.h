@@ -45,7 +45,9 @@ class SecondOrderSystem {
 // Sum over contacts of the penalty energy at state x.
 double ContactEnergy(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x);
 bool AnyContactDamping(const std::vector<PointContact>& contacts);
-// Sum over contacts of F * (-v_point) for the viscous part of each active contact (W).
+// Power taken out of the mechanical energy (kinetic + strain + penalty spring) by contact
+// damping, summed over contacts in contact (W): c w^2 while the force is positive, and the
+// spring power k (g - u) w while the force is clamped at zero (the stop never pulls).
 double ContactDampingPower(const std::vector<PointContact>& contacts, const Eigen::VectorXd& x,
                            const Eigen::VectorXd& v);
 

@@ -1,5 +1,6 @@
 #include "core/transient_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -78,8 +79,8 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   TransientResult result;
   RunSummary& summary = result.summary;
   summary.dt_requested_s = options.dt_s;
-  summary.steps_requested =
-      static_cast<std::int64_t>(std::ceil(options.end_time_s / options.dt_s - 1e-9));
+  summary.steps_requested = std::max<std::int64_t>(
+      1, static_cast<std::int64_t>(std::ceil(options.end_time_s / options.dt_s - 1e-9)));
   summary.dt_used_s = options.end_time_s / static_cast<double>(summary.steps_requested);
   const double dt = summary.dt_used_s;
 

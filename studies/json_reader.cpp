@@ -16,7 +16,7 @@ nlohmann::json ReadJsonFile(const std::string& path) {
   }
   try {
     return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // Syntax errors and out-of-range numbers.
     throw InputError(path + ": not valid JSON (" + e.what() + ")");
   }
 }

@@ -1,5 +1,7 @@
 #include "studies/study_runner.h"
 
+#include <algorithm>
+#include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -143,6 +145,10 @@ StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) 
       missing.push_back({key, *by_key.at(row.parameters.point_key)});
     }
   }
+  // Longest first (cost grows with the truncation), so no worker is left with the longest alone.
+  std::ranges::stable_sort(missing, std::greater{}, [&](const ReferenceTask& t) {
+    return spec.scoring.reference.RFref(t.point.r_k);
+  });
   const CpuTimer reference_timer;
   RunOnWorkers(
       missing.size(), summary.jobs,

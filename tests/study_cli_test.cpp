@@ -1,0 +1,186 @@
+// The study manager as a process: killed with SIGKILL mid-run and resumed, bad study files
+// refused without touching the database, read-only queries.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "db/read_only_query.h"
+#include "tests/run_command.h"
+
+namespace shockmap {
+namespace {
+
+using testing::ReadBytes;
+using testing::RunShockmap;
+using testing::WriteText;
+
+class StudyProcess : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("shockmap_study_cli_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::filesystem::path dir_;
+};
+
+// Implicit full-model points on fine meshes: ~0.1-0.5 s each, so a kill lands mid-study.
+constexpr const char* kSlowStudy = R"({
+  "name": "slow",
+  "scoring": {"window_s": 0.03},
+  "grids": [{"rk": [100, 1000, 3000], "rftrunc": 300, "scheme": "implicit-full",
+             "n_elements": [150, 200, 250], "dt": {"factor": [0.05, 0.1]}}]
+})";
+
+// point_key -> the columns that must not depend on interruptions.
+std::map<std::string, std::string> Outcomes(const std::string& db) {
+  const QueryResult r = RunReadOnlyQuery(
+      db,
+      "SELECT p.point_key, p.status || ' ' || quote(s.err) || ' ' || quote(s.srf) || ' ' || "
+      "quote(s.steps) || ' ' || quote(s.dt_used_s) || ' ' || quote(s.n_dofs) "
+      "FROM points p LEFT JOIN scores s USING (point_id)");
+  std::map<std::string, std::string> m;
+  for (const auto& row : r.rows) m[std::get<std::string>(row[0])] = std::get<std::string>(row[1]);
+  return m;
+}
+
+std::int64_t Count(const std::string& db, const std::string& sql) {
+  return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
+}
+
+TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
+  const std::string spec = Path("slow.json");
+  WriteText(spec, kSlowStudy);
+  const std::string whole = Path("whole.db"), killed = Path("killed.db");
+  const auto uninterrupted = RunShockmap("study run " + spec + " --db " + whole + " --quiet");
+  ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
+
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(SHOCKMAP_BIN, SHOCKMAP_BIN, "study", "run", spec.c_str(), "--db", killed.c_str(),
+          "--jobs", "2", "--quiet", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Kill once a few points are stored and before the study is done.
+  std::int64_t stored = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    try {
+      stored =
+          Count(killed, "SELECT count(*) FROM points WHERE status NOT IN ('pending', 'running')");
+    } catch (const std::exception&) {
+      stored = 0;  // Not created or not migrated yet.
+    }
+    if (stored >= 3) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the study finished before it could be killed";
+  const std::int64_t total = Count(whole, "SELECT count(*) FROM points");
+  const std::int64_t unfinished =
+      Count(killed, "SELECT count(*) FROM points WHERE status IN ('pending', 'running')");
+  EXPECT_GT(unfinished, 0) << "nothing was left to resume";
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM points"), total);
+
+  const auto resumed = RunShockmap("study run " + spec + " --db " + killed + " --quiet");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find(std::to_string(unfinished) + " computed now"), std::string::npos)
+      << resumed.output;
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM points"), total);
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM scores"), total);
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM points WHERE status IN ('pending', 'running')"), 0);
+  EXPECT_EQ(Outcomes(killed), Outcomes(whole));
+}
+
+TEST_F(StudyProcess, BadStudyFilesLeaveTheDatabaseByteForByteUnchanged) {
+  const std::string db = Path("study.db");
+  const std::string good = Path("good.json");
+  WriteText(
+      good,
+      R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": 100, "rftrunc": 10}]})");
+  ASSERT_EQ(RunShockmap("study run " + good + " --db " + db + " --quiet").exit_code, 0);
+  const std::string bytes = ReadBytes(db);
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"", "is empty"},
+      {"{\"name\": \"g\", \"grids\": [", "not valid JSON"},
+      {R"({"name": "g", "grids": [{"rk": -1, "rftrunc": 10}]})", "grids[0].rk"},
+      {R"({"name": "g", "grids": [{"rk": 1, "rftrunc": 10, "speed": 3}]})", "grids[0].speed"},
+      {R"({"name": "g", "grids": [{"rk": 1e400, "rftrunc": 10}]})", "number overflow"},
+      {R"({"name": "g", "scoring": {"window_s": 0.03, "shocks": {"rest_duration_t1": 0.2}},
+           "grids": [{"rk": 100, "rftrunc": 10}]})",
+       "other problem or scoring settings"},
+  };
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    const std::string file = Path("bad" + std::to_string(i) + ".json");
+    WriteText(file, bad[i].first);
+    const auto o = RunShockmap("study run " + file + " --db " + db + " --quiet");
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_NE(o.output.find(bad[i].second), std::string::npos) << o.output;
+    EXPECT_NE(o.output.find(file), std::string::npos) << o.output;
+    EXPECT_TRUE(ReadBytes(db) == bytes) << "case " << i;
+  }
+  // A bad file never creates a database either.
+  const std::string fresh = Path("fresh.db");
+  EXPECT_EQ(RunShockmap("study run " + Path("bad2.json") + " --db " + fresh).exit_code, 2);
+  EXPECT_FALSE(std::filesystem::exists(fresh));
+  EXPECT_EQ(RunShockmap("study run " + Path("missing.json") + " --db " + fresh).exit_code, 2);
+}
+
+TEST_F(StudyProcess, QueryAnswersInCsvAndJsonAndRefusesWrites) {
+  const std::string db = Path("study.db");
+  const std::string spec = Path("q.json");
+  WriteText(
+      spec,
+      R"({"name": "q", "scoring": {"window_s": 0.03}, "grids": [{"rk": [100, 3000], "rftrunc": [10, 300]}]})");
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+
+  const auto csv = RunShockmap("query --db " + db +
+                               " 'SELECT r_k, r_ftrunc, err, srf FROM results ORDER BY point_id' "
+                               "--format csv");
+  ASSERT_EQ(csv.exit_code, 0) << csv.output;
+  EXPECT_EQ(csv.output.rfind("r_k,r_ftrunc,err,srf\n", 0), 0u) << csv.output;
+  EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 5);
+
+  const auto json = RunShockmap("query --db " + db + " 'SELECT * FROM results' --format json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const auto rows = nlohmann::json::parse(json.output);
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& row : rows) {
+    EXPECT_EQ(row["status"], "ok");
+    EXPECT_GE(row["err"].get<double>(), 0.0);
+    EXPECT_LE(row["srf"].get<double>(), 1.0);
+    EXPECT_FALSE(row["code_version"].get<std::string>().empty());
+  }
+
+  const std::string bytes = ReadBytes(db);
+  for (const char* sql :
+       {"DELETE FROM points", "UPDATE scores SET err = 0", "DROP VIEW results",
+        "SELECT 1; DELETE FROM points", "PRAGMA user_version = 7", "ATTACH 'x.db' AS x"}) {
+    const auto o = RunShockmap("query --db " + db + " \"" + sql + "\"");
+    EXPECT_EQ(o.exit_code, 2) << sql << ": " << o.output;
+  }
+  EXPECT_TRUE(ReadBytes(db) == bytes);
+  const auto missing = RunShockmap("query --db " + Path("none.db") + " 'SELECT 1'");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.output.find("none.db"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shockmap

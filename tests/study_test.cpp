@@ -1,0 +1,186 @@
+// The study manager in-process: strict spec parsing, and a database that computes only what is
+// missing and shares references.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "db/read_only_query.h"
+#include "studies/study_runner.h"
+#include "tests/run_command.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+struct BadSpec {
+  const char* name;
+  const char* json;
+  const char* path;  // The key path the message must name.
+};
+
+void PrintTo(const BadSpec& b, std::ostream* os) { *os << b.name; }
+
+class StudySpecRejects : public ::testing::TestWithParam<BadSpec> {};
+
+TEST_P(StudySpecRejects, NamingTheKeyPath) {
+  const Json json = Json::parse(GetParam().json);
+  try {
+    ParseStudySpec(json, "bad.json");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("bad.json: "), std::string::npos) << message;
+    EXPECT_NE(message.find(GetParam().path), std::string::npos) << message;
+  }
+}
+
+constexpr const char* kGrid = R"("grids": [{"rk": [100], "rftrunc": [10]}])";
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, StudySpecRejects,
+    ::testing::Values(
+        BadSpec{"MissingName", R"({"grids": [{"rk": 1, "rftrunc": 10}]})", "name"},
+        BadSpec{"UnknownTopKey",
+                R"({"name": "x", "grid": [], "grids": [{"rk": 1, "rftrunc": 10}]})", "grid"},
+        BadSpec{"UnknownAxis", R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 10, "rks": 2}]})",
+                "grids[0].rks"},
+        BadSpec{"WrongType", R"({"name": "x", "grids": [{"rk": "abc", "rftrunc": 10}]})",
+                "grids[0].rk"},
+        BadSpec{"EmptyAxis", R"({"name": "x", "grids": [{"rk": [], "rftrunc": 10}]})",
+                "grids[0].rk"},
+        BadSpec{"NegativeStiffness", R"({"name": "x", "grids": [{"rk": [1, -3], "rftrunc": 10}]})",
+                "grids[0].rk"},
+        BadSpec{"TruncationBelowOne", R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 0.5}]})",
+                "grids[0].rftrunc"},
+        BadSpec{"LogspaceArity",
+                R"({"name": "x", "grids": [{"rk": {"logspace": [0, 6]}, "rftrunc": 10}]})",
+                "grids[0].rk.logspace"},
+        BadSpec{"LogspaceCount",
+                R"({"name": "x", "grids": [{"rk": {"logspace": [0, 6, 0]}, "rftrunc": 10}]})",
+                "grids[0].rk.logspace[2]"},
+        BadSpec{"UnknownRule",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 10, "dt": {"rule": "loose"}}]})",
+                "grids[0].dt.rule"},
+        BadSpec{"NegativeFactor",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 10, "dt": {"factor": -1}}]})",
+                "grids[0].dt.factor"},
+        BadSpec{"UnknownScheme",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 10, "scheme": "rk4"}]})",
+                "grids[0].scheme"},
+        BadSpec{"ZeroWindow",
+                R"({"name": "x", "scoring": {"window_s": 0}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+                "scoring.window_s"},
+        BadSpec{
+            "UnknownPsdWindow",
+            R"({"name": "x", "scoring": {"psd": {"window": "blackman"}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.psd.window"},
+        BadSpec{"FractionalElements",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": 10, "n_elements": 2.5}]})",
+                "grids[0].n_elements"},
+        BadSpec{
+            "HugeGrid",
+            R"({"name": "x", "grids": [{"rk": {"logspace": [0, 6, 100000]}, "rftrunc": {"linspace": [1, 300, 100000]}}]})",
+            "grids[0]"},
+        BadSpec{"ListForListedPoint", R"({"name": "x", "points": [{"rk": [1, 2], "rftrunc": 10}]})",
+                "points[0].rk"},
+        BadSpec{
+            "BadProblem",
+            R"({"name": "x", "problem": {"gap_m": "wide"}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "problem.gap_m"},
+        BadSpec{"NoGridNoPoints", R"({"name": "x"})", "(top level)"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(StudySpec, ExpandsGridsAndPointsWithoutRepeats) {
+  const StudySpec s = ParseStudySpec(Json::parse(R"({
+    "name": "x",
+    "grids": [{"rk": {"logspace": [0, 2, 3]}, "rftrunc": [10, 30], "dt": {"factor": [0.1, 0.2]}}],
+    "points": [{"rk": 10, "rftrunc": 10, "dt": {"factor": 0.1}}, {"rk": 5, "rftrunc": 10}]
+  })"),
+                                     "x.json");
+  // 3 x 2 x 2 from the grid; the first listed point repeats a grid point.
+  EXPECT_EQ(s.points.size(), 13u);
+  EXPECT_DOUBLE_EQ(s.points[0].r_k, 1.0);
+  EXPECT_DOUBLE_EQ(s.points.back().r_k, 5.0);
+}
+
+class StudyDatabaseRuns : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("shockmap_study_test_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+    options_.database_path = (dir_ / "study.db").string();
+    options_.jobs = 2;
+    options_.progress = false;
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  static StudySpec Spec(const std::string& name, const std::string& rftrunc) {
+    return ParseStudySpec(Json::parse(R"({"name": ")" + name + R"(", "scoring": {"window_s": 0.03},
+        "grids": [{"rk": [100, 3000], "rftrunc": )" +
+                                      rftrunc + "}]}"),
+                          name + ".json");
+  }
+  QueryResult Rows() const {
+    return RunReadOnlyQuery(options_.database_path,
+                            "SELECT point_id, status, err, srf, steps, updated_utc FROM results "
+                            "ORDER BY point_id");
+  }
+
+  std::filesystem::path dir_;
+  StudyRunOptions options_;
+};
+
+TEST_F(StudyDatabaseRuns, SecondRunComputesNothing) {
+  const StudyRunSummary first = RunStudy(Spec("s", "[10, 300]"), options_);
+  EXPECT_EQ(first.points_computed, 4u);
+  EXPECT_EQ(first.references_computed, 2);
+  const QueryResult before = Rows();
+  const StudyRunSummary second = RunStudy(Spec("s", "[10, 300]"), options_);
+  EXPECT_EQ(second.points_computed, 0u);
+  EXPECT_EQ(second.references_computed, 0);
+  EXPECT_EQ(Rows().rows, before.rows);
+}
+
+TEST_F(StudyDatabaseRuns, AddedAxisValueComputesOnlyTheNewPoints) {
+  RunStudy(Spec("s", "[10, 300]"), options_);
+  const QueryResult before = Rows();
+  const StudyRunSummary more = RunStudy(Spec("s", "[10, 100, 300]"), options_);
+  EXPECT_EQ(more.points_in_study, 6u);
+  EXPECT_EQ(more.points_computed, 2u);  // R_ftrunc = 100 at both R_k
+  EXPECT_EQ(more.references_computed, 0);
+  EXPECT_EQ(more.references_reused, 2);
+  const QueryResult after = Rows();
+  ASSERT_EQ(after.rows.size(), 6u);
+  for (const auto& row : before.rows) {
+    EXPECT_NE(std::find(after.rows.begin(), after.rows.end(), row), after.rows.end());
+  }
+}
+
+TEST_F(StudyDatabaseRuns, ReferencesAreSharedAcrossStudies) {
+  RunStudy(Spec("a", "[10]"), options_);
+  const StudyRunSummary b = RunStudy(Spec("b", "[300]"), options_);
+  EXPECT_EQ(b.points_computed, 2u);
+  EXPECT_EQ(b.references_computed, 0);
+  EXPECT_EQ(b.references_reused, 2);
+}
+
+TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {
+  RunStudy(Spec("s", "[10]"), options_);
+  const std::string bytes = testing::ReadBytes(options_.database_path);
+  // The PSD settings change every stored Err; the window, an axis, would only add points.
+  const StudySpec changed = ParseStudySpec(
+      Json::parse(R"({"name": "s", "scoring": {"window_s": 0.03, "psd": {"n_samples": 2048}},
+                      "grids": [{"rk": [100], "rftrunc": [10]}]})"),
+      "s.json");
+  EXPECT_THROW(RunStudy(changed, options_), InputError);
+  EXPECT_TRUE(testing::ReadBytes(options_.database_path) == bytes);
+}
+
+}  // namespace
+}  // namespace shockmap
