@@ -93,20 +93,21 @@ double ReferenceSolution::ContactForce(double t_s) const {
   return std::max(0.0, stiffness_n_per_m_ * (gap_m_ - contact_->Tip(p, t_s - p.start_s)));
 }
 
-UniformSignal ReferenceSolution::SampleTipDisplacement(double dt_s, double end_s) const {
+UniformSignal ReferenceSolution::Sample(double (ReferenceSolution::*value)(double) const,
+                                        double dt_s, double end_s) const {
   UniformSignal s{0.0, dt_s, {}};
   const auto n = static_cast<std::size_t>(std::floor(end_s / dt_s + 1e-9)) + 1;
   s.values.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) s.values.push_back(TipDisplacement(s.TimeAt(i)));
+  for (std::size_t i = 0; i < n; ++i) s.values.push_back((this->*value)(s.TimeAt(i)));
   return s;
 }
 
+UniformSignal ReferenceSolution::SampleTipDisplacement(double dt_s, double end_s) const {
+  return Sample(&ReferenceSolution::TipDisplacement, dt_s, end_s);
+}
+
 UniformSignal ReferenceSolution::SampleContactForce(double dt_s, double end_s) const {
-  UniformSignal s{0.0, dt_s, {}};
-  const auto n = static_cast<std::size_t>(std::floor(end_s / dt_s + 1e-9)) + 1;
-  s.values.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) s.values.push_back(ContactForce(s.TimeAt(i)));
-  return s;
+  return Sample(&ReferenceSolution::ContactForce, dt_s, end_s);
 }
 
 namespace {

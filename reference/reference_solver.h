@@ -64,6 +64,8 @@ class ReferenceSolution {
 
  private:
   const ReferencePhase& PhaseAt(double t_s) const;
+  UniformSignal Sample(double (ReferenceSolution::*value)(double) const, double dt_s,
+                       double end_s) const;
   const Configuration& ConfigurationOf(const ReferencePhase& p) const;
 
   double gap_m_;
