@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/compare_command.h"
+#include "app/criteria_command.h"
 #include "app/study_command.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
@@ -17,8 +18,11 @@ int main(int argc, char** argv) {
   shockmap::AddCompareCommand(app);
   shockmap::AddStudyCommand(app);
   shockmap::AddQueryCommand(app);
+  shockmap::AddCriteriaCommand(app);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // A verdict already printed (criteria check: 1).
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "shockmap: error: " << e.what() << '\n';

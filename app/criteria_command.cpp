@@ -1,0 +1,95 @@
+#include "app/criteria_command.h"
+
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "app/flag_checks.h"
+#include "core/input_error.h"
+#include "db/study_database.h"
+#include "studies/criteria_report.h"
+#include "studies/json_reader.h"
+#include "studies/scored_points.h"
+
+namespace shockmap {
+namespace {
+
+struct CriteriaFlags {
+  std::string database_path = kDefaultDatabasePath;
+  std::string study;
+  CriteriaOptions options;
+  std::string out;
+  std::string baseline;
+};
+
+// Exit code of `criteria check` when the data contradicts the baseline.
+constexpr int kCheckFailed = 1;
+
+void Derive(const CriteriaFlags& f) {
+  std::string error;
+  if (!f.options.IsValid(&error)) throw InputError(error);
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const ValidityCriteria criteria = DeriveCriteria(points, f.options);
+  std::cout << CriteriaSummary(study, criteria, points);
+  if (!f.out.empty()) {
+    std::ofstream out(f.out);
+    out << CriteriaToJson(study, criteria).dump(2) << '\n';
+    if (!out) throw InputError("cannot write " + f.out);
+    std::cout << "  written     " << f.out << '\n';
+  }
+}
+
+void Check(const CriteriaFlags& f) {
+  CriteriaTolerances tolerances;
+  const ValidityCriteria baseline =
+      CriteriaFromJson(ReadJsonFile(f.baseline), f.baseline, &tolerances);
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const ValidityCriteria current = DeriveCriteria(points, baseline.options);
+  const auto problems = CheckAgainstBaseline(baseline, tolerances, current, points);
+  if (problems.empty()) {
+    std::cout << "criteria check: study " << study << " agrees with " << f.baseline << " ("
+              << points.size() << " points)\n";
+    return;
+  }
+  std::cout << "criteria check: study " << study << " contradicts " << f.baseline << ":\n";
+  for (const auto& p : problems) std::cout << "  " << p << '\n';
+  throw CLI::RuntimeError(kCheckFailed);
+}
+
+}  // namespace
+
+void AddCriteriaCommand(CLI::App& app) {
+  auto flags = std::make_shared<CriteriaFlags>();
+  CLI::App* criteria = app.add_subcommand(
+      "criteria", "Validity criteria of the explicit modal scheme, from a study's scores");
+  criteria->require_subcommand(1);
+
+  CLI::App* derive = criteria->add_subcommand(
+      "derive",
+      "For each R_k the smallest R_ftrunc and largest dt meeting the thresholds, a "
+      "log-log fit of the boundary, set against the paper's rules");
+  derive->add_option("STUDY", flags->study, "study name (default: the database's only study)");
+  derive->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  derive->add_option("--err-max", flags->options.err_max, "largest acceptable Err")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
+  derive->add_option("--srf-min", flags->options.srf_min, "smallest acceptable SRf")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+  derive->add_option("--out", flags->out, "write the criteria as JSON (a baseline for check)");
+  derive->callback([flags] { Derive(*flags); });
+
+  CLI::App* check = criteria->add_subcommand(
+      "check",
+      "Regression check: exit 0 when the study agrees with the baseline criteria within "
+      "their tolerances and no stored point contradicts them, else exit 1");
+  check->add_option("STUDY", flags->study, "study name (default: the database's only study)");
+  check->add_option("--baseline", flags->baseline, "criteria JSON written by derive --out")
+      ->required();
+  check->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  check->callback([flags] { Check(*flags); });
+}
+
+}  // namespace shockmap

@@ -1,0 +1,19 @@
+#pragma once
+// The stored points of one study, read from the database for criteria, maps and reports.
+
+#include <string>
+#include <vector>
+
+#include "validation/validity_criteria.h"
+
+namespace shockmap {
+
+// The study to read: `study` when given, else the database's only study. Throws InputError
+// when the database holds no such study, or several and none was named.
+std::string ResolveStudyName(const std::string& database_path, const std::string& study);
+
+// Points of `study` run with `scheme` that have a score row (every status but pending/running).
+std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
+                                          const std::string& study, const std::string& scheme);
+
+}  // namespace shockmap

@@ -1,0 +1,172 @@
+#include "validation/validity_criteria.h"
+
+#include <gsl/gsl_cdf.h>
+#include <gsl/gsl_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/validity.h"
+
+namespace shockmap {
+
+bool CriteriaOptions::IsValid(std::string* error) const {
+  return RequireInRange("err_max", err_max, 1e-9, 1.0, error) &&
+         RequireInRange("srf_min", srf_min, 0.0, 1.0, error) &&
+         RequireInRange("confidence", confidence, 0.5, 0.9999, error);
+}
+
+bool CriteriaOptions::Passes(const ScoredPoint& p) const {
+  return p.status == "ok" && p.err && *p.err <= err_max && (!p.srf || *p.srf >= srf_min);
+}
+
+std::optional<double> ValidityCriteria::RequiredRFtrunc(double r_k) const {
+  if (!fit) return std::nullopt;
+  if (r_k < fit->knee_r_k) return r_ftrunc_smallest_studied;
+  return std::max(r_ftrunc_smallest_studied, fit->c_envelope * std::pow(r_k, fit->p));
+}
+
+namespace {
+
+bool Scorable(const ScoredPoint& p) { return p.status != "reference_unconverged"; }
+
+template <typename T>
+void KeepMax(std::optional<T>& slot, T v) {
+  if (!slot || v > *slot) slot = v;
+}
+template <typename T>
+void KeepMin(std::optional<T>& slot, T v) {
+  if (!slot || v < *slot) slot = v;
+}
+
+RkBoundary BoundaryAt(double r_k, const std::vector<const ScoredPoint*>& at,
+                      const CriteriaOptions& options) {
+  RkBoundary b;
+  b.r_k = r_k;
+  b.n_points = static_cast<int>(at.size());
+  for (const auto* p : at) {
+    if (options.Passes(*p)) ++b.n_passing;
+    if (p->status == "ok") KeepMax(b.largest_stable_dt_ratio, p->DtRatio());
+    if (p->status == "diverged") KeepMin(b.smallest_diverged_dt_ratio, p->DtRatio());
+  }
+  // Candidate dt ratios, smallest first: the boundary is judged at the finest time step and
+  // the time step is then raised while everything above the boundary keeps passing.
+  std::vector<double> ratios;
+  for (const auto* p : at) ratios.push_back(p->DtRatio());
+  std::ranges::sort(ratios);
+  ratios.erase(std::unique(ratios.begin(), ratios.end(),
+                           [](double a, double c) { return std::abs(a - c) <= 1e-9 * c; }),
+               ratios.end());
+  if (ratios.empty()) return b;
+  auto passes_from = [&](double r_ftrunc, double ratio) {
+    bool any = false;
+    for (const auto* p : at) {
+      if (p->r_ftrunc < r_ftrunc || p->DtRatio() > ratio * (1 + 1e-9)) continue;
+      if (!options.Passes(*p)) return false;
+      any = true;
+    }
+    return any;
+  };
+  std::vector<double> truncations;
+  for (const auto* p : at) truncations.push_back(p->r_ftrunc);
+  std::ranges::sort(truncations);
+  truncations.erase(std::unique(truncations.begin(), truncations.end()), truncations.end());
+  for (double r : truncations) {
+    if (passes_from(r, ratios.front())) {
+      b.r_ftrunc_min = r;
+      break;
+    }
+  }
+  if (!b.r_ftrunc_min) return b;
+  for (double ratio : ratios) {
+    if (!passes_from(*b.r_ftrunc_min, ratio)) break;
+    b.dt_ratio_max = ratio;
+  }
+  return b;
+}
+
+std::optional<PowerLawFit> FitBoundary(const std::vector<RkBoundary>& boundary,
+                                       double smallest_truncation, double confidence) {
+  std::vector<double> x, y;
+  PowerLawFit fit;
+  for (const auto& b : boundary) {
+    if (!b.r_ftrunc_min || *b.r_ftrunc_min <= smallest_truncation) continue;
+    if (x.empty()) fit.knee_r_k = b.r_k;
+    x.push_back(std::log10(b.r_k));
+    y.push_back(std::log10(*b.r_ftrunc_min));
+  }
+  fit.n = static_cast<int>(x.size());
+  if (fit.n < 2) return std::nullopt;
+  double c0 = 0, c1 = 0, cov00 = 0, cov01 = 0, cov11 = 0, sumsq = 0;
+  gsl_fit_linear(x.data(), 1, y.data(), 1, x.size(), &c0, &c1, &cov00, &cov01, &cov11, &sumsq);
+  fit.p = c1;
+  fit.c = std::pow(10.0, c0);
+  fit.p_stderr = std::sqrt(cov11);
+  fit.log10_c_stderr = std::sqrt(cov00);
+  fit.rms_residual_log10 = std::sqrt(sumsq / fit.n);
+  // Student t with n - 2 degrees of freedom; with two points the interval is unbounded.
+  const double t = fit.n > 2 ? gsl_cdf_tdist_Pinv(0.5 + confidence / 2, fit.n - 2)
+                             : std::numeric_limits<double>::infinity();
+  fit.p_low = fit.p - t * fit.p_stderr;
+  fit.p_high = fit.p + t * fit.p_stderr;
+  double lift = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) lift = std::max(lift, y[i] - (c0 + c1 * x[i]));
+  fit.c_envelope = std::pow(10.0, c0 + lift);
+  return fit;
+}
+
+}  // namespace
+
+ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
+                                const CriteriaOptions& options) {
+  ValidityCriteria c;
+  c.options = options;
+  std::map<double, std::vector<const ScoredPoint*>> by_rk;
+  for (const auto& p : points) {
+    if (!Scorable(p)) continue;
+    by_rk[p.r_k].push_back(&p);
+    c.r_ftrunc_smallest_studied = c.r_ftrunc_smallest_studied == 0.0
+                                      ? p.r_ftrunc
+                                      : std::min(c.r_ftrunc_smallest_studied, p.r_ftrunc);
+  }
+  for (const auto& [r_k, at] : by_rk) {
+    c.boundary.push_back(BoundaryAt(r_k, at, options));
+    const RkBoundary& b = c.boundary.back();
+    if (b.dt_ratio_max) KeepMin(c.dt_ratio_max, *b.dt_ratio_max);
+    if (b.largest_stable_dt_ratio) KeepMax(c.largest_stable_dt_ratio, *b.largest_stable_dt_ratio);
+    if (b.smallest_diverged_dt_ratio) {
+      KeepMin(c.smallest_diverged_dt_ratio, *b.smallest_diverged_dt_ratio);
+    }
+  }
+  c.fit = FitBoundary(c.boundary, c.r_ftrunc_smallest_studied, options.confidence);
+  return c;
+}
+
+std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
+                                              const std::vector<ScoredPoint>& points) {
+  std::vector<Contradiction> found;
+  if (!criteria.fit || !criteria.dt_ratio_max) return found;
+  for (const auto& p : points) {
+    if (!Scorable(p)) continue;
+    const double required = *criteria.RequiredRFtrunc(p.r_k);
+    if (p.r_ftrunc < required * (1 - 1e-9) || p.DtRatio() > *criteria.dt_ratio_max * (1 + 1e-9)) {
+      continue;
+    }
+    if (criteria.options.Passes(p)) continue;
+    std::ostringstream why;
+    why << "meets the criteria (R_ftrunc " << p.r_ftrunc << " >= " << required << ", dt/dt_sharp "
+        << p.DtRatio() << " <= " << *criteria.dt_ratio_max << ") but ";
+    if (p.status != "ok") {
+      why << "ended " << p.status;
+    } else {
+      why << "Err = " << p.err.value_or(NAN) << " (max " << criteria.options.err_max
+          << "), SRf = " << (p.srf ? *p.srf : NAN) << " (min " << criteria.options.srf_min << ")";
+    }
+    found.push_back({p, why.str()});
+  }
+  return found;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,92 @@
+#pragma once
+// Validity criteria derived from scored points (paper §2.4, eqs. 10-11): for every R_k the
+// smallest truncation and the largest time step that meet the thresholds, a log-log fit of the
+// truncation boundary R_ftrunc > C R_k^p above its knee, and the stability boundary in dt.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace shockmap {
+
+// One stored point as the criteria see it.
+struct ScoredPoint {
+  std::int64_t point_id = 0;
+  double r_k = 0.0;
+  double r_ftrunc = 0.0;
+  std::string status;  // ok, diverged, failed, reference_unconverged
+  std::optional<double> err, srf;
+  double dt_s = 0.0;  // As asked: the used step is shortened to land on the window's end.
+  double dt_sharp_s = 0.0;
+  double dt_paper_s = 0.0;
+  double wall_s = 0.0;
+  int n_modes = 0;
+  std::int64_t steps = 0;
+
+  double DtRatio() const { return dt_s / dt_sharp_s; }
+};
+
+struct CriteriaOptions {
+  double err_max = 0.10;  // The paper's Fig. 3b: Err ~ 3 % is a match; 10 % is the limit used.
+  double srf_min = 0.80;  // The paper (§2.4): SRf > 0.8 is an acceptable contact force.
+  double confidence = 0.95;
+
+  bool IsValid(std::string* error) const;
+  bool Passes(const ScoredPoint& p) const;
+};
+
+// The boundary at one R_k. A truncation passes when it and every larger studied truncation
+// pass (stable and within both thresholds) at every studied time step up to dt_ratio_max.
+struct RkBoundary {
+  double r_k = 0.0;
+  int n_points = 0;
+  int n_passing = 0;
+  std::optional<double> r_ftrunc_min;
+  // Largest dt / dt_sharp such that every point at or below it, at or above r_ftrunc_min, passes.
+  std::optional<double> dt_ratio_max;
+  std::optional<double> largest_stable_dt_ratio;     // Among points that stayed stable.
+  std::optional<double> smallest_diverged_dt_ratio;  // Among points that diverged.
+};
+
+// log10 R_ftrunc_min = log10 C + p log10 R_k, least squares (GSL) over the R_k above the knee.
+struct PowerLawFit {
+  int n = 0;
+  double knee_r_k = 0.0;  // Smallest R_k where the boundary rises above the smallest truncation.
+  double p = 0.0, p_stderr = 0.0, p_low = 0.0, p_high = 0.0;  // p and its confidence interval.
+  double c = 0.0, log10_c_stderr = 0.0;
+  // C raised so that C R_k^p covers every observed boundary point: the criterion checked.
+  double c_envelope = 0.0;
+  double rms_residual_log10 = 0.0;
+};
+
+struct ValidityCriteria {
+  CriteriaOptions options;
+  std::vector<RkBoundary> boundary;  // Ascending R_k.
+  double r_ftrunc_smallest_studied = 0.0;
+  std::optional<PowerLawFit> fit;
+  // Largest dt / dt_sharp that passes at every R_k with a boundary.
+  std::optional<double> dt_ratio_max;
+  std::optional<double> largest_stable_dt_ratio;
+  std::optional<double> smallest_diverged_dt_ratio;
+
+  // The truncation the criterion requires at r_k: C_envelope r_k^p above the knee, the smallest
+  // studied truncation below it; nullopt without a fit or a boundary.
+  std::optional<double> RequiredRFtrunc(double r_k) const;
+};
+
+// Points with status reference_unconverged carry no score and are ignored.
+ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
+                                const CriteriaOptions& options);
+
+struct Contradiction {
+  ScoredPoint point;
+  std::string reason;
+};
+
+// Stored points that meet the criteria (truncation at least the required one, dt / dt_sharp at
+// most dt_ratio_max) but fail a threshold or did not run to the end.
+std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
+                                              const std::vector<ScoredPoint>& points);
+
+}  // namespace shockmap
