@@ -6,6 +6,7 @@
 
 #include "app/compare_command.h"
 #include "app/criteria_command.h"
+#include "app/map_command.h"
 #include "app/study_command.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
   shockmap::AddStudyCommand(app);
   shockmap::AddQueryCommand(app);
   shockmap::AddCriteriaCommand(app);
+  shockmap::AddMapCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

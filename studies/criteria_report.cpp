@@ -236,7 +236,10 @@ std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
   for (const auto& old : baseline.boundary) {
     for (const auto& now : current.boundary) {
       if (std::abs(now.r_k - old.r_k) > 1e-9 * old.r_k) continue;
-      if (old.r_ftrunc_min != now.r_ftrunc_min) {
+      const bool same = old.r_ftrunc_min.has_value() == now.r_ftrunc_min.has_value() &&
+                        (!old.r_ftrunc_min || std::abs(*old.r_ftrunc_min - *now.r_ftrunc_min) <=
+                                                  1e-9 * *old.r_ftrunc_min);
+      if (!same) {
         problems.push_back(
             fmt::format("criterion R_ftrunc_min at R_k = {:.4g}: baseline {}, now {}", old.r_k,
                         Num(old.r_ftrunc_min), Num(now.r_ftrunc_min)));

@@ -1,0 +1,68 @@
+#include "app/map_command.h"
+
+#include <iostream>
+#include <memory>
+
+#include "app/flag_checks.h"
+#include "db/study_database.h"
+#include "studies/scored_points.h"
+#include "studies/validity_map.h"
+
+namespace shockmap {
+namespace {
+
+struct MapFlags {
+  std::string database_path = kDefaultDatabasePath;
+  std::string study;
+  std::string metric = "err";
+  std::string y = "rftrunc";
+  double r_ftrunc = 0.0;
+  CriteriaOptions criteria;
+  std::string out;
+};
+
+void Draw(const MapFlags& f) {
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  MapOptions options;
+  options.metric = *MapMetricFromString(f.metric);
+  options.y = *MapAxisFromString(f.y);
+  if (f.r_ftrunc > 0.0) options.r_ftrunc = f.r_ftrunc;
+  const std::string out = !f.out.empty() ? f.out
+                                         : "out/maps/" + study + "_" + f.metric +
+                                               (options.y == MapAxis::kDt ? "_dt" : "") + ".png";
+  DrawValidityMap(study, points, DeriveCriteria(points, f.criteria), options, out);
+  std::cout << "map written to " << out << '\n';
+}
+
+}  // namespace
+
+void AddMapCommand(CLI::App& app) {
+  auto flags = std::make_shared<MapFlags>();
+  CLI::App* map = app.add_subcommand(
+      "map",
+      "Validity map of a study (explicit modal scheme): a metric over log R_k and log "
+      "R_ftrunc or dt/dt_sharp, with the derived boundary and the paper's rules");
+  map->add_option("STUDY", flags->study, "study name (default: the database's only study)");
+  map->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  map->add_option("--metric", flags->metric, "what the colour shows")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"err", "srf", "cost", "status"}));
+  map->add_option("--y", flags->y, "vertical axis: truncation or time step")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"rftrunc", "dt"}));
+  map->add_option("--rftrunc", flags->r_ftrunc,
+                  "truncation shown by --y dt (default: the largest studied)")
+      ->check(FiniteAbove(1.0, false));
+  map->add_option("--err-max", flags->criteria.err_max, "Err threshold")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
+  map->add_option("--srf-min", flags->criteria.srf_min, "SRf threshold")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+  map->add_option("--out", flags->out,
+                  "image file, .png or .svg (default: out/maps/STUDY_METRIC.png)");
+  map->callback([flags] { Draw(*flags); });
+}
+
+}  // namespace shockmap

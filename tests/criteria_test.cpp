@@ -1,0 +1,103 @@
+// Validity criteria end to end: derived from a study, checked against the shipped baseline, and
+// a corrupted score caught by the regression check.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "db/read_only_query.h"
+#include "db/sqlite_handle.h"
+#include "tests/run_command.h"
+#include "validation/validity_criteria.h"
+
+namespace shockmap {
+namespace {
+
+using testing::RunShockmap;
+
+class QuickStudyCriteria : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    db_ = (std::filesystem::temp_directory_path() /
+           ("shockmap_criteria_" + std::to_string(getpid()) + ".db"))
+              .string();
+    std::filesystem::remove(db_);
+    const auto run =
+        RunShockmap("study run " + Source("studies/quick.json") + " --db " + db_ + " --quiet");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  static void TearDownTestSuite() {
+    for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(db_ + suffix);
+  }
+  static std::string Source(const std::string& relative) {
+    return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
+  }
+  static inline std::string db_;
+};
+
+TEST_F(QuickStudyCriteria, AgreeWithTheShippedBaseline) {
+  const auto check = RunShockmap("criteria check --db " + db_ + " --baseline " +
+                                 Source("studies/baselines/quick.json"));
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_NE(check.output.find("agrees"), std::string::npos) << check.output;
+}
+
+TEST_F(QuickStudyCriteria, DeriveReportsTheFitAndThePaperRules) {
+  const auto derive = RunShockmap("criteria derive --db " + db_);
+  ASSERT_EQ(derive.exit_code, 0) << derive.output;
+  for (const char* text : {"interval", "paper eq. 10", "paper eq. 11", "dt_sharp"}) {
+    EXPECT_NE(derive.output.find(text), std::string::npos) << text << "\n" << derive.output;
+  }
+}
+
+TEST_F(QuickStudyCriteria, CorruptedScoreIsCaughtAndNamed) {
+  const std::string copy = db_ + ".corrupt.db";
+  std::filesystem::copy_file(db_, copy, std::filesystem::copy_options::overwrite_existing);
+  // The most truncated, finest-step point at the stiffest R_k meets every criterion.
+  const QueryResult target = RunReadOnlyQuery(
+      copy,
+      "SELECT point_id FROM results WHERE status = 'ok' ORDER BY r_k DESC, r_ftrunc DESC, "
+      "dt_requested_s / dt_sharp_s ASC LIMIT 1");
+  const auto point_id = std::get<std::int64_t>(target.rows.at(0).at(0));
+  {
+    Connection c(copy, Connection::Mode::kReadWriteCreate);
+    c.Execute("UPDATE scores SET err = 0.9 WHERE point_id = " + std::to_string(point_id));
+  }
+  const auto check = RunShockmap("criteria check --db " + copy + " --baseline " +
+                                 Source("studies/baselines/quick.json"));
+  EXPECT_EQ(check.exit_code, 1) << check.output;
+  EXPECT_NE(check.output.find("point " + std::to_string(point_id) + " "), std::string::npos)
+      << check.output;
+  EXPECT_NE(check.output.find("Err = 0.9"), std::string::npos) << check.output;
+  std::filesystem::remove(copy);
+}
+
+TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
+  // Synthetic study: a point passes exactly when R_ftrunc >= 2 R_k^0.5; truncations on a fine
+  // logarithmic grid, so the fitted exponent must come back close to 0.5.
+  std::vector<ScoredPoint> points;
+  std::int64_t id = 0;
+  for (int i = 0; i <= 12; ++i) {
+    const double r_k = std::pow(10.0, 0.5 * i);
+    for (int j = 0; j <= 40; ++j) {
+      const double r_ftrunc = std::pow(10.0, 0.1 * j);
+      const bool pass = r_ftrunc >= 2.0 * std::sqrt(r_k);
+      points.push_back({++id, r_k, r_ftrunc, "ok", pass ? 0.01 : 0.5, pass ? 0.99 : 0.5, 1e-5, 1e-4,
+                        1e-4, 1e-3, 10, 1000});
+    }
+  }
+  const ValidityCriteria c = DeriveCriteria(points, {});
+  ASSERT_TRUE(c.fit.has_value());
+  EXPECT_NEAR(c.fit->p, 0.5, 0.02);
+  EXPECT_LE(c.fit->p_low, 0.5);
+  EXPECT_GE(c.fit->p_high, 0.5);
+  EXPECT_NEAR(c.fit->c, 2.0, 0.4);
+  EXPECT_TRUE(FindContradictions(c, points).empty());
+  ASSERT_TRUE(c.dt_ratio_max.has_value());
+  EXPECT_DOUBLE_EQ(*c.dt_ratio_max, 0.1);
+}
+
+}  // namespace
+}  // namespace shockmap
