@@ -8,6 +8,7 @@
 #include "app/criteria_command.h"
 #include "app/map_command.h"
 #include "app/study_command.h"
+#include "app/view_commands.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
 
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   shockmap::AddQueryCommand(app);
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
+  shockmap::AddViewCommands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

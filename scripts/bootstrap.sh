@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages shockmap needs (only those missing), then configures and
-# builds it in ./build. Sourced by run-main and run-tests; safe to run again.
+# builds it in ./build. Sourced by run-main and run-tests, which may list extra packages in
+# SHOCKMAP_EXTRA_PACKAGES first; safe to run again.
 set -euo pipefail
 
 SHOCKMAP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -17,7 +18,7 @@ SHOCKMAP_PACKAGES=(
 
 install_missing_packages() {
   local missing=()
-  for p in "${SHOCKMAP_PACKAGES[@]}"; do
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   if [ ${#missing[@]} -eq 0 ]; then
@@ -35,5 +36,5 @@ build_shockmap() {
   cmake --build "$SHOCKMAP_BUILD" -j "$(nproc)"
 }
 
-install_missing_packages
+install_missing_packages "${SHOCKMAP_PACKAGES[@]}" ${SHOCKMAP_EXTRA_PACKAGES[@]+"${SHOCKMAP_EXTRA_PACKAGES[@]}"}
 build_shockmap

@@ -1,0 +1,116 @@
+#include "app/view_commands.h"
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/flag_checks.h"
+#include "db/study_database.h"
+#include "studies/advice.h"
+#include "studies/cost_front.h"
+#include "studies/fig4_plot.h"
+#include "studies/html_report.h"
+#include "studies/scored_points.h"
+
+namespace shockmap {
+namespace {
+
+struct ViewFlags {
+  std::string database_path = kDefaultDatabasePath;
+  std::string study;
+  CriteriaOptions thresholds;
+  std::string out;
+  double r_k = 0.0;
+};
+
+void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
+  cmd->add_option("STUDY", f.study, "study name (default: the database's only study)");
+  cmd->add_option("--db", f.database_path, "study database")->capture_default_str();
+  if (thresholds) {
+    cmd->add_option("--err-max", f.thresholds.err_max, "largest acceptable Err")
+        ->capture_default_str()
+        ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
+    cmd->add_option("--srf-min", f.thresholds.srf_min, "smallest acceptable SRf")
+        ->capture_default_str()
+        ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+  }
+}
+
+StudySpec StoredSpec(const std::string& database_path, const std::string& study) {
+  StudyDatabase db(database_path);
+  const auto json = db.StoredSpec(study);
+  return ParseStudySpec(nlohmann::json::parse(*json), database_path);
+}
+
+}  // namespace
+
+void AddViewCommands(CLI::App& app) {
+  auto flags = std::make_shared<ViewFlags>();
+
+  CLI::App* plot = app.add_subcommand("plot", "Plots of a stored study");
+  plot->require_subcommand(1);
+  CLI::App* fig4 = plot->add_subcommand(
+      "fig4", "Err and SRf against R_k, one curve per R_ftrunc and the implicit scheme");
+  AddCommon(fig4, *flags, true);
+  fig4->add_option("--out", flags->out, "image, .png or .svg (default: out/STUDY_fig4.png)");
+  fig4->callback([flags] {
+    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string out = flags->out.empty() ? "out/" + study + "_fig4.png" : flags->out;
+    DrawFig4(study, LoadScoredPoints(flags->database_path, study, "explicit-modal"),
+             LoadScoredPoints(flags->database_path, study, "implicit-full"), flags->thresholds,
+             out);
+    std::cout << "Fig. 4 written to " << out << '\n';
+  });
+
+  CLI::App* cost = app.add_subcommand(
+      "cost",
+      "Err against wall time for every point, Pareto front, implicit/explicit time "
+      "ratio at equal accuracy");
+  AddCommon(cost, *flags, false);
+  cost->add_option("--rk", flags->r_k, "one R_k (the nearest studied)")->check(Positive());
+  cost->add_option("--out", flags->out,
+                   "plot of the R_k given by --rk (default: out/STUDY_cost_rkX.png)");
+  cost->callback([flags] {
+    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const auto tables =
+        BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
+                        LoadScoredPoints(flags->database_path, study, "implicit-full"),
+                        flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt);
+    std::cout << CostSummary(tables);
+    if (flags->r_k > 0 && !tables.empty()) {
+      const std::string out = flags->out.empty() ? "out/" + study + "_cost_rk" +
+                                                       std::to_string(tables.front().r_k) + ".png"
+                                                 : flags->out;
+      DrawCost(study, tables.front(), out);
+      std::cout << "plot written to " << out << '\n';
+    }
+  });
+
+  CLI::App* advise = app.add_subcommand(
+      "advise",
+      "Recommended R_ftrunc and dt for a new R_k from the derived criteria, with the "
+      "predicted cost");
+  AddCommon(advise, *flags, true);
+  advise->add_option("--rk", flags->r_k, "stiffness ratio to advise for")
+      ->required()
+      ->check(Positive());
+  advise->callback([flags] {
+    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
+    const Advice a = Advise(StoredSpec(flags->database_path, study),
+                            DeriveCriteria(points, flags->thresholds), points, flags->r_k);
+    std::cout << AdviceSummary(a);
+  });
+
+  CLI::App* report = app.add_subcommand(
+      "report", "One self-contained HTML page: maps, Fig. 4, criteria, cost front, provenance");
+  AddCommon(report, *flags, true);
+  report->add_option("--out", flags->out, "directory for report.html and its figures")->required();
+  report->callback([flags] {
+    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const auto page = WriteHtmlReport(flags->database_path, study, flags->thresholds, flags->out);
+    std::cout << "report written to " << page.string() << '\n';
+  });
+}
+
+}  // namespace shockmap

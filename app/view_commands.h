@@ -1,0 +1,10 @@
+#pragma once
+// Views of a stored study: `shockmap plot fig4`, `cost`, `advise` and `report`.
+
+#include <CLI/CLI.hpp>
+
+namespace shockmap {
+
+void AddViewCommands(CLI::App& app);
+
+}  // namespace shockmap

@@ -1,0 +1,38 @@
+#pragma once
+// What accuracy costs in time: for each R_k, Err and SRf against the wall time of every
+// (R_ftrunc, dt, scheme) point, the Pareto front (no other point both faster and more accurate)
+// and the implicit/explicit time ratio at equal accuracy.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "validation/validity_criteria.h"
+
+namespace shockmap {
+
+struct CostRow {
+  ScoredPoint point;
+  std::string scheme;
+  bool pareto = false;
+};
+
+struct CostTable {
+  double r_k = 0.0;
+  std::vector<CostRow> rows;  // Scored points, fastest first.
+  // Median over implicit points of wall(implicit) / wall(cheapest explicit point at least as
+  // accurate); nullopt when no implicit point has an explicit match.
+  std::optional<double> implicit_over_explicit;
+  int ratio_pairs = 0;
+};
+
+// One table per R_k (only `r_k` when given: the nearest studied one).
+std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_points,
+                                       const std::vector<ScoredPoint>& implicit_points,
+                                       std::optional<double> r_k);
+std::string CostSummary(const std::vector<CostTable>& tables);
+// Err against wall time of one table, the Pareto front joined. Throws InputError when empty.
+void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file);
+
+}  // namespace shockmap
