@@ -1,5 +1,6 @@
 #include "app/criteria_command.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -33,7 +34,10 @@ void Derive(const CriteriaFlags& f) {
   const ValidityCriteria criteria = DeriveCriteria(points, f.options);
   std::cout << CriteriaSummary(study, criteria, points);
   if (!f.out.empty()) {
-    std::ofstream out(f.out);
+    const std::filesystem::path file(f.out);
+    std::error_code ec;
+    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+    std::ofstream out(file);
     out << CriteriaToJson(study, criteria).dump(2) << '\n';
     if (!out) throw InputError("cannot write " + f.out);
     std::cout << "  written     " << f.out << '\n';

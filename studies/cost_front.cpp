@@ -108,6 +108,8 @@ set output '{out}'
 set title "{study}: what accuracy costs at R_k = {rk:.4g}" noenhanced
 set logscale x
 set logscale y
+set format x '10^{{%L}}'
+set format y '10^{{%L}}'
 set xlabel 'wall time of the numerical run (s)'
 set ylabel 'Err (paper eq. 8)'
 set grid
