@@ -76,12 +76,7 @@ void AddCriteriaCommand(CLI::App& app) {
       "log-log fit of the boundary, set against the paper's rules");
   derive->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   derive->add_option("--db", flags->database_path, "study database")->capture_default_str();
-  derive->add_option("--err-max", flags->options.err_max, "largest acceptable Err")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
-  derive->add_option("--srf-min", flags->options.srf_min, "smallest acceptable SRf")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+  AddThresholdFlags(derive, flags->options);
   derive->add_option("--out", flags->out, "write the criteria as JSON (a baseline for check)");
   derive->callback([flags] { Derive(*flags); });
 

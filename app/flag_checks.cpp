@@ -3,7 +3,18 @@
 #include <cmath>
 #include <sstream>
 
+#include "validation/validity_criteria.h"
+
 namespace shockmap {
+
+void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds) {
+  command->add_option("--err-max", thresholds.err_max, "largest acceptable Err")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
+  command->add_option("--srf-min", thresholds.srf_min, "smallest acceptable SRf")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+}
 
 CLI::Validator FiniteAbove(double lo, bool strict) {
   std::ostringstream allowed;

@@ -5,6 +5,11 @@
 
 namespace shockmap {
 
+struct CriteriaOptions;
+
+// --err-max and --srf-min, the thresholds validity is judged with.
+void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds);
+
 // A finite number > lo (strict) or >= lo.
 CLI::Validator FiniteAbove(double lo, bool strict);
 inline CLI::Validator Positive() { return FiniteAbove(0.0, true); }

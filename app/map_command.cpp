@@ -54,12 +54,7 @@ void AddMapCommand(CLI::App& app) {
   map->add_option("--rftrunc", flags->r_ftrunc,
                   "truncation shown by --y dt (default: the largest studied)")
       ->check(FiniteAbove(1.0, false));
-  map->add_option("--err-max", flags->criteria.err_max, "Err threshold")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
-  map->add_option("--srf-min", flags->criteria.srf_min, "SRf threshold")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+  AddThresholdFlags(map, flags->criteria);
   map->add_option("--out", flags->out,
                   "image file, .png or .svg (default: out/maps/STUDY_METRIC.png)");
   map->callback([flags] { Draw(*flags); });

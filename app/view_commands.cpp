@@ -26,14 +26,7 @@ struct ViewFlags {
 void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
   cmd->add_option("STUDY", f.study, "study name (default: the database's only study)");
   cmd->add_option("--db", f.database_path, "study database")->capture_default_str();
-  if (thresholds) {
-    cmd->add_option("--err-max", f.thresholds.err_max, "largest acceptable Err")
-        ->capture_default_str()
-        ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
-    cmd->add_option("--srf-min", f.thresholds.srf_min, "smallest acceptable SRf")
-        ->capture_default_str()
-        ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
-  }
+  if (thresholds) AddThresholdFlags(cmd, f.thresholds);
 }
 
 StudySpec StoredSpec(const std::string& database_path, const std::string& study) {

@@ -8,7 +8,8 @@
 
 namespace shockmap {
 
-QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql) {
+QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
+                             const std::vector<std::string>& text_parameters) {
   if (!std::filesystem::is_regular_file(database_path)) {
     throw DbError("no database at " + database_path);
   }
@@ -29,6 +30,9 @@ QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string
   }
   if (!statement.IsReadOnly()) {
     throw DbError("refused: the statement would modify the database; shockmap query is read-only");
+  }
+  for (std::size_t i = 0; i < text_parameters.size(); ++i) {
+    statement.Bind(static_cast<int>(i + 1), text_parameters[i]);
   }
   QueryResult result;
   for (int i = 0; i < statement.ColumnCount(); ++i)

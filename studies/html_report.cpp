@@ -79,12 +79,6 @@ std::string Table(const QueryResult& r) {
   return "<pre>" + Escaped(text.str()) + "</pre>\n";
 }
 
-std::string Quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
 }  // namespace
 
 std::filesystem::path WriteHtmlReport(const std::string& database_path, const std::string& study,
@@ -128,13 +122,15 @@ std::filesystem::path WriteHtmlReport(const std::string& database_path, const st
       database_path,
       "SELECT ru.run_id, ru.code_version, ru.compiler, ru.build_type, ru.host, ru.jobs, "
       "ru.started_utc, ru.ended_utc, ru.points_done FROM runs ru JOIN studies st USING "
-      "(study_id) WHERE st.name = " +
-          Quote(study) + " ORDER BY ru.run_id");
+      "(study_id) WHERE st.name = ?1 ORDER BY ru.run_id",
+      {study});
   const QueryResult spec =
-      RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = " + Quote(study));
-  const QueryResult outcomes = RunReadOnlyQuery(
-      database_path, "SELECT scheme, status, count(*) AS points FROM results WHERE study = " +
-                         Quote(study) + " GROUP BY scheme, status ORDER BY scheme, status");
+      RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = ?1", {study});
+  const QueryResult outcomes =
+      RunReadOnlyQuery(database_path,
+                       "SELECT scheme, status, count(*) AS points FROM results WHERE study = ?1 "
+                       "GROUP BY scheme, status ORDER BY scheme, status",
+                       {study});
   const std::string spec_json =
       spec.rows.empty() ? "" : std::get<std::string>(spec.rows.front().front());
 

@@ -19,12 +19,6 @@ std::optional<double> OptionalReal(const QueryCell& c) {
   return Real(c);
 }
 
-std::string Quote(const std::string& s) {
-  std::string q = "'";
-  for (char ch : s) q += ch == '\'' ? std::string("''") : std::string(1, ch);
-  return q + "'";
-}
-
 }  // namespace
 
 std::string ResolveStudyName(const std::string& database_path, const std::string& study) {
@@ -51,9 +45,9 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
   const QueryResult r = RunReadOnlyQuery(
       database_path,
       "SELECT point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s, "
-      "wall_s, n_modes, steps FROM results WHERE study = " +
-          Quote(study) + " AND scheme = " + Quote(scheme) +
-          " AND dt_requested_s IS NOT NULL ORDER BY point_id");
+      "wall_s, n_modes, steps FROM results WHERE study = ?1 AND scheme = ?2 "
+      "AND dt_requested_s IS NOT NULL ORDER BY point_id",
+      {study, scheme});
   std::vector<ScoredPoint> points;
   for (const auto& row : r.rows) {
     ScoredPoint p;
