@@ -124,16 +124,16 @@ StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) 
 
   // Points of the study that this spec still lists (an axis value removed from the file keeps
   // its stored points but computes nothing new for them).
-  std::vector<PointRow> todo;
+  std::vector<PointRow> to_compute;
   for (auto& row : db.PointsToCompute(study_id, options.retry_failed)) {
-    if (by_key.contains(row.parameters.point_key)) todo.push_back(std::move(row));
+    if (by_key.contains(row.parameters.point_key)) to_compute.push_back(std::move(row));
   }
   const std::int64_t run_id = db.BeginRun(study_id, provenance);
 
   // Phase 1: references, each once per database.
   std::map<std::string, StoredReference> references;
   std::vector<ReferenceTask> missing;
-  for (const auto& row : todo) {
+  for (const auto& row : to_compute) {
     const std::string& key = row.parameters.reference_key;
     if (references.contains(key)) continue;
     if (auto stored = db.FindReference(key)) {
@@ -180,13 +180,13 @@ StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) 
   // Phase 2: points; each finished point is committed on its own.
   const CpuTimer point_timer;
   std::vector<std::int64_t> ids;
-  for (const auto& row : todo) ids.push_back(row.point_id);
+  for (const auto& row : to_compute) ids.push_back(row.point_id);
   db.MarkRunning(ids, run_id);
-  ProgressReporter progress(static_cast<long>(todo.size()), stderr, options.progress);
+  ProgressReporter progress(static_cast<long>(to_compute.size()), stderr, options.progress);
   RunOnWorkers(
-      todo.size(), summary.jobs,
+      to_compute.size(), summary.jobs,
       [&](std::size_t i) {
-        const PointRow& row = todo[i];
+        const PointRow& row = to_compute[i];
         const StudyPoint& point = *by_key.at(row.parameters.point_key);
         const StoredReference& ref = references.at(row.parameters.reference_key);
         PointOutcome out{row.point_id, "failed", "", std::nullopt};
