@@ -3,6 +3,22 @@
 #include <cstring>
 
 namespace shockmap {
+namespace {
+
+// How long a writer waits for another writer's lock before giving up.
+constexpr int kBusyTimeout_ms = 10000;
+
+// SQLite's message, with what "busy" means for the user.
+std::string Describe(sqlite3* db) {
+  std::string message = sqlite3_errmsg(db);
+  if ((sqlite3_extended_errcode(db) & 0xff) == SQLITE_BUSY) {
+    message += " by another writer (waited " + std::to_string(kBusyTimeout_ms / 1000) +
+               " s); nothing was written, run again once it is done";
+  }
+  return message;
+}
+
+}  // namespace
 
 Connection::Connection(const std::string& path, Mode mode) : path_(path) {
   const int flags =
@@ -15,8 +31,7 @@ Connection::Connection(const std::string& path, Mode mode) : path_(path) {
     throw DbError("cannot open database " + path + ": " + msg);
   }
   sqlite3_extended_result_codes(db_, 1);
-  // A second writer waits up to 10 s for the lock, then fails with "database is locked".
-  sqlite3_busy_timeout(db_, 10000);
+  sqlite3_busy_timeout(db_, kBusyTimeout_ms);
   if (mode == Mode::kReadOnly) Execute("PRAGMA query_only = 1");
 }
 
@@ -26,7 +41,9 @@ void Connection::Execute(std::string_view sql) {
   char* err = nullptr;
   const std::string text(sql);
   if (sqlite3_exec(db_, text.c_str(), nullptr, nullptr, &err) != SQLITE_OK) {
-    const std::string msg = err != nullptr ? err : sqlite3_errmsg(db_);
+    const std::string msg = err != nullptr && (sqlite3_extended_errcode(db_) & 0xff) != SQLITE_BUSY
+                                ? std::string(err)
+                                : Describe(db_);
     sqlite3_free(err);
     throw DbError(path_ + ": " + msg + " (in: " + text.substr(0, 200) + ")");
   }
@@ -37,8 +54,7 @@ Statement Connection::Prepare(std::string_view sql) {
   const char* tail = nullptr;
   const int rc = sqlite3_prepare_v2(db_, sql.data(), static_cast<int>(sql.size()), &stmt, &tail);
   if (rc != SQLITE_OK) {
-    throw DbError(std::string(sqlite3_errmsg(db_)) + " (in: " + std::string(sql.substr(0, 200)) +
-                  ")");
+    throw DbError(path_ + ": " + Describe(db_) + " (in: " + std::string(sql.substr(0, 200)) + ")");
   }
   if (stmt == nullptr) throw DbError("empty SQL statement");
   return Statement(db_, stmt, std::string(sql));
@@ -89,7 +105,8 @@ bool Statement::Step() {
   const int rc = sqlite3_step(stmt_);
   if (rc == SQLITE_ROW) return true;
   if (rc == SQLITE_DONE) return false;
-  throw DbError(std::string(sqlite3_errmsg(db_)) + " (in: " + sql_.substr(0, 200) + ")");
+  throw DbError(std::string(sqlite3_db_filename(db_, "main")) + ": " + Describe(db_) +
+                " (in: " + sql_.substr(0, 200) + ")");
 }
 
 void Statement::Run() {

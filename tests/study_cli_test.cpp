@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "db/read_only_query.h"
+#include "db/sqlite_handle.h"
 #include "tests/run_command.h"
 
 namespace shockmap {
@@ -180,6 +181,71 @@ TEST_F(StudyProcess, QueryAnswersInCsvAndJsonAndRefusesWrites) {
   const auto missing = RunShockmap("query --db " + Path("none.db") + " 'SELECT 1'");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.output.find("none.db"), std::string::npos);
+}
+
+TEST_F(StudyProcess, ForeignCorruptAndNewerDatabasesAreRefusedUntouched) {
+  const std::string spec = Path("g.json");
+  WriteText(
+      spec,
+      R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": 100, "rftrunc": 10}]})");
+  const std::string foreign = Path("foreign.db");
+  {
+    Connection c(foreign, Connection::Mode::kReadWriteCreate);
+    c.Execute("CREATE TABLE accounts (id INTEGER); INSERT INTO accounts VALUES (1)");
+  }
+  const std::string corrupt = Path("corrupt.db");
+  std::string noise(8192, '\0');
+  for (std::size_t i = 0; i < noise.size(); ++i) noise[i] = static_cast<char>((i * 7919) % 251);
+  WriteText(corrupt, noise);
+  const std::string newer = Path("newer.db");
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + newer + " --quiet").exit_code, 0);
+  {
+    Connection c(newer, Connection::Mode::kReadWriteCreate);
+    c.Execute("PRAGMA user_version = 99");
+  }
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {foreign, "not a shockmap database"}, {corrupt, "corrupt.db"}, {newer, "newer shockmap"}};
+  for (const auto& [db, expected] : cases) {
+    const std::string bytes = ReadBytes(db);
+    for (const std::string command :
+         {"study run " + spec + " --quiet", std::string("study status"),
+          std::string("query 'SELECT 1'"), std::string("criteria derive")}) {
+      const auto o = RunShockmap(command + " --db " + db);
+      EXPECT_EQ(o.exit_code, 2) << command << " on " << db << ": " << o.output;
+      EXPECT_NE(o.output.find(expected), std::string::npos) << command << ": " << o.output;
+    }
+    EXPECT_TRUE(ReadBytes(db) == bytes) << db;
+  }
+}
+
+TEST_F(StudyProcess, LockedDatabaseWaitsThenFailsClearlyAndLosesNothing) {
+  const std::string spec = Path("g.json");
+  WriteText(
+      spec,
+      R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": [100, 1000], "rftrunc": 10}]})");
+  const std::string db = Path("locked.db");
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+  WriteText(
+      spec,
+      R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": [100, 1000], "rftrunc": [10, 30]}]})");
+  const auto before = Outcomes(db);
+  {
+    Connection holder(db, Connection::Mode::kReadWriteCreate);
+    holder.Execute("BEGIN EXCLUSIVE");
+    const auto start = std::chrono::steady_clock::now();
+    const auto o = RunShockmap("study run " + spec + " --db " + db + " --quiet");
+    const double waited =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_NE(o.output.find("locked by another writer"), std::string::npos) << o.output;
+    EXPECT_GE(waited, 9.0);
+    EXPECT_LT(waited, 30.0);
+    holder.Execute("ROLLBACK");
+  }
+  EXPECT_EQ(Outcomes(db), before);
+  const auto resumed = RunShockmap("study run " + spec + " --db " + db + " --quiet");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("2 computed now"), std::string::npos) << resumed.output;
 }
 
 }  // namespace
