@@ -18,7 +18,8 @@ FullFeContactSystem::FullFeContactSystem(Eigen::SparseMatrix<double> mass,
     : mass_(std::move(mass)),
       stiffness_(std::move(stiffness)),
       mass_damping_per_s_(mass_damping_per_s),
-      contacts_(std::move(contacts)) {}
+      contacts_(std::move(contacts)),
+      forces_(contacts_.size(), 0.0) {}
 
 FullFeContactSystem::~FullFeContactSystem() = default;
 
@@ -42,7 +43,7 @@ const FullFeContactSystem::Factorization& FullFeContactSystem::FactorizationFor(
   return *factorization_;
 }
 
-bool FullFeContactSystem::SolveAcceleration(double beta_dt2, double gamma_dt,
+bool FullFeContactSystem::SolveAcceleration(double /*t_s*/, double beta_dt2, double gamma_dt,
                                             const Eigen::VectorXd& x_pred,
                                             const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) {
   const Factorization& f = FactorizationFor(beta_dt2, gamma_dt);
@@ -92,7 +93,11 @@ bool FullFeContactSystem::SolveAcceleration(double beta_dt2, double gamma_dt,
     a = a_free;
     for (Eigen::Index i = 0; i < m; ++i) a.noalias() += forces[i] * f.a_inv_rows.col(active[i]);
     std::vector<Eigen::Index> next = active_at(a);
-    if (next == active) return true;
+    if (next == active) {
+      std::ranges::fill(forces_, 0.0);
+      for (Eigen::Index i = 0; i < m; ++i) forces_[active[i]] = forces[i];
+      return true;
+    }
     active = std::move(next);
   }
   return false;

@@ -19,12 +19,14 @@ class FullFeContactSystem final : public SecondOrderSystem {
   ~FullFeContactSystem() override;
 
   int Size() const override { return static_cast<int>(mass_.rows()); }
-  bool SolveAcceleration(double beta_dt2, double gamma_dt, const Eigen::VectorXd& x_pred,
-                         const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) override;
+  bool SolveAcceleration(double t_s, double beta_dt2, double gamma_dt,
+                         const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
+                         Eigen::VectorXd& a) override;
+  std::span<const double> LastContactForces() const override { return forces_; }
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
   double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
-  const std::vector<PointContact>& Contacts() const override { return contacts_; }
+  const std::vector<PointContact>& Contacts() const { return contacts_; }
 
   // Iterations of the active-set loop allowed per solve; the law is piecewise linear with
   // one kink per contact, so a consistent set is normally found in two or three.
@@ -38,6 +40,7 @@ class FullFeContactSystem final : public SecondOrderSystem {
   Eigen::SparseMatrix<double> stiffness_;
   double mass_damping_per_s_;
   std::vector<PointContact> contacts_;
+  std::vector<double> forces_;
   std::unique_ptr<Factorization> factorization_;
 };
 

@@ -9,19 +9,21 @@ ModalContactSystem::ModalContactSystem(Eigen::VectorXd omega_rad_s,
                                        std::vector<PointContact> contacts)
     : omega_squared_(omega_rad_s.array().square().matrix()),
       modal_damping_(std::move(modal_damping)),
-      contacts_(std::move(contacts)) {
+      contacts_(std::move(contacts)),
+      forces_(contacts_.size(), 0.0) {
   assert(!modal_damping_ || modal_damping_->size() == omega_squared_.size());
 }
 
-bool ModalContactSystem::SolveAcceleration(double beta_dt2, double gamma_dt,
+bool ModalContactSystem::SolveAcceleration(double /*t_s*/, double beta_dt2, double gamma_dt,
                                            const Eigen::VectorXd& x_pred,
                                            const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) {
   assert(beta_dt2 == 0.0 && "the modal system is integrated explicitly");
   (void)beta_dt2;
   a.noalias() = -omega_squared_.cwiseProduct(x_pred);
-  for (const auto& c : contacts_) {
-    const double f = PenaltyForce(c, c.row.dot(x_pred), c.row.dot(v_pred));
-    if (f != 0.0) a.noalias() += f * c.row;
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const PointContact& c = contacts_[i];
+    forces_[i] = PenaltyForce(c, c.row.dot(x_pred), c.row.dot(v_pred));
+    if (forces_[i] != 0.0) a.noalias() += forces_[i] * c.row;
   }
   if (modal_damping_) {
     const auto& d = *modal_damping_;

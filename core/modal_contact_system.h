@@ -21,12 +21,14 @@ class ModalContactSystem final : public SecondOrderSystem {
                      std::vector<PointContact> contacts);
 
   int Size() const override { return static_cast<int>(omega_squared_.size()); }
-  bool SolveAcceleration(double beta_dt2, double gamma_dt, const Eigen::VectorXd& x_pred,
-                         const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) override;
+  bool SolveAcceleration(double t_s, double beta_dt2, double gamma_dt,
+                         const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
+                         Eigen::VectorXd& a) override;
+  std::span<const double> LastContactForces() const override { return forces_; }
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
   double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
-  const std::vector<PointContact>& Contacts() const override { return contacts_; }
+  const std::vector<PointContact>& Contacts() const { return contacts_; }
 
   const Eigen::VectorXd& OmegaSquared() const { return omega_squared_; }
 
@@ -34,6 +36,7 @@ class ModalContactSystem final : public SecondOrderSystem {
   Eigen::VectorXd omega_squared_;
   std::optional<Eigen::VectorXd> modal_damping_;
   std::vector<PointContact> contacts_;
+  std::vector<double> forces_;
 };
 
 }  // namespace shockmap

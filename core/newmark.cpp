@@ -5,11 +5,12 @@ namespace shockmap {
 NewmarkIntegrator::NewmarkIntegrator(NewmarkParameters parameters, SecondOrderSystem& system)
     : p_(parameters), system_(system) {}
 
-bool NewmarkIntegrator::Init(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0) {
+bool NewmarkIntegrator::Init(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double t0_s) {
   x_ = x0;
   v_ = v0;
+  t_ = t0_s;
   a_.resize(x0.size());
-  return system_.SolveAcceleration(0.0, 0.0, x_, v_, a_);
+  return system_.SolveAcceleration(t_, 0.0, 0.0, x_, v_, a_);
 }
 
 bool NewmarkIntegrator::Step(double dt) {
@@ -17,7 +18,8 @@ bool NewmarkIntegrator::Step(double dt) {
   // x and v become the predictors in place; a still holds a_n.
   x_.noalias() += dt * v_ + ((0.5 - p_.beta) * dt2) * a_;
   v_.noalias() += ((1.0 - p_.gamma) * dt) * a_;
-  if (!system_.SolveAcceleration(p_.beta * dt2, p_.gamma * dt, x_, v_, a_)) return false;
+  t_ += dt;
+  if (!system_.SolveAcceleration(t_, p_.beta * dt2, p_.gamma * dt, x_, v_, a_)) return false;
   if (p_.beta != 0.0) x_.noalias() += (p_.beta * dt2) * a_;
   v_.noalias() += (p_.gamma * dt) * a_;
   return true;

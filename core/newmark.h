@@ -27,19 +27,22 @@ class NewmarkIntegrator {
  public:
   NewmarkIntegrator(NewmarkParameters parameters, SecondOrderSystem& system);
 
-  // Sets the state and computes the consistent initial acceleration. False if that fails.
-  bool Init(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0);
+  // Sets the state at time t0_s and computes the consistent initial acceleration. False if
+  // that fails.
+  bool Init(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double t0_s = 0.0);
   // Advances one step. False when the system's solve fails (the state is then unspecified).
   bool Step(double dt);
 
   const Eigen::VectorXd& X() const { return x_; }
   const Eigen::VectorXd& V() const { return v_; }
   const Eigen::VectorXd& A() const { return a_; }
+  double T() const { return t_; }
 
  private:
   NewmarkParameters p_;
   SecondOrderSystem& system_;
   Eigen::VectorXd x_, v_, a_;
+  double t_ = 0.0;
 };
 
 }  // namespace shockmap

@@ -2,6 +2,7 @@
 // What a Newmark integrator needs from a structure: M a + C v + K x = f_contact(x, v).
 
 #include <Eigen/Dense>
+#include <span>
 #include <vector>
 
 #include "core/point_contact.h"
@@ -22,13 +23,18 @@ class SecondOrderSystem {
 
   virtual int Size() const = 0;
 
-  // Newmark's equation for the new acceleration a (as MFEM's ImplicitSolve):
+  // Newmark's equation for the new acceleration a at time t_s (as MFEM's ImplicitSolve):
   //   M a + C (v_pred + gamma_dt a) + K (x_pred + beta_dt2 a)
-  //     = f_contact(x_pred + beta_dt2 a, v_pred + gamma_dt a).
+  //     = f(t) + f_contact(x_pred + beta_dt2 a, v_pred + gamma_dt a).
   // beta_dt2 = gamma_dt = 0 gives the acceleration at a known state.
   // Returns false when the contact iteration does not converge (a is then unspecified).
-  virtual bool SolveAcceleration(double beta_dt2, double gamma_dt, const Eigen::VectorXd& x_pred,
-                                 const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) = 0;
+  virtual bool SolveAcceleration(double t_s, double beta_dt2, double gamma_dt,
+                                 const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
+                                 Eigen::VectorXd& a) = 0;
+
+  // The force of each contact (N, >= 0) in the solution of the last SolveAcceleration: the
+  // forces the integrator applied, recorded without computing them again.
+  virtual std::span<const double> LastContactForces() const = 0;
 
   virtual Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
 
@@ -38,8 +44,6 @@ class SecondOrderSystem {
 
   // Power dissipated by structural and contact damping at a state (W), >= 0.
   virtual double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
-
-  virtual const std::vector<PointContact>& Contacts() const = 0;
 };
 
 // Sum over contacts of the penalty energy at state x.

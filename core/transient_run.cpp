@@ -41,7 +41,7 @@ struct Recorder {
     };
     init(result.displacement_m, options.observed_rows.size());
     init(result.velocity_m_s, options.observed_rows.size());
-    init(result.contact_force_n, system.Contacts().size());
+    init(result.contact_force_n, system.LastContactForces().size());
     if (options.record_energy) {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
                       &result.energy.dissipated_j}) {
@@ -55,10 +55,9 @@ struct Recorder {
       result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
       result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
     }
-    const auto& contacts = system.Contacts();
-    for (std::size_t c = 0; c < contacts.size(); ++c) {
-      result.contact_force_n[c].values.push_back(
-          PenaltyForce(contacts[c], contacts[c].row.dot(x), contacts[c].row.dot(v)));
+    const auto forces = system.LastContactForces();
+    for (std::size_t c = 0; c < forces.size(); ++c) {
+      result.contact_force_n[c].values.push_back(forces[c]);
     }
     if (options.record_energy) {
       const Energies e = system.EnergyAt(x, v);
