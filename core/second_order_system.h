@@ -42,6 +42,11 @@ class SecondOrderSystem {
   // identically zero and callers skip it.
   virtual bool Dissipates() const = 0;
 
+  // True when time-dependent loads act (base motion, forces); their power is then
+  // ExternalPower, and the energy balance counts their work.
+  virtual bool HasExternalLoads() const { return false; }
+  virtual double ExternalPower(double /*t_s*/, const Eigen::VectorXd& /*v*/) const { return 0.0; }
+
   // Power dissipated by structural and contact damping at a state (W), >= 0.
   virtual double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
 };

@@ -44,13 +44,14 @@ struct Recorder {
     init(result.contact_force_n, system.LastContactForces().size());
     if (options.record_energy) {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
-                      &result.energy.dissipated_j}) {
+                      &result.energy.dissipated_j, &result.energy.external_work_j}) {
         *s = UniformSignal{0.0, dt_record, {}};
       }
     }
   }
 
-  void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j) {
+  void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j,
+              double work_j) {
     for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
       result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
       result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
@@ -65,6 +66,7 @@ struct Recorder {
       result.energy.strain_j.values.push_back(e.strain_j);
       result.energy.contact_j.values.push_back(e.contact_j);
       result.energy.dissipated_j.values.push_back(dissipated_j);
+      result.energy.external_work_j.values.push_back(work_j);
     }
   }
 };
@@ -100,8 +102,13 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   const bool dissipates = system.Dissipates();
   double dissipated = 0.0;
   double power_before = dissipates ? system.DissipatedPower(x0, v0) : 0.0;
+  // Work of the external loads, and the total of its magnitude: the scale energy is judged
+  // against when loads feed it (a base shock starts from rest).
+  const bool loaded = system.HasExternalLoads();
+  double work = 0.0, work_magnitude = 0.0;
+  double load_power_before = loaded ? system.ExternalPower(0.0, v0) : 0.0;
   summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
-  recorder.Record(integrator.X(), integrator.V(), dissipated);
+  recorder.Record(integrator.X(), integrator.V(), 0.0, 0.0);
 
   for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
     if (!integrator.Step(dt)) {
@@ -116,7 +123,15 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
       dissipated += 0.5 * dt * (power_before + power_now);
       power_before = power_now;
     }
-    if (n % options.record_stride == 0) recorder.Record(integrator.X(), integrator.V(), dissipated);
+    if (loaded) {
+      const double power_now = system.ExternalPower(integrator.T(), integrator.V());
+      work += 0.5 * dt * (load_power_before + power_now);
+      work_magnitude += 0.5 * dt * (std::abs(load_power_before) + std::abs(power_now));
+      load_power_before = power_now;
+    }
+    if (n % options.record_stride == 0) {
+      recorder.Record(integrator.X(), integrator.V(), dissipated, work);
+    }
     if (n % options.divergence_check_stride == 0 || n == summary.steps_requested) {
       const double total = system.EnergyAt(integrator.X(), integrator.V()).Total() + dissipated;
       if (!std::isfinite(total) || !integrator.X().allFinite()) {
@@ -124,8 +139,9 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
         msg << "non-finite state at step " << n << " (t = " << n * dt << " s)";
         return finish(RunStatus::kDiverged, msg.str());
       }
-      if (summary.initial_energy_j > 0.0) {
-        const double ratio = total / summary.initial_energy_j;
+      const double scale = summary.initial_energy_j + work_magnitude;
+      if (scale > 0.0) {
+        const double ratio = total / scale;
         summary.max_energy_ratio = std::max(summary.max_energy_ratio, ratio);
         if (ratio > options.energy_growth_limit) {
           std::ostringstream msg;

@@ -1,0 +1,121 @@
+#pragma once
+// What the physics of a scene is: beams, contact zones, the effects declared, the solver and the
+// outputs requested (DESIGN §5-6). Plain description structs; parsing lives outside core
+// (studies/scene_file), building lives in core/scene_model.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/end_condition.h"
+#include "core/stability_bounds.h"
+
+namespace shockmap {
+
+// Planar scenes bend in y only; full ones in y and z, with the same modes in both planes.
+enum class BendingPlanes { kPlanar, kBoth };
+
+struct SceneBeam {
+  std::string name;
+  double length_m = 1.0;
+  double ei_n_m2 = 0.0;
+  double rho_a_kg_per_m = 0.0;
+  int n_elements = 20;
+  EndCondition at_zero = EndCondition::kClamped;
+  EndCondition at_length = EndCondition::kFree;
+  // Translational springs to the base at each end (N/m, 0 for none): "elastic" ends.
+  double spring_at_zero_n_per_m = 0.0;
+  double spring_at_length_n_per_m = 0.0;
+  double y_m = 0.0, z_m = 0.0;  // Position in the cross-section (for maps).
+};
+
+// A contact at one height: beam a against a stop fixed to the base (beam_b < 0) or against
+// beam b. Contact when the penetration d = n . (u_a - u_b) - gap is positive; the force
+// F = k d + c d' (never pulling) pushes a along -n and b along +n.
+struct SceneZone {
+  std::string name;
+  int beam_a = 0;
+  int beam_b = -1;
+  double height_m = 0.0;
+  double normal_y = 1.0, normal_z = 0.0;  // Unit vector from a towards b (or the stop).
+  double gap_m = 0.0;
+  double stiffness_n_per_m = 0.0;
+  double damping_n_s_per_m = 0.0;
+};
+
+struct ModalDampingEffect {
+  std::vector<double> ratios;  // xi per mode (the last repeats); empty: mass-proportional.
+  double mass_proportional_per_s = 0.0;
+};
+
+// Acceleration of the base every beam is attached to, along (dir_y, dir_z): a half-sine pulse,
+// or a table interpolated linearly (zero outside it). Responses are relative to the base.
+struct BaseMotionEffect {
+  double dir_y = 1.0, dir_z = 0.0;
+  double amplitude_m_s2 = 0.0, duration_s = 0.0, start_s = 0.0;  // Half-sine.
+  std::vector<double> table_t_s, table_a_m_s2;                   // Or a table.
+  double At(double t_s) const;
+};
+
+// A force at one point of one beam: a step at start_s, or a ramp over ramp_s, then constant.
+struct StaticForceEffect {
+  int beam = 0;
+  double height_m = 0.0;
+  double dir_y = 1.0, dir_z = 0.0;
+  double force_n = 0.0;
+  double start_s = 0.0;
+  double ramp_s = 0.0;
+  double At(double t_s) const;
+};
+
+// Initial state of one beam in one direction: its `mode` (1-based) scaled to `tip_m` at the free
+// end, and/or a uniform velocity.
+struct InitialStateEffect {
+  int beam = 0;
+  int direction = 0;  // 0: y, 1: z.
+  int mode = 1;
+  double tip_m = 0.0;
+  double velocity_m_s = 0.0;
+};
+
+struct SceneSolver {
+  double r_ftrunc = 300.0;  // Of each beam's own first frequency.
+  TimeStepRequest dt;
+  double end_time_s = 0.0;
+};
+
+struct ObservedPoint {
+  std::string name;
+  int beam = 0;
+  double height_m = 0.0;
+  int direction = 0;  // 0: y, 1: z.
+};
+
+// Nothing unrequested is recorded.
+struct SceneOutputs {
+  std::vector<ObservedPoint> displacements;
+  bool contact_forces = false;  // Force history of every zone.
+  bool energies = false;
+  bool max_contact_force = false;  // Per zone, over the whole run.
+  bool shocks = false;             // Per-zone shock statistics (needs the force histories).
+  double rest_duration_s = 0.0;    // Shock grouping; required with shocks.
+  int record_stride = 1;
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  BendingPlanes planes = BendingPlanes::kPlanar;
+  std::vector<SceneBeam> beams;
+  std::vector<SceneZone> zones;
+  std::optional<ModalDampingEffect> modal_damping;
+  std::optional<BaseMotionEffect> base_motion;
+  std::vector<StaticForceEffect> static_forces;
+  std::vector<InitialStateEffect> initial_state;
+  SceneSolver solver;
+  SceneOutputs outputs;
+
+  int Directions() const { return planes == BendingPlanes::kBoth ? 2 : 1; }
+};
+
+}  // namespace shockmap

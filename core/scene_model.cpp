@@ -1,0 +1,219 @@
+#include "core/scene_model.h"
+
+#include <Eigen/Eigenvalues>
+#include <cassert>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "core/beam_fe.h"
+#include "core/modal_basis.h"
+
+namespace shockmap {
+namespace {
+
+// Dense eigenvalues up to this size (exact, matches the canonical problem's bound); power
+// iteration beyond.
+constexpr int kDenseBoundLimit = 600;
+
+struct BeamModes {
+  FeBeamModel fe;
+  ModalBasis basis;
+  double f_trunc_hz = 0.0;
+  Eigen::VectorXd participation;  // Phi^T M r, r the unit translation of the deflections.
+
+  int N() const { return basis.NumModes(); }
+  std::vector<double> At(double height_m) const {
+    const Eigen::VectorXd phi = basis.shapes.transpose() * fe.DeflectionRow(height_m);
+    return {phi.data(), phi.data() + phi.size()};
+  }
+};
+
+std::string BasisKey(const SceneBeam& b, double r_ftrunc) {
+  std::ostringstream key;
+  key.precision(17);
+  key << b.length_m << ' ' << b.ei_n_m2 << ' ' << b.rho_a_kg_per_m << ' ' << b.n_elements << ' '
+      << ToString(b.at_zero) << ' ' << ToString(b.at_length) << ' ' << b.spring_at_zero_n_per_m
+      << ' ' << b.spring_at_length_n_per_m << ' ' << r_ftrunc;
+  return key.str();
+}
+
+void AddEndSpring(FeBeamModel& fe, int node, double k) {
+  if (k == 0.0) return;
+  for (int i = 0; i < fe.Size(); ++i) {
+    if (fe.global_dof[i] == 2 * node) fe.stiffness.coeffRef(i, i) += k;
+  }
+}
+
+BeamModes MakeModes(const SceneBeam& b, double r_ftrunc) {
+  BeamModes m;
+  BeamProperties p{b.length_m, b.ei_n_m2, b.rho_a_kg_per_m};
+  m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
+  AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
+  AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
+  const double f1 = ComputeLowestModes(m.fe, 1).HighestFrequencyHz();
+  m.f_trunc_hz = r_ftrunc * f1;
+  m.basis = ComputeModalBasis(m.fe, m.f_trunc_hz);
+  if (m.basis.NumModes() == 0) m.basis = ComputeLowestModes(m.fe, 1);
+  Eigen::VectorXd translation = Eigen::VectorXd::Zero(m.fe.Size());
+  for (int i = 0; i < m.fe.Size(); ++i) translation[i] = m.fe.global_dof[i] % 2 == 0 ? 1.0 : 0.0;
+  m.participation = m.basis.shapes.transpose() * (m.fe.mass * translation);
+  return m;
+}
+
+double SharpOmegaSquared(const SceneModalSystem& system, const Eigen::VectorXd& omega) {
+  const int n = system.Size();
+  if (n > kDenseBoundLimit) return system.StiffestOmegaSquared();
+  Eigen::MatrixXd k = omega.array().square().matrix().asDiagonal();
+  for (const auto& z : system.Zones()) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+    auto put = [&](int offset, double scale, const std::vector<double>& phi) {
+      if (offset < 0) return;
+      for (std::size_t i = 0; i < phi.size(); ++i)
+        r[offset + static_cast<int>(i)] += scale * phi[i];
+    };
+    put(z.a_y, z.normal_y, z.phi_a);
+    put(z.a_z, z.normal_z, z.phi_a);
+    put(z.b_y, -z.normal_y, z.phi_b);
+    put(z.b_z, -z.normal_z, z.phi_b);
+    k.noalias() += z.stiffness_n_per_m * r * r.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, Eigen::EigenvaluesOnly);
+  return eig.eigenvalues().maxCoeff();
+}
+
+}  // namespace
+
+SceneModel BuildSceneModel(const Scene& scene) {
+  SceneModel model;
+  const int dirs = scene.Directions();
+  std::map<std::string, std::shared_ptr<const BeamModes>> cache;
+  std::vector<std::shared_ptr<const BeamModes>> modes;
+  int n = 0;
+  for (const auto& b : scene.beams) {
+    auto& slot = cache[BasisKey(b, scene.solver.r_ftrunc)];
+    if (!slot) slot = std::make_shared<const BeamModes>(MakeModes(b, scene.solver.r_ftrunc));
+    modes.push_back(slot);
+    model.beam_offset.push_back(n);
+    model.modes_per_beam.push_back(slot->N());
+    n += dirs * slot->N();
+  }
+  model.distinct_bases = static_cast<int>(cache.size());
+  auto block = [&](int beam, int direction) {
+    return direction < dirs ? model.beam_offset[beam] + direction * modes[beam]->N() : -1;
+  };
+
+  Eigen::VectorXd omega(n);
+  double f_trunc_max = 0.0;
+  for (std::size_t b = 0; b < scene.beams.size(); ++b) {
+    for (int d = 0; d < dirs; ++d) {
+      omega.segment(block(static_cast<int>(b), d), modes[b]->N()) = modes[b]->basis.omega_rad_s;
+    }
+    f_trunc_max = std::max(f_trunc_max, modes[b]->f_trunc_hz);
+  }
+
+  std::optional<Eigen::VectorXd> damping;
+  if (scene.modal_damping) {
+    const auto& md = *scene.modal_damping;
+    damping = Eigen::VectorXd::Constant(n, md.mass_proportional_per_s);
+    if (!md.ratios.empty()) {
+      for (std::size_t b = 0; b < scene.beams.size(); ++b) {
+        for (int d = 0; d < dirs; ++d) {
+          for (int i = 0; i < modes[b]->N(); ++i) {
+            const double xi = md.ratios[std::min<std::size_t>(i, md.ratios.size() - 1)];
+            const int k = block(static_cast<int>(b), d) + i;
+            (*damping)[k] = 2.0 * xi * omega[k];
+          }
+        }
+      }
+    }
+  }
+
+  std::vector<ZoneTerm> zones;
+  for (const auto& z : scene.zones) {
+    ZoneTerm t;
+    t.a_y = block(z.beam_a, 0);
+    t.a_z = block(z.beam_a, 1);
+    t.phi_a = modes[z.beam_a]->At(z.height_m);
+    if (z.beam_b >= 0) {
+      t.b_y = block(z.beam_b, 0);
+      t.b_z = block(z.beam_b, 1);
+      t.phi_b = modes[z.beam_b]->At(z.height_m);
+    }
+    t.normal_y = z.normal_y;
+    t.normal_z = dirs == 2 ? z.normal_z : 0.0;
+    t.gap_m = z.gap_m;
+    t.stiffness_n_per_m = z.stiffness_n_per_m;
+    t.damping_n_s_per_m = z.damping_n_s_per_m;
+    zones.push_back(std::move(t));
+  }
+
+  std::vector<TimeLoad> loads;
+  if (scene.base_motion) {
+    TimeLoad base;
+    base.base = &*scene.base_motion;
+    base.shape = Eigen::VectorXd::Zero(n);
+    for (std::size_t b = 0; b < scene.beams.size(); ++b) {
+      const double dir[2] = {scene.base_motion->dir_y, scene.base_motion->dir_z};
+      for (int d = 0; d < dirs; ++d) {
+        base.shape.segment(block(static_cast<int>(b), d), modes[b]->N()) =
+            dir[d] * modes[b]->participation;
+      }
+    }
+    loads.push_back(std::move(base));
+  }
+  for (const auto& f : scene.static_forces) {
+    TimeLoad load;
+    load.point_force = &f;
+    load.shape = Eigen::VectorXd::Zero(n);
+    const auto phi = modes[f.beam]->At(f.height_m);
+    const double dir[2] = {f.dir_y, f.dir_z};
+    for (int d = 0; d < dirs; ++d) {
+      for (std::size_t i = 0; i < phi.size(); ++i) {
+        load.shape[block(f.beam, d) + static_cast<int>(i)] = dir[d] * phi[i];
+      }
+    }
+    loads.push_back(std::move(load));
+  }
+
+  model.x0 = Eigen::VectorXd::Zero(n);
+  model.v0 = Eigen::VectorXd::Zero(n);
+  for (const auto& s : scene.initial_state) {
+    const BeamModes& m = *modes[s.beam];
+    const int offset = block(s.beam, s.direction);
+    if (s.tip_m != 0.0 && s.mode - 1 < m.N()) {
+      // Scaled so that the largest deflection node of the mode carries tip_m.
+      Eigen::Index at = 0;
+      const Eigen::VectorXd shape = m.basis.shapes.col(s.mode - 1);
+      double largest = 0.0;
+      for (int i = 0; i < m.fe.Size(); ++i) {
+        if (m.fe.global_dof[i] % 2 == 0 && std::abs(shape[i]) > largest) {
+          largest = std::abs(shape[i]);
+          at = i;
+        }
+      }
+      model.x0[offset + s.mode - 1] = s.tip_m / shape[at];
+    }
+    if (s.velocity_m_s != 0.0) {
+      model.v0.segment(offset, m.N()) += s.velocity_m_s * m.participation;
+    }
+  }
+
+  for (const auto& o : scene.outputs.displacements) {
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(n);
+    const auto phi = modes[o.beam]->At(o.height_m);
+    const int offset = block(o.beam, o.direction);
+    for (std::size_t i = 0; i < phi.size(); ++i) row[offset + static_cast<int>(i)] = phi[i];
+    model.observed_rows.push_back(std::move(row));
+  }
+
+  model.system = std::make_unique<SceneModalSystem>(omega, std::move(damping), std::move(zones),
+                                                    std::move(loads));
+  model.bounds.dt_paper_s = 1.0 / (4.0 * f_trunc_max);
+  model.bounds.omega_max_rad_s = std::sqrt(SharpOmegaSquared(*model.system, omega));
+  model.bounds.dt_sharp_s = 2.0 / model.bounds.omega_max_rad_s;
+  return model;
+}
+
+}  // namespace shockmap

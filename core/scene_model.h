@@ -1,0 +1,28 @@
+#pragma once
+// Builds the modal model of a scene: one FE model and modal basis per distinct beam (shared by
+// identical beams), the zones in modal coordinates, the declared loads, the initial state, the
+// observed points and both stability bounds.
+
+#include <memory>
+#include <vector>
+
+#include "core/scene.h"
+#include "core/scene_system.h"
+
+namespace shockmap {
+
+struct SceneModel {
+  std::unique_ptr<SceneModalSystem> system;
+  Eigen::VectorXd x0, v0;
+  std::vector<Eigen::VectorXd> observed_rows;  // One per requested displacement output.
+  std::vector<int> beam_offset;                // First coordinate of each beam (y, then z).
+  std::vector<int> modes_per_beam;             // Per direction.
+  int distinct_bases = 0;
+  StabilityBounds bounds;  // paper: 1/(4 max f_trunc); sharp: every zone closed.
+};
+
+// Preconditions: the scene was validated (indices in range, positive properties), and it
+// outlives the model (the loads refer to its effects).
+SceneModel BuildSceneModel(const Scene& scene);
+
+}  // namespace shockmap
