@@ -41,7 +41,9 @@ struct Recorder {
     };
     init(result.displacement_m, options.observed_rows.size());
     init(result.velocity_m_s, options.observed_rows.size());
-    init(result.contact_force_n, system.LastContactForces().size());
+    if (options.record_contact_forces) {
+      init(result.contact_force_n, system.LastContactForces().size());
+    }
     if (options.record_energy) {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
                       &result.energy.dissipated_j, &result.energy.external_work_j}) {
@@ -56,9 +58,11 @@ struct Recorder {
       result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
       result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
     }
-    const auto forces = system.LastContactForces();
-    for (std::size_t c = 0; c < forces.size(); ++c) {
-      result.contact_force_n[c].values.push_back(forces[c]);
+    if (options.record_contact_forces) {
+      const auto forces = system.LastContactForces();
+      for (std::size_t c = 0; c < forces.size(); ++c) {
+        result.contact_force_n[c].values.push_back(forces[c]);
+      }
     }
     if (options.record_energy) {
       const Energies e = system.EnergyAt(x, v);
@@ -109,6 +113,10 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   double load_power_before = loaded ? system.ExternalPower(0.0, v0) : 0.0;
   summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
   recorder.Record(integrator.X(), integrator.V(), 0.0, 0.0);
+  if (options.track_max_contact_force) {
+    const auto forces = system.LastContactForces();
+    result.max_contact_force_n.assign(forces.begin(), forces.end());
+  }
 
   for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
     if (!integrator.Step(dt)) {
@@ -118,6 +126,12 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
       return finish(RunStatus::kFailed, msg.str());
     }
     summary.steps_taken = n;
+    if (options.track_max_contact_force) {
+      const auto forces = system.LastContactForces();
+      for (std::size_t c = 0; c < forces.size(); ++c) {
+        result.max_contact_force_n[c] = std::max(result.max_contact_force_n[c], forces[c]);
+      }
+    }
     if (dissipates) {
       const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
       dissipated += 0.5 * dt * (power_before + power_now);

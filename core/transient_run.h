@@ -30,6 +30,9 @@ struct TransientOptions {
   // Refused above this: 1e8 steps of a few modes is minutes; more is a units mistake.
   std::int64_t max_steps = 100'000'000;
   bool record_energy = true;
+  bool record_contact_forces = true;  // A force history per contact.
+  // The largest force of each contact over the run, from every step (cheap: no history kept).
+  bool track_max_contact_force = false;
   // Displacement and velocity histories are recorded at each of these points (row . x).
   std::vector<Eigen::VectorXd> observed_rows;
 
@@ -60,7 +63,8 @@ struct TransientResult {
   RunSummary summary;
   std::vector<UniformSignal> displacement_m;   // One per observed row.
   std::vector<UniformSignal> velocity_m_s;     // One per observed row.
-  std::vector<UniformSignal> contact_force_n;  // One per contact of the system.
+  std::vector<UniformSignal> contact_force_n;  // One per contact, when recorded.
+  std::vector<double> max_contact_force_n;     // One per contact, when tracked.
   EnergyHistory energy;                        // Empty unless record_energy.
 };
 

@@ -1,0 +1,16 @@
+#pragma once
+// Scene files (JSON, in scenes/): beams, contact zones, effects, solver, outputs, and bundle
+// generators that expand a row or a hexagonal bundle of pins in its wrapper into beams and zones.
+
+#include <string>
+
+#include "core/scene.h"
+
+namespace shockmap {
+
+// Parses and validates a scene file. Throws InputError naming the file, the JSON path, the value
+// and what is allowed: unknown keys, wrong types, references to beams that do not exist, gaps or
+// stiffnesses out of range, a bad CSV load history (named with its line).
+Scene LoadScene(const std::string& path);
+
+}  // namespace shockmap
