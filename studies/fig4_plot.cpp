@@ -8,7 +8,6 @@
 
 #include "core/input_error.h"
 #include "studies/gnuplot.h"
-#include "studies/validity_map.h"
 
 namespace shockmap {
 namespace {

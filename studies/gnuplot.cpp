@@ -1,10 +1,25 @@
 #include "studies/gnuplot.h"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
+#include "core/input_error.h"
+
 namespace shockmap {
+
+std::string TerminalFor(const std::filesystem::path& file, int width, int height) {
+  if (file.extension() == ".svg") {
+    return fmt::format("svg size {},{} dynamic font 'DejaVu Sans,12' background '#ffffff'", width,
+                       height);
+  }
+  if (file.extension() == ".png") {
+    return fmt::format("pngcairo size {},{} font 'DejaVu Sans,11'", width, height);
+  }
+  throw InputError(file.string() + ": the plot file must end in .png or .svg");
+}
 
 void RunGnuplot(const std::string& script, const std::filesystem::path& script_file) {
   {

@@ -1,29 +1,11 @@
 #include "studies/history_csv.h"
 
-#include <fstream>
-#include "core/input_error.h"
+#include "studies/output_file.h"
 
 namespace shockmap {
-namespace {
-
-std::ofstream OpenForWriting(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw InputError("cannot write " + file.string());
-  out.precision(12);
-  return out;
-}
-
-void Close(std::ofstream& out, const std::filesystem::path& file) {
-  out.close();
-  if (!out) throw InputError("error while writing " + file.string());
-}
-
-}  // namespace
 
 void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create directory " + dir.string() + ": " + ec.message());
+  CreateOutputDirectory(dir);
 
   const TransientResult& h = result.histories;
   const auto num_file = dir / "numerical.csv";
@@ -39,7 +21,7 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
           << h.energy.dissipated_j.values[i] << '\n';
     }
   }
-  Close(num, num_file);
+  CloseWritten(num, num_file);
 
   const auto ref_file = dir / "reference.csv";
   std::ofstream ref = OpenForWriting(ref_file);
@@ -48,7 +30,7 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
   for (std::size_t i = 0; i < u.values.size(); ++i) {
     ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference->force_n.values[i] << '\n';
   }
-  Close(ref, ref_file);
+  CloseWritten(ref, ref_file);
 }
 
 }  // namespace shockmap

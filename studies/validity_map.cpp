@@ -42,17 +42,6 @@ std::optional<MapAxis> MapAxisFromString(std::string_view s) {
   return std::nullopt;
 }
 
-std::string TerminalFor(const std::filesystem::path& file, int width, int height) {
-  if (file.extension() == ".svg") {
-    return fmt::format("svg size {},{} dynamic font 'DejaVu Sans,12' background '#ffffff'", width,
-                       height);
-  }
-  if (file.extension() == ".png") {
-    return fmt::format("pngcairo size {},{} font 'DejaVu Sans,11'", width, height);
-  }
-  throw InputError(file.string() + ": the plot file must end in .png or .svg");
-}
-
 namespace {
 
 // Status classes drawn by the status map, in colour order.

@@ -34,7 +34,4 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
                      const ValidityCriteria& criteria, const MapOptions& options,
                      const std::filesystem::path& file);
 
-// "pngcairo size W,H ..." or "svg size W,H ...": the gnuplot terminal for a file's extension.
-std::string TerminalFor(const std::filesystem::path& file, int width, int height);
-
 }  // namespace shockmap
