@@ -15,8 +15,11 @@ struct SceneModel {
   std::unique_ptr<SceneModalSystem> system;
   Eigen::VectorXd x0, v0;
   std::vector<Eigen::VectorXd> observed_rows;  // One per requested displacement output.
-  std::vector<int> beam_offset;                // First coordinate of each beam (y, then z).
-  std::vector<int> modes_per_beam;             // Per direction.
+  // Per direction (y, then z): row . v is the momentum of all beams relative to the base
+  // (kg m/s), exact whatever the truncation when the beams are free (rigid modes kept).
+  std::vector<Eigen::VectorXd> momentum_rows;
+  std::vector<int> beam_offset;     // First coordinate of each beam (y, then z).
+  std::vector<int> modes_per_beam;  // Per direction.
   int distinct_bases = 0;
   StabilityBounds bounds;  // paper: 1/(4 max f_trunc); sharp: every zone closed.
 };
