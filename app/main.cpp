@@ -7,6 +7,7 @@
 #include "app/compare_command.h"
 #include "app/criteria_command.h"
 #include "app/map_command.h"
+#include "app/simulate_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
 #include "core/input_error.h"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   shockmap::AddQueryCommand(app);
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
+  shockmap::AddSimulateCommand(app);
   shockmap::AddViewCommands(app);
   try {
     app.parse(argc, argv);

@@ -41,6 +41,7 @@ struct SceneZone {
   double gap_m = 0.0;
   double stiffness_n_per_m = 0.0;
   double damping_n_s_per_m = 0.0;
+  double y_m = 0.0, z_m = 0.0;  // Where the zone sits in the cross-section (for maps).
 };
 
 struct ModalDampingEffect {

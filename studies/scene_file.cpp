@@ -7,6 +7,7 @@
 #include <random>
 #include <sstream>
 
+#include "core/transient_run.h"
 #include "studies/json_reader.h"
 
 namespace shockmap {
@@ -18,7 +19,6 @@ using Json = nlohmann::json;
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
 constexpr int kMaxElements = 10000;
-constexpr double kMaxSteps = 1e9;
 
 double Positive(JsonObjectReader& r, const std::string& key, double hi = 1e15) {
   const double v = r.RequiredNumber(key);
@@ -271,6 +271,8 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
         z.normal_y = ny, z.normal_z = nz;
         z.stiffness_n_per_m = k;
         z.damping_n_s_per_m = c;
+        z.y_m = positions[a - first - 1].first + 0.5 * pitch * ny;
+        z.z_m = positions[a - first - 1].second + 0.5 * pitch * nz;
         if (it != index.end()) {
           if (it->second < a) continue;  // Each pair once.
           z.beam_b = it->second;
@@ -420,6 +422,12 @@ Scene LoadScene(const std::string& path) {
       z.Fail("height_m", "lies beyond the end of \"" + against + "\"");
     }
     std::tie(zone.normal_y, zone.normal_z) = Vector2(z, "normal", {1.0, 0.0}, true);
+    const SceneBeam& a = scene.beams[zone.beam_a];
+    const SceneBeam* b = zone.beam_b >= 0 ? &scene.beams[zone.beam_b] : nullptr;
+    std::tie(zone.y_m, zone.z_m) = Vector2(
+        z, "position_m",
+        b ? std::pair{0.5 * (a.y_m + b->y_m), 0.5 * (a.z_m + b->z_m)} : std::pair{a.y_m, a.z_m},
+        false);
     zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
     zone.stiffness_n_per_m = Positive(z, "stiffness_n_per_m");
     zone.damping_n_s_per_m = InRange(z, "damping_n_s_per_m", 0.0, 0.0, 1e9);
@@ -510,10 +518,12 @@ Scene LoadScene(const std::string& path) {
     }
     d.Finish();
   }
-  if (scene.solver.dt.dt_s && scene.solver.end_time_s / *scene.solver.dt.dt_s > kMaxSteps) {
+  const auto max_steps = TransientOptions{}.max_steps;
+  if (scene.solver.dt.dt_s &&
+      scene.solver.end_time_s / *scene.solver.dt.dt_s > static_cast<double>(max_steps)) {
     s.Fail("dt",
            "end_time_s / dt = " + Shown(Json(scene.solver.end_time_s / *scene.solver.dt.dt_s)) +
-               " steps: at most 1e9 are allowed");
+               " steps: at most " + std::to_string(max_steps) + " are allowed");
   }
   s.Finish();
 

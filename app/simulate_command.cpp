@@ -1,0 +1,105 @@
+#include "app/simulate_command.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+
+#include "core/input_error.h"
+#include "studies/contact_force_map.h"
+#include "studies/scene_file.h"
+#include "studies/scene_outputs.h"
+
+namespace shockmap {
+namespace {
+
+struct SimulateFlags {
+  std::string scene_file;
+  std::string out_dir;
+  bool json = false;
+};
+
+void PrintHuman(const Scene& scene, const SceneRun& run) {
+  const RunSummary& s = run.result.summary;
+  const auto [fewest, most] =
+      std::minmax_element(run.modes_per_beam.begin(), run.modes_per_beam.end());
+  fmt::print("shockmap simulate: {}, {} s simulated\n", scene.name, scene.solver.end_time_s);
+  fmt::print("  status            {}{} (max energy ratio {:.4g})\n", ToString(s.status),
+             s.message.empty() ? "" : " (" + s.message + ")", s.max_energy_ratio);
+  fmt::print(
+      "  model             {} beams, {} zones, {} modal coordinates ({}-{} modes per beam and "
+      "plane, R_ftrunc = {:g}), {} distinct modal bases\n",
+      scene.beams.size(), scene.zones.size(), run.coordinates, *fewest, *most,
+      scene.solver.r_ftrunc, run.distinct_bases);
+  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", s.dt_used_s,
+             s.dt_requested_s, s.steps_taken);
+  fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
+             run.bounds.dt_paper_s, run.bounds.dt_sharp_s);
+  fmt::print(
+      "  wall time         build {:.3f} s, integration {:.3f} s (CPU {:.3f} s), {:.3f} s per "
+      "simulated second\n",
+      run.build_wall_s, s.wall_s, s.cpu_s, s.wall_s / scene.solver.end_time_s);
+  if (!run.max_contact_force_n.empty()) {
+    const auto largest =
+        std::max_element(run.max_contact_force_n.begin(), run.max_contact_force_n.end());
+    const auto touched =
+        std::count_if(run.max_contact_force_n.begin(), run.max_contact_force_n.end(),
+                      [](double f) { return f > 0; });
+    fmt::print(
+        "  contact           {} of {} zones touched; largest force {:.4g} N in {}\n", touched,
+        scene.zones.size(), *largest,
+        scene.zones[static_cast<std::size_t>(largest - run.max_contact_force_n.begin())].name);
+  }
+  if (!run.shocks.empty()) {
+    std::size_t shocks = 0;
+    for (const auto& z : run.shocks) shocks += z.size();
+    fmt::print("  shocks            {} over all zones (rest duration {:g} s)\n", shocks,
+               scene.outputs.rest_duration_s);
+  }
+}
+
+void Run(const SimulateFlags& f) {
+  const Scene scene = LoadScene(f.scene_file);
+  SceneRun run;
+  try {
+    run = RunScene(scene);
+  } catch (const InputError& e) {
+    throw InputError(f.scene_file + ": " + e.what());
+  }
+  if (f.json) {
+    std::cout << SceneRunToJson(scene, run).dump(2) << '\n';
+  } else {
+    PrintHuman(scene, run);
+  }
+  if (f.out_dir.empty()) return;
+  auto written = WriteSceneOutputs(scene, run, f.out_dir);
+  if (!run.max_contact_force_n.empty() && !scene.zones.empty()) {
+    const auto map = std::filesystem::path(f.out_dir) / "contact_force_map.png";
+    DrawContactForceMap(scene, run.max_contact_force_n, map);
+    written.push_back(map);
+  }
+  if (!f.json) {
+    for (const auto& file : written) fmt::print("  wrote             {}\n", file.string());
+  }
+}
+
+}  // namespace
+
+void AddSimulateCommand(CLI::App& app) {
+  auto flags = std::make_shared<SimulateFlags>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate",
+      "Run a scene file (beams, contact zones, effects) with the explicit modal solver and write "
+      "the outputs it requests");
+  cmd->add_option("scene", flags->scene_file, "scene file (JSON), e.g. scenes/bundle_row.json")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--out", flags->out_dir,
+                  "directory for the requested histories (CSV), summary.json and the contact-force "
+                  "map");
+  cmd->add_flag("--json", flags->json, "print the summary as one JSON object");
+  cmd->callback([flags] { Run(*flags); });
+}
+
+}  // namespace shockmap

@@ -1,0 +1,32 @@
+#pragma once
+// One simulation of a scene: build its modal model, integrate it explicitly with the declared
+// effects only, and keep exactly the outputs the scene requests (DESIGN §5-6).
+
+#include <vector>
+
+#include "core/scene.h"
+#include "core/transient_run.h"
+#include "validation/shock_segmentation.h"
+
+namespace shockmap {
+
+struct SceneRun {
+  // The model that ran.
+  int coordinates = 0;     // Modal coordinates integrated (all beams, both planes).
+  int distinct_bases = 0;  // Modal bases computed (identical beams share one).
+  std::vector<int> modes_per_beam;
+  StabilityBounds bounds;
+  double build_wall_s = 0.0;  // Assembling the FE models and modal bases.
+
+  TransientResult result;  // Histories as requested; summary always.
+  // Per zone, when requested (empty otherwise): the largest force over every step, and the
+  // shocks of its force history.
+  std::vector<double> max_contact_force_n;
+  std::vector<std::vector<Shock>> shocks;
+};
+
+// Preconditions: the scene was validated (LoadScene). Integrates with central differences at
+// scene.solver.dt resolved against the model's bounds.
+SceneRun RunScene(const Scene& scene);
+
+}  // namespace shockmap

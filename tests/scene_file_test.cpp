@@ -1,0 +1,260 @@
+// Scene files end to end: the parser names the JSON path of every mistake, the bundle
+// generators build the lattice they promise, and `shockmap simulate` runs the shipped scenes,
+// reproduces `compare` on the canonical problem and refuses bad input with exit code 2.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "studies/scene_file.h"
+#include "tests/run_command.h"
+
+namespace shockmap {
+namespace {
+
+using testing::RunShockmap;
+using testing::WriteText;
+using Json = nlohmann::json;
+
+const std::string kScenes = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/";
+
+class SceneFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("shockmap_scene_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // The canonical scene with one change applied, written to a file.
+  std::string Variant(const std::function<void(Json&)>& change) {
+    std::ifstream in(kScenes + "cantilever_spring.json");
+    Json scene = Json::parse(in);
+    change(scene);
+    const std::string path = Path("variant.json");
+    WriteText(path, scene.dump(2));
+    return path;
+  }
+
+  // The message LoadScene gives (empty if it accepts the file).
+  static std::string Refusal(const std::string& path) {
+    try {
+      LoadScene(path);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
+  const std::vector<std::pair<std::function<void(Json&)>, std::vector<std::string>>> cases = {
+      {[](Json& s) { s["beams"][0]["lenght_m"] = 1.0; }, {"beams[0].lenght_m", "unknown"}},
+      {[](Json& s) { s["beams"][0]["ei_n_m2"] = "stiff"; }, {"beams[0].ei_n_m2"}},
+      {[](Json& s) { s["beams"][0]["ei_n_m2"] = -1.0; }, {"beams[0].ei_n_m2", "> 0"}},
+      {[](Json& s) {
+         s["beams"][0]["ends"] = {"clamped", "glued"};
+       },
+       {"beams[0].ends[1]"}},
+      {[](Json& s) { s["zones"][0]["beam"] = "ghost"; }, {"zones[0].beam", "ghost"}},
+      {[](Json& s) { s["zones"][0]["against"] = "beam"; }, {"zones[0].against", "itself"}},
+      {[](Json& s) { s["zones"][0]["gap_m"] = 5.0; }, {"zones[0].gap_m", "must lie in"}},
+      {[](Json& s) { s["zones"][0]["stiffness_n_per_m"] = 0; }, {"zones[0].stiffness_n_per_m"}},
+      {[](Json& s) { s["zones"][0]["height_m"] = 1.5; }, {"zones[0].height_m", "on the beam"}},
+      {[](Json& s) {
+         s["zones"][0]["normal"] = {0, 0};
+       },
+       {"zones[0].normal", "zero"}},
+      {[](Json& s) { s["effects"]["initial_state"][0]["direction"] = "x"; },
+       {"effects.initial_state[0].direction"}},
+      {[](Json& s) {
+         s["effects"]["modal_damping"] = {{"ratios", {0.02, -1}}};
+       },
+       {"effects.modal_damping.ratios[1]"}},
+      {[](Json& s) { s["effects"]["base_motion"] = Json::object(); }, {"effects.base_motion"}},
+      {[](Json& s) {
+         s["solver"]["dt"] = {{"rule", "fast"}};
+       },
+       {"solver.dt.rule", "fast"}},
+      {[](Json& s) {
+         s["solver"]["dt"] = {{"seconds", 1e-12}};
+       },
+       {"solver.dt", "at most 100000000 are allowed"}},
+      {[](Json& s) { s["solver"].erase("end_time_s"); }, {"solver.end_time_s"}},
+      {[](Json& s) { s.erase("solver"); }, {"solver", "missing"}},
+      {[](Json& s) { s["outputs"]["displacements"][0]["direction"] = "z"; },
+       {"outputs.displacements[0].direction", "planar"}},
+      {[](Json& s) { s["outputs"]["energies"] = "yes"; }, {"outputs.energies", "true or false"}},
+      {[](Json& s) { s["outputs"]["record_stride"] = 0; }, {"outputs.record_stride"}},
+      {[](Json& s) {
+         s["beams"][0]["ends"] = {"free", "free"};
+       },
+       {"beams[0].ends", "rigid"}},
+  };
+  for (const auto& [change, expected] : cases) {
+    const std::string message = Refusal(Variant(change));
+    ASSERT_FALSE(message.empty()) << expected[0] << " was accepted";
+    EXPECT_NE(message.find("variant.json"), std::string::npos) << message;
+    for (const auto& part : expected) EXPECT_NE(message.find(part), std::string::npos) << message;
+  }
+}
+
+TEST_F(SceneFiles, BaseMotionCsvErrorsNameTheLine) {
+  auto with_csv = [&](const std::string& rows) {
+    WriteText(Path("shock.csv"), rows);
+    return Variant([](Json& s) { s["effects"]["base_motion"] = {{"csv", "shock.csv"}}; });
+  };
+  EXPECT_NE(Refusal(with_csv("t,a\n0,1\n")).find("line 1"), std::string::npos);
+  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n0.1,x\n")).find("line 3"), std::string::npos);
+  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n0,2\n")).find("increase"), std::string::npos);
+  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n1,nan\n")).find("finite"), std::string::npos);
+  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n")).find("two rows"), std::string::npos);
+  EXPECT_EQ(Refusal(with_csv("t_s,a_m_s2\n0,1\n0.01,-2\n")), "");
+}
+
+// A hexagonal bundle of n rings has 1 + 3 n (n + 1) pins, 3 n (3 n + 1) neighbour pairs and
+// 12 n + 6 faces against the wrapper, every pair one pitch apart.
+TEST_F(SceneFiles, HexBundleHasTheLatticeOfARealAssembly) {
+  for (int rings : {1, 2, 8}) {
+    const std::string path = Variant([&](Json& s) {
+      std::ifstream in(kScenes + "bundle_hex.json");
+      s = Json::parse(in);
+      s["bundle"]["rings"] = rings;
+      s.erase("zones");
+      s["outputs"] = {{"max_contact_force", true}};
+    });
+    const Scene scene = LoadScene(path);
+    const int heights = 7;
+    ASSERT_EQ(scene.beams.size(), 2u + 3u * rings * (rings + 1));
+    std::map<bool, int> zones;  // against the wrapper -> count
+    for (const SceneZone& z : scene.zones) {
+      const bool wall = z.beam_b == 0;
+      ++zones[wall];
+      const SceneBeam &a = scene.beams[z.beam_a], &b = scene.beams[z.beam_b];
+      if (!wall) {
+        EXPECT_NEAR(std::hypot(b.y_m - a.y_m, b.z_m - a.z_m), 7.2644e-3, 1e-12);
+        EXPECT_NEAR(z.normal_y * (b.y_m - a.y_m) + z.normal_z * (b.z_m - a.z_m), 7.2644e-3, 1e-12);
+        EXPECT_GE(z.gap_m, 0.0);
+      } else {
+        EXPECT_EQ(z.gap_m, 3.8e-4);
+      }
+    }
+    EXPECT_EQ(zones[false], heights * 3 * rings * (3 * rings + 1));
+    EXPECT_EQ(zones[true], heights * (12 * rings + 6));
+  }
+}
+
+TEST_F(SceneFiles, SeededGapsAreReproducibleAndFollowTheirLaw) {
+  auto gaps = [&](int seed) {
+    const Scene scene = LoadScene(Variant([&](Json& s) {
+      std::ifstream in(kScenes + "bundle_hex.json");
+      s = Json::parse(in);
+      s["bundle"]["wire"]["gap_m"] = {{"normal", {{"mean", 1e-4}, {"std", 2e-5}, {"seed", seed}}}};
+    }));
+    std::vector<double> g;
+    for (const SceneZone& z : scene.zones) {
+      if (z.beam_b > 0) g.push_back(z.gap_m);
+    }
+    return g;
+  };
+  const auto a = gaps(7), b = gaps(7), c = gaps(8);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, c);
+  double mean = 0, var = 0;
+  for (double g : a) mean += g / a.size();
+  for (double g : a) var += (g - mean) * (g - mean) / (a.size() - 1);
+  // 4200 draws: the sample mean lies within 3 standard errors (0.9e-6), the std within 5 %.
+  EXPECT_NEAR(mean, 1e-4, 1e-6);
+  EXPECT_NEAR(std::sqrt(var), 2e-5, 1e-6);
+}
+
+std::vector<std::vector<double>> ReadCsv(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream fields(line);
+    std::string field;
+    while (std::getline(fields, field, ',')) row.push_back(std::stod(field));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST_F(SceneFiles, CanonicalSceneThroughSimulateEqualsCompare) {
+  const auto sim =
+      RunShockmap("simulate " + kScenes + "cantilever_spring.json --out " + Path("sim"));
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  const auto cmp = RunShockmap("compare --rk 3000 --rftrunc 300 --out " + Path("cmp"));
+  ASSERT_EQ(cmp.exit_code, 0) << cmp.output;
+  const auto tip = ReadCsv(Path("sim/displacements.csv"));
+  const auto force = ReadCsv(Path("sim/contact_forces.csv"));
+  const auto numerical = ReadCsv(Path("cmp/numerical.csv"));
+  ASSERT_EQ(tip.size(), numerical.size());
+  double worst_tip = 0, worst_force = 0, peak = 0;
+  for (std::size_t i = 0; i < tip.size(); ++i) {
+    ASSERT_DOUBLE_EQ(tip[i][0], numerical[i][0]);
+    worst_tip = std::max(worst_tip, std::abs(tip[i][1] - numerical[i][1]));
+    worst_force = std::max(worst_force, std::abs(force[i][1] - numerical[i][3]));
+    peak = std::max(peak, numerical[i][3]);
+  }
+  ASSERT_GT(peak, 1e3);                     // The run has shocks to compare.
+  EXPECT_LT(worst_tip, 1e-12 * 1e-3 * 10);  // 12 digits in the files.
+  EXPECT_LT(worst_force, 1e-10 * peak);
+}
+
+TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {
+  for (const char* name : {"bundle_row", "cantilever_spring"}) {
+    const auto out = Path(name);
+    const auto r =
+        RunShockmap(std::string("simulate --json ") + kScenes + name + ".json --out " + out);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const Json summary = Json::parse(r.output);
+    EXPECT_EQ(summary["status"], "ok");
+    EXPECT_LT(summary["max_energy_ratio"].get<double>(), 1.1);
+    EXPECT_GT(summary["largest_contact_force"]["force_n"].get<double>(), 0.0);
+    EXPECT_GT(std::filesystem::file_size(out + "/contact_force_map.png"), 10000u);
+    // Only the requested outputs are written.
+    EXPECT_EQ(std::filesystem::exists(out + "/contact_forces.csv"),
+              std::string(name) == "cantilever_spring");
+  }
+}
+
+TEST_F(SceneFiles, SimulateRefusesBadInputWithExitCode2) {
+  WriteText(Path("empty.json"), "");
+  WriteText(Path("truncated.json"), "{\"name\": \"x\", \"beams\": [");
+  const std::string stride = Variant([](Json& s) {
+    s["solver"]["dt"] = {{"rule", "sharp"}, {"factor", 1e-6}};
+    s["solver"]["end_time_s"] = 1e3;
+  });
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"simulate " + Path("missing.json"), "missing.json"},
+      {"simulate " + Path("empty.json"), "empty.json"},
+      {"simulate " + Path("truncated.json"), "truncated.json"},
+      {"simulate " + stride, "solver.dt"},
+      {"simulate " + kScenes + "cantilever_spring.json --out /proc/shockmap", "/proc/shockmap"},
+  };
+  for (const auto& [args, named] : cases) {
+    const auto r = RunShockmap(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(named), std::string::npos) << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace shockmap
