@@ -1,12 +1,22 @@
 #include "core/modal_basis.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace shockmap {
 namespace {
+
+// Each mode's sign makes its largest component positive.
+void NormalizeSigns(Eigen::MatrixXd& shapes) {
+  for (int j = 0; j < shapes.cols(); ++j) {
+    Eigen::Index at = 0;
+    shapes.col(j).cwiseAbs().maxCoeff(&at);
+    if (shapes(at, j) < 0.0) shapes.col(j) *= -1.0;
+  }
+}
 
 // All eigenpairs of the generalized symmetric problem, ascending; eigenvectors M-normalized.
 ModalBasis AllModes(const FeBeamModel& model) {
@@ -16,11 +26,7 @@ ModalBasis AllModes(const FeBeamModel& model) {
   ModalBasis basis;
   basis.omega_rad_s = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   basis.shapes = solver.eigenvectors();
-  for (int j = 0; j < basis.shapes.cols(); ++j) {
-    Eigen::Index at = 0;
-    basis.shapes.col(j).cwiseAbs().maxCoeff(&at);
-    if (basis.shapes(at, j) < 0.0) basis.shapes.col(j) *= -1.0;
-  }
+  NormalizeSigns(basis.shapes);
   return basis;
 }
 
@@ -48,6 +54,38 @@ ModalBasis ComputeLowestModes(const FeBeamModel& model, int n) {
   ModalBasis all = AllModes(model);
   const int kept = std::min(n, all.NumModes());
   return FirstColumns(std::move(all), kept);
+}
+
+}  // namespace shockmap
+
+namespace shockmap {
+
+ModalBasis WithStaticCorrection(const FeBeamModel& model, const ModalBasis& basis,
+                                const std::vector<Eigen::VectorXd>& force_rows) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(model.stiffness);
+  std::vector<Eigen::VectorXd> columns;
+  for (int j = 0; j < basis.NumModes(); ++j) columns.push_back(basis.shapes.col(j));
+  for (const Eigen::VectorXd& row : force_rows) {
+    Eigen::VectorXd psi = k.solve(row);
+    const double initial = std::sqrt(psi.dot(model.mass * psi));
+    // Mass-orthogonal to every column so far (twice: classical Gram-Schmidt loses it once).
+    for (int pass = 0; pass < 2; ++pass) {
+      for (const Eigen::VectorXd& c : columns) psi -= c.dot(model.mass * psi) * c;
+    }
+    const double left = std::sqrt(psi.dot(model.mass * psi));
+    if (!(left > 1e-8 * initial)) continue;
+    columns.push_back(psi / left);
+  }
+  Eigen::MatrixXd t(model.Size(), static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t j = 0; j < columns.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = columns[j];
+  // t is mass-orthonormal, so the reduced problem is a standard symmetric one.
+  const Eigen::MatrixXd reduced = t.transpose() * (model.stiffness * t);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (reduced + reduced.transpose()));
+  ModalBasis enriched;
+  enriched.omega_rad_s = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  enriched.shapes = t * solver.eigenvectors();
+  NormalizeSigns(enriched.shapes);
+  return enriched;
 }
 
 }  // namespace shockmap

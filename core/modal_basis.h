@@ -2,6 +2,7 @@
 // Mass-normalized modal basis of a finite-element beam, truncated at f_trunc (paper eqs. 6-7).
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "core/beam_fe.h"
 
@@ -23,5 +24,14 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz);
 
 // The first `n` modes regardless of frequency (all of them when n exceeds the model size).
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);
+
+// Static correction (code_aster's ENRI_STAT): adds to `basis` the static deflections K^-1 r
+// under a unit force along each of `force_rows` (e.g. DeflectionRow at the contact heights),
+// then diagonalizes again, so that the result is still mass-orthonormal and stiffness-orthogonal
+// with its modes below the truncation unchanged, and reproduces exactly the static response to
+// forces at those points. Deflections the basis already spans (to 1e-8) add nothing.
+// Precondition: the beam is supported (K nonsingular).
+ModalBasis WithStaticCorrection(const FeBeamModel& model, const ModalBasis& basis,
+                                const std::vector<Eigen::VectorXd>& force_rows);
 
 }  // namespace shockmap

@@ -27,6 +27,9 @@ struct SceneBeam {
   double spring_at_zero_n_per_m = 0.0;
   double spring_at_length_n_per_m = 0.0;
   double y_m = 0.0, z_m = 0.0;  // Position in the cross-section (for maps).
+  // This beam's own truncation, overriding the solver's: an absolute frequency or a ratio of
+  // its first elastic frequency.
+  std::optional<double> f_trunc_hz, r_ftrunc;
 };
 
 // A contact at one height: beam a against a stop fixed to the base (beam_b < 0) or against
@@ -69,18 +72,24 @@ struct StaticForceEffect {
   double At(double t_s) const;
 };
 
-// Initial state of one beam in one direction: its `mode` (1-based) scaled to `tip_m` at the free
-// end, and/or a uniform velocity.
+// Initial state of one beam in one direction, any combination of: its `mode` (1-based) scaled so
+// that its largest deflection is `tip_m`; the static deflection (in the retained basis) under a
+// force `static_force_n` at `height_m`; a uniform velocity.
 struct InitialStateEffect {
   int beam = 0;
   int direction = 0;  // 0: y, 1: z.
   int mode = 1;
   double tip_m = 0.0;
   double velocity_m_s = 0.0;
+  double static_force_n = 0.0;
+  double height_m = 0.0;
 };
 
 struct SceneSolver {
-  double r_ftrunc = 300.0;  // Of each beam's own first frequency.
+  double r_ftrunc = 300.0;           // Of each beam's own first elastic frequency, unless
+  std::optional<double> f_trunc_hz;  // an absolute truncation is given (beams may override).
+  // Static correction modes (ENRI_STAT) at the heights of every beam's zones.
+  bool static_correction = false;
   TimeStepRequest dt;
   double end_time_s = 0.0;
 };

@@ -1,6 +1,7 @@
 #include "core/scene_model.h"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <map>
@@ -31,12 +32,30 @@ struct BeamModes {
   }
 };
 
-std::string BasisKey(const SceneBeam& b, double r_ftrunc) {
+// The truncation of one beam: its own, or the solver's; absolute, or a ratio of f1.
+struct Truncation {
+  std::optional<double> hz;
+  double ratio = 0.0;
+
+  static Truncation Of(const SceneBeam& b, const SceneSolver& solver) {
+    if (b.f_trunc_hz) return {b.f_trunc_hz, 0.0};
+    if (b.r_ftrunc) return {std::nullopt, *b.r_ftrunc};
+    if (solver.f_trunc_hz) return {solver.f_trunc_hz, 0.0};
+    return {std::nullopt, solver.r_ftrunc};
+  }
+  double Hz(double f1_hz) const { return hz ? *hz : ratio * f1_hz; }
+};
+
+// Beams with equal keys share one modal basis.
+std::string BasisKey(const SceneBeam& b, const Truncation& t,
+                     const std::vector<double>& static_heights) {
   std::ostringstream key;
   key.precision(17);
   key << b.length_m << ' ' << b.ei_n_m2 << ' ' << b.rho_a_kg_per_m << ' ' << b.n_elements << ' '
       << ToString(b.at_zero) << ' ' << ToString(b.at_length) << ' ' << b.spring_at_zero_n_per_m
-      << ' ' << b.spring_at_length_n_per_m << ' ' << r_ftrunc;
+      << ' ' << b.spring_at_length_n_per_m << ' ' << (t.hz ? "hz " : "ratio ")
+      << (t.hz ? *t.hz : t.ratio);
+  for (double h : static_heights) key << ' ' << h;
   return key.str();
 }
 
@@ -59,23 +78,45 @@ double FirstElasticFrequencyHz(const FeBeamModel& fe) {
   return scale / (2.0 * std::numbers::pi);
 }
 
-BeamModes MakeModes(const SceneBeam& b, double r_ftrunc) {
+BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
+                    const std::vector<double>& static_heights) {
   BeamModes m;
   BeamProperties p{b.length_m, b.ei_n_m2, b.rho_a_kg_per_m};
   m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
   AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
   AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
-  m.f_trunc_hz = r_ftrunc * FirstElasticFrequencyHz(m.fe);
+  const double f1 = FirstElasticFrequencyHz(m.fe);
+  m.f_trunc_hz = truncation.Hz(f1);
   m.basis = ComputeModalBasis(m.fe, m.f_trunc_hz);
   if (m.basis.NumModes() == 0) m.basis = ComputeLowestModes(m.fe, 1);
+  if (!static_heights.empty()) {
+    std::vector<Eigen::VectorXd> rows;
+    for (double h : static_heights) rows.push_back(m.fe.DeflectionRow(h));
+    m.basis = WithStaticCorrection(m.fe, m.basis, rows);
+  }
   // Rigid-body modes have no stiffness: the solver's round-off would otherwise give them one.
   for (double& w : m.basis.omega_rad_s) {
-    if (w < 1e-6 * 2.0 * std::numbers::pi * m.f_trunc_hz / r_ftrunc) w = 0.0;
+    if (w < 1e-6 * 2.0 * std::numbers::pi * f1) w = 0.0;
   }
   Eigen::VectorXd translation = Eigen::VectorXd::Zero(m.fe.Size());
   for (int i = 0; i < m.fe.Size(); ++i) translation[i] = m.fe.global_dof[i] % 2 == 0 ? 1.0 : 0.0;
   m.participation = m.basis.shapes.transpose() * (m.fe.mass * translation);
   return m;
+}
+
+// Distinct heights of the zones touching each beam, when static correction is asked.
+std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
+  std::vector<std::vector<double>> heights(scene.beams.size());
+  if (!scene.solver.static_correction) return heights;
+  for (const SceneZone& z : scene.zones) {
+    heights[z.beam_a].push_back(z.height_m);
+    if (z.beam_b >= 0) heights[z.beam_b].push_back(z.height_m);
+  }
+  for (auto& h : heights) {
+    std::sort(h.begin(), h.end());
+    h.erase(std::unique(h.begin(), h.end()), h.end());
+  }
+  return heights;
 }
 
 double SharpOmegaSquared(const SceneModalSystem& system, const Eigen::VectorXd& omega) {
@@ -109,9 +150,14 @@ SceneModel BuildSceneModel(const Scene& scene) {
   std::map<std::string, std::shared_ptr<const BeamModes>> cache;
   std::vector<std::shared_ptr<const BeamModes>> modes;
   int n = 0;
-  for (const auto& b : scene.beams) {
-    auto& slot = cache[BasisKey(b, scene.solver.r_ftrunc)];
-    if (!slot) slot = std::make_shared<const BeamModes>(MakeModes(b, scene.solver.r_ftrunc));
+  const auto static_heights = StaticHeights(scene);
+  for (std::size_t i = 0; i < scene.beams.size(); ++i) {
+    const SceneBeam& b = scene.beams[i];
+    const Truncation truncation = Truncation::Of(b, scene.solver);
+    auto& slot = cache[BasisKey(b, truncation, static_heights[i])];
+    if (!slot) {
+      slot = std::make_shared<const BeamModes>(MakeModes(b, truncation, static_heights[i]));
+    }
     modes.push_back(slot);
     model.beam_offset.push_back(n);
     model.modes_per_beam.push_back(slot->N());
@@ -128,7 +174,9 @@ SceneModel BuildSceneModel(const Scene& scene) {
     for (int d = 0; d < dirs; ++d) {
       omega.segment(block(static_cast<int>(b), d), modes[b]->N()) = modes[b]->basis.omega_rad_s;
     }
-    f_trunc_max = std::max(f_trunc_max, modes[b]->f_trunc_hz);
+    // Static correction modes may lie above the truncation.
+    f_trunc_max =
+        std::max({f_trunc_max, modes[b]->f_trunc_hz, modes[b]->basis.HighestFrequencyHz()});
   }
 
   std::optional<Eigen::VectorXd> damping;
@@ -212,6 +260,15 @@ SceneModel BuildSceneModel(const Scene& scene) {
         }
       }
       model.x0[offset + s.mode - 1] = s.tip_m / shape[at];
+    }
+    if (s.static_force_n != 0.0) {
+      // q_i = phi_i(h) F / omega_i^2: the static deflection projected on the retained modes
+      // (exact at the zones' heights with static correction).
+      const auto phi = m.At(s.height_m);
+      for (int i = 0; i < m.N(); ++i) {
+        assert(m.basis.omega_rad_s[i] > 0.0 && "a static load needs a supported beam");
+        model.x0[offset + i] += phi[i] * s.static_force_n / std::pow(m.basis.omega_rad_s[i], 2);
+      }
     }
     if (s.velocity_m_s != 0.0) {
       model.v0.segment(offset, m.N()) += s.velocity_m_s * m.participation;

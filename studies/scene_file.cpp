@@ -92,6 +92,10 @@ SceneBeam ParseBeamProperties(JsonObjectReader& r) {
     r.Fail("end_springs_n_per_m", "springs must be >= 0");
   b.spring_at_zero_n_per_m = springs.first;
   b.spring_at_length_n_per_m = springs.second;
+  if (r.Has("r_ftrunc") && r.Has("f_trunc_hz"))
+    r.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
+  if (r.Has("r_ftrunc")) b.r_ftrunc = InRange(r, "r_ftrunc", 0.0, 1.0, 1e5);
+  if (r.Has("f_trunc_hz")) b.f_trunc_hz = Positive(r, "f_trunc_hz", 1e7);
   if (b.at_zero == EndCondition::kFree && b.at_length == EndCondition::kFree &&
       springs.first == 0 && springs.second == 0) {
     r.Fail("ends", "a free-free beam without end springs has rigid-body modes and no support");
@@ -495,6 +499,8 @@ Scene LoadScene(const std::string& path) {
       if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
       init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
       init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
+      init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+      if (init.static_force_n != 0.0) init.height_m = Height(scene, s, init.beam);
       scene.initial_state.push_back(init);
     });
     e.Finish();
@@ -503,7 +509,14 @@ Scene LoadScene(const std::string& path) {
   const Json* solver = r.Get("solver");
   if (solver == nullptr) r.Fail("solver", "required object is missing");
   JsonObjectReader s(*solver, path, "solver");
+  if (s.Has("r_ftrunc") && s.Has("f_trunc_hz"))
+    s.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
   scene.solver.r_ftrunc = InRange(s, "r_ftrunc", scene.solver.r_ftrunc, 1.0, 1e5);
+  if (s.Has("f_trunc_hz")) scene.solver.f_trunc_hz = Positive(s, "f_trunc_hz", 1e7);
+  if (const Json* v = s.Get("static_correction")) {
+    if (!v->is_boolean()) s.Fail("static_correction", "expected true or false, got " + Shown(*v));
+    scene.solver.static_correction = v->get<bool>();
+  }
   scene.solver.end_time_s = Positive(s, "end_time_s", 1e4);
   if (const Json* dt = s.Get("dt")) {
     JsonObjectReader d(*dt, path, s.PathOf("dt"));
