@@ -104,11 +104,12 @@ struct ObservedPoint {
 // Nothing unrequested is recorded.
 struct SceneOutputs {
   std::vector<ObservedPoint> displacements;
-  bool contact_forces = false;  // Force history of every zone.
+  bool contact_forces = false;  // Force histories: of these zones, or of every zone if empty.
+  std::vector<int> contact_force_zones;
   bool energies = false;
   bool max_contact_force = false;  // Per zone, over the whole run.
-  bool shocks = false;             // Per-zone shock statistics (needs the force histories).
-  double rest_duration_s = 0.0;    // Shock grouping; required with shocks.
+  bool shocks = false;  // Shock statistics of the zones whose force histories are recorded.
+  double rest_duration_s = 0.0;  // Shock grouping; required with shocks.
   int record_stride = 1;
 };
 

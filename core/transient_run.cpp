@@ -42,7 +42,9 @@ struct Recorder {
     init(result.displacement_m, options.observed_rows.size());
     init(result.velocity_m_s, options.observed_rows.size());
     if (options.record_contact_forces) {
-      init(result.contact_force_n, system.LastContactForces().size());
+      init(result.contact_force_n, options.recorded_contacts.empty()
+                                       ? system.LastContactForces().size()
+                                       : options.recorded_contacts.size());
     }
     if (options.record_energy) {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
@@ -60,8 +62,14 @@ struct Recorder {
     }
     if (options.record_contact_forces) {
       const auto forces = system.LastContactForces();
-      for (std::size_t c = 0; c < forces.size(); ++c) {
-        result.contact_force_n[c].values.push_back(forces[c]);
+      if (options.recorded_contacts.empty()) {
+        for (std::size_t c = 0; c < forces.size(); ++c) {
+          result.contact_force_n[c].values.push_back(forces[c]);
+        }
+      } else {
+        for (std::size_t c = 0; c < options.recorded_contacts.size(); ++c) {
+          result.contact_force_n[c].values.push_back(forces[options.recorded_contacts[c]]);
+        }
       }
     }
     if (options.record_energy) {

@@ -30,7 +30,9 @@ struct TransientOptions {
   // Refused above this: 1e8 steps of a few modes is minutes; more is a units mistake.
   std::int64_t max_steps = 100'000'000;
   bool record_energy = true;
-  bool record_contact_forces = true;  // A force history per contact.
+  bool record_contact_forces = true;  // A force history per contact, or
+  // only for these contacts (indices into the system's contacts) when not empty.
+  std::vector<int> recorded_contacts;
   // The largest force of each contact over the run, from every step (cheap: no history kept).
   bool track_max_contact_force = false;
   // Displacement and velocity histories are recorded at each of these points (row . x).
@@ -61,11 +63,12 @@ struct EnergyHistory {
 
 struct TransientResult {
   RunSummary summary;
-  std::vector<UniformSignal> displacement_m;   // One per observed row.
-  std::vector<UniformSignal> velocity_m_s;     // One per observed row.
-  std::vector<UniformSignal> contact_force_n;  // One per contact, when recorded.
-  std::vector<double> max_contact_force_n;     // One per contact, when tracked.
-  EnergyHistory energy;                        // Empty unless record_energy.
+  std::vector<UniformSignal> displacement_m;  // One per observed row.
+  std::vector<UniformSignal> velocity_m_s;    // One per observed row.
+  // One per contact (or per recorded_contacts entry), when recorded.
+  std::vector<UniformSignal> contact_force_n;
+  std::vector<double> max_contact_force_n;  // One per contact, when tracked.
+  EnergyHistory energy;                     // Empty unless record_energy.
 };
 
 // Precondition: options.IsValid(). Histories start with the initial state at t = 0 and hold

@@ -1,5 +1,6 @@
 #include "studies/scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -382,8 +383,9 @@ void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
 
 }  // namespace
 
-Scene LoadScene(const std::string& path) {
-  const Json json = ReadJsonFile(path);
+Scene LoadScene(const std::string& path) { return ParseScene(ReadJsonFile(path), path); }
+
+Scene ParseScene(const nlohmann::json& json, const std::string& path) {
   Scene scene;
   JsonObjectReader r(json, path, "");
   scene.name = r.RequiredString("name");
@@ -557,7 +559,21 @@ Scene LoadScene(const std::string& path) {
       if (v != nullptr && !v->is_boolean()) o.Fail(key, "expected true or false, got " + Shown(*v));
       return v != nullptr && v->get<bool>();
     };
-    scene.outputs.contact_forces = flag("contact_forces");
+    if (const Json* v = o.Get("contact_forces"); v != nullptr && v->is_array()) {
+      // Zone names: only their histories.
+      scene.outputs.contact_forces = true;
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
+        if (!(*v)[i].is_string()) FailAt(path, at, "expected a zone name, got " + Shown((*v)[i]));
+        const std::string name = (*v)[i].get<std::string>();
+        const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
+                                       [&](const SceneZone& z) { return z.name == name; });
+        if (zone == scene.zones.end()) FailAt(path, at, "no zone named \"" + name + "\"");
+        scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
+      }
+    } else {
+      scene.outputs.contact_forces = flag("contact_forces");
+    }
     scene.outputs.energies = flag("energies");
     scene.outputs.max_contact_force = flag("max_contact_force");
     if (const Json* shocks = o.Get("shocks")) {

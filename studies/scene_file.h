@@ -2,6 +2,7 @@
 // Scene files (JSON, in scenes/): beams, contact zones, effects, solver, outputs, and bundle
 // generators that expand a row or a hexagonal bundle of pins in its wrapper into beams and zones.
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/scene.h"
@@ -12,5 +13,8 @@ namespace shockmap {
 // and what is allowed: unknown keys, wrong types, references to beams that do not exist, gaps or
 // stiffnesses out of range, a bad CSV load history (named with its line).
 Scene LoadScene(const std::string& path);
+
+// The same for a scene already read; `path` names it in messages and locates its CSV files.
+Scene ParseScene(const nlohmann::json& json, const std::string& path);
 
 }  // namespace shockmap

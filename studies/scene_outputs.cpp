@@ -22,8 +22,11 @@ Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
                {"height_m", z.height_m},
                {"position_m", {z.y_m, z.z_m}}};
   if (!run.max_contact_force_n.empty()) zone["max_force_n"] = run.max_contact_force_n[i];
-  if (!run.shocks.empty()) {
-    const auto& shocks = run.shocks[i];
+  const auto recorded =
+      std::find(run.recorded_zones.begin(), run.recorded_zones.end(), static_cast<int>(i));
+  if (!run.shocks.empty() && recorded != run.recorded_zones.end()) {
+    const auto& shocks =
+        run.shocks[static_cast<std::size_t>(recorded - run.recorded_zones.begin())];
     double impulse = 0.0, peak = 0.0;
     int rebounds = 0;
     for (const Shock& s : shocks) {
@@ -108,7 +111,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
   }
   if (!r.contact_force_n.empty()) {
     std::string header = "t_s";
-    for (const auto& z : scene.zones) header += "," + CsvField(z.name + "_n");
+    for (int z : run.recorded_zones) header += "," + CsvField(scene.zones[z].name + "_n");
     WriteCsv(
         dir / "contact_forces.csv", header, r.contact_force_n[0].values.size(),
         [&](std::ofstream& out, std::size_t i) {
@@ -145,7 +148,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
   if (!run.shocks.empty()) {
     std::vector<std::pair<std::size_t, const Shock*>> rows;
     for (std::size_t i = 0; i < run.shocks.size(); ++i) {
-      for (const Shock& s : run.shocks[i]) rows.emplace_back(i, &s);
+      for (const Shock& s : run.shocks[i]) rows.emplace_back(run.recorded_zones[i], &s);
     }
     WriteCsv(
         dir / "shocks.csv",

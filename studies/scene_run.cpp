@@ -25,7 +25,10 @@ void CheckAffordable(const Scene& scene, const TransientOptions& options,
   }
   const double records = std::ceil(options.end_time_s / options.dt_s) / options.record_stride + 1;
   double series = 2.0 * static_cast<double>(options.observed_rows.size());
-  if (options.record_contact_forces) series += static_cast<double>(scene.zones.size());
+  if (options.record_contact_forces) {
+    series += static_cast<double>(
+        options.recorded_contacts.empty() ? scene.zones.size() : options.recorded_contacts.size());
+  }
   if (options.record_energy) series += 5.0;
   if (records * series * sizeof(double) > kMaxRecordedBytes) {
     throw InputError(fmt::format(
@@ -56,6 +59,7 @@ SceneRun RunScene(const Scene& scene) {
   options.record_stride = out.record_stride;
   options.record_energy = out.energies;
   options.record_contact_forces = out.contact_forces || out.shocks;
+  options.recorded_contacts = out.contact_force_zones;
   options.track_max_contact_force = out.max_contact_force;
   options.observed_rows = std::move(model.observed_rows);
   CheckAffordable(scene, options, model.bounds);
@@ -63,6 +67,13 @@ SceneRun RunScene(const Scene& scene) {
                             model.v0, options);
 
   if (out.max_contact_force) run.max_contact_force_n = run.result.max_contact_force_n;
+  if (options.record_contact_forces) {
+    run.recorded_zones = out.contact_force_zones;
+    if (run.recorded_zones.empty()) {
+      for (std::size_t i = 0; i < scene.zones.size(); ++i)
+        run.recorded_zones.push_back(static_cast<int>(i));
+    }
+  }
   if (out.shocks) {
     ShockSegmentationOptions segmentation;
     segmentation.rest_duration_s = out.rest_duration_s;
@@ -71,7 +82,7 @@ SceneRun RunScene(const Scene& scene) {
           SegmentShocks(force, segmentation, std::numeric_limits<double>::infinity()));
     }
     // The shocks needed the force histories; they are kept only if requested themselves.
-    if (!out.contact_forces) run.result.contact_force_n.clear();
+    if (!out.contact_forces) run.result.contact_force_n.clear(), run.recorded_zones.clear();
   }
   return run;
 }

@@ -19,9 +19,11 @@ struct SceneRun {
   double build_wall_s = 0.0;  // Assembling the FE models and modal bases.
 
   TransientResult result;  // Histories as requested; summary always.
-  // Per zone, when requested (empty otherwise): the largest force over every step, and the
-  // shocks of its force history.
+  // Per zone, when requested (empty otherwise): the largest force over every step.
   std::vector<double> max_contact_force_n;
+  // The zones whose force histories were recorded (result.contact_force_n, in this order), and
+  // when requested the shocks of each.
+  std::vector<int> recorded_zones;
   std::vector<std::vector<Shock>> shocks;
 };
 
