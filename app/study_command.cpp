@@ -7,7 +7,9 @@
 
 #include "db/read_only_query.h"
 #include "db/study_database.h"
+#include "studies/json_reader.h"
 #include "studies/query_output.h"
+#include "studies/scene_study_runner.h"
 #include "studies/study_runner.h"
 
 namespace shockmap {
@@ -23,12 +25,23 @@ struct StudyFlags {
 };
 
 void Run(const StudyFlags& f) {
-  const StudySpec spec = LoadStudySpec(f.spec_path);  // Before the database is touched.
   StudyRunOptions options = f.run;
   options.progress = !f.quiet;
-  const StudyRunSummary s = RunStudy(spec, options);
+  // The whole file is checked before the database is touched.
+  const nlohmann::json json = ReadJsonFile(f.spec_path);
+  std::string name;
+  StudyRunSummary s;
+  if (IsSceneStudy(json)) {
+    const SceneStudySpec spec = ParseSceneStudySpec(json, f.spec_path);
+    name = spec.name;
+    s = RunSceneStudy(spec, options);
+  } else {
+    const StudySpec spec = ParseStudySpec(json, f.spec_path);
+    name = spec.name;
+    s = RunStudy(spec, options);
+  }
   const double rate = s.point_wall_s > 0 ? s.points_computed / s.point_wall_s : 0.0;
-  fmt::print("study {}: {} points in the study, {} computed now ({} jobs)\n", spec.name,
+  fmt::print("study {}: {} points in the study, {} computed now ({} jobs)\n", name,
              s.points_in_study, s.points_computed, s.jobs);
   fmt::print("  outcomes     ok {}, diverged {}, failed {}, reference_unconverged {}\n", s.ok,
              s.diverged, s.failed, s.reference_unconverged);
@@ -53,7 +66,9 @@ void Status(const StudyFlags& f) {
       "sum(p.status = 'reference_unconverged') AS reference_unconverged, "
       "sum(p.status = 'pending') AS pending, sum(p.status = 'running') AS running, "
       "max(p.updated_utc) AS last_update "
-      "FROM points p JOIN studies st USING (study_id) GROUP BY st.name ORDER BY st.name";
+      "FROM (SELECT study_id, status, updated_utc FROM points UNION ALL "
+      "SELECT study_id, status, updated_utc FROM scene_points) p "
+      "JOIN studies st USING (study_id) GROUP BY st.name ORDER BY st.name";
   QueryResult r = RunReadOnlyQuery(f.run.database_path, sql);
   if (!f.study.empty()) {
     std::erase_if(r.rows,
@@ -92,10 +107,10 @@ void AddStudyCommand(CLI::App& app) {
 
 void AddQueryCommand(CLI::App& app) {
   auto flags = std::make_shared<StudyFlags>();
-  CLI::App* query = app.add_subcommand(
-      "query",
-      "Run one read-only SQL statement on the database (the view `results` joins "
-      "parameters, scores and references)");
+  CLI::App* query =
+      app.add_subcommand("query",
+                         "Run one read-only SQL statement on the database (the views `results` and "
+                         "`scene_results` join parameters, scores and references)");
   query->add_option("SQL", flags->sql, "one SELECT (or other read-only) statement")->required();
   query->add_option("--db", flags->run.database_path, "study database (SQLite)")
       ->capture_default_str();

@@ -109,6 +109,68 @@ LEFT JOIN scores sc ON sc.point_id = p.point_id
 LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 1 -> 2: studies of scene files. A point is the scene with some numeric parameters set
+    // (parameters_json: {"solver.r_ftrunc": 30, ...}); it is scored against the same scene run
+    // with the study's reference settings.
+    R"sql(
+CREATE TABLE scene_references (
+  reference_id     INTEGER PRIMARY KEY,
+  reference_key    TEXT NOT NULL UNIQUE,
+  parameters_json  TEXT NOT NULL,
+  status           TEXT NOT NULL,
+  message          TEXT NOT NULL,
+  output_dt_s      REAL NOT NULL,
+  displacement_m   BLOB NOT NULL,
+  force_n          BLOB NOT NULL,
+  steps            INTEGER NOT NULL,
+  wall_s           REAL NOT NULL,
+  max_energy_ratio REAL NOT NULL,
+  run_id           INTEGER REFERENCES runs(run_id),
+  created_utc      TEXT NOT NULL
+);
+CREATE TABLE scene_points (
+  point_id                INTEGER PRIMARY KEY,
+  study_id                INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key               TEXT NOT NULL,
+  reference_key           TEXT NOT NULL,
+  parameters_json         TEXT NOT NULL,
+  status                  TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'failed', 'reference_unconverged')),
+  message                 TEXT NOT NULL DEFAULT '',
+  run_id                  INTEGER REFERENCES runs(run_id),
+  updated_utc             TEXT NOT NULL,
+  reference_id            INTEGER REFERENCES scene_references(reference_id),
+  err                     REAL,
+  srf                     REAL,
+  coordinates             INTEGER,
+  zones                   INTEGER,
+  dt_used_s               REAL,
+  dt_paper_s              REAL,
+  dt_sharp_s              REAL,
+  steps                   INTEGER,
+  wall_s                  REAL,
+  cpu_s                   REAL,
+  max_energy_ratio        REAL,
+  largest_force_n         REAL,
+  largest_force_zone      TEXT,
+  n_shocks                INTEGER,
+  first_shock_peak_n      REAL,
+  first_shock_impulse_n_s REAL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, ru.host, p.updated_utc
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);

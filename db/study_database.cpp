@@ -116,10 +116,20 @@ void StudyDatabase::EndRun(std::int64_t run_id) {
       .Run();
 }
 
-int StudyDatabase::ReclaimStalePoints(std::int64_t study_id, const std::string& host) {
+namespace {
+
+std::string TableName(PointTable table) {
+  return table == PointTable::kScene ? "scene_points" : "points";
+}
+
+}  // namespace
+
+int StudyDatabase::ReclaimStalePoints(std::int64_t study_id, const std::string& host,
+                                      PointTable table) {
   Statement running = db_.Prepare(
-      "SELECT DISTINCT ru.run_id, ru.host, ru.pid, ru.ended_utc IS NOT NULL FROM points p "
-      "JOIN runs ru ON ru.run_id = p.run_id WHERE p.study_id = ? AND p.status = 'running'");
+      "SELECT DISTINCT ru.run_id, ru.host, ru.pid, ru.ended_utc IS NOT NULL FROM " +
+      TableName(table) +
+      " p JOIN runs ru ON ru.run_id = p.run_id WHERE p.study_id = ? AND p.status = 'running'");
   running.Bind(1, study_id);
   std::vector<std::int64_t> stale_runs;
   while (running.Step()) {
@@ -131,9 +141,9 @@ int StudyDatabase::ReclaimStalePoints(std::int64_t study_id, const std::string& 
   }
   int reclaimed = 0;
   Transaction t(db_);
-  Statement reset = db_.Prepare(
-      "UPDATE points SET status = 'pending', updated_utc = ? "
-      "WHERE study_id = ? AND status = 'running' AND run_id = ?");
+  Statement reset = db_.Prepare("UPDATE " + TableName(table) +
+                                " SET status = 'pending', updated_utc = ? "
+                                "WHERE study_id = ? AND status = 'running' AND run_id = ?");
   for (auto run_id : stale_runs) {
     reset.Bind(1, UtcNow()).Bind(2, study_id).Bind(3, run_id);
     reset.Run();
@@ -172,11 +182,12 @@ std::vector<PointRow> StudyDatabase::PointsToCompute(std::int64_t study_id, bool
   return rows;
 }
 
-void StudyDatabase::MarkRunning(const std::vector<std::int64_t>& point_ids, std::int64_t run_id) {
+void StudyDatabase::MarkRunning(const std::vector<std::int64_t>& point_ids, std::int64_t run_id,
+                                PointTable table) {
   Transaction t(db_);
-  Statement s = db_.Prepare(
-      "UPDATE points SET status = 'running', run_id = ?, message = '', updated_utc = ? "
-      "WHERE point_id = ?");
+  Statement s = db_.Prepare("UPDATE " + TableName(table) +
+                            " SET status = 'running', run_id = ?, message = '', updated_utc = ? "
+                            "WHERE point_id = ?");
   const std::string now = UtcNow();
   for (auto id : point_ids) {
     s.Bind(1, run_id).Bind(2, now).Bind(3, id);
@@ -297,7 +308,8 @@ std::int64_t StudyDatabase::StoreReference(const ReferenceRow& r, std::int64_t r
 
 std::vector<StatusCount> StudyDatabase::CountByStatus(const std::optional<std::string>& study) {
   Statement s = db_.Prepare(
-      "SELECT st.name, p.status, count(*) FROM points p JOIN studies st USING (study_id) "
+      "SELECT st.name, p.status, count(*) FROM (SELECT study_id, status FROM points UNION ALL "
+      "SELECT study_id, status FROM scene_points) p JOIN studies st USING (study_id) "
       "WHERE ? IS NULL OR st.name = ? GROUP BY st.name, p.status ORDER BY st.name, p.status");
   s.Bind(1, study).Bind(2, study);
   std::vector<StatusCount> counts;

@@ -74,6 +74,9 @@ struct StatusCount {
   std::int64_t count = 0;
 };
 
+// Points of the canonical problem's studies, or of scene studies (db/scene_points.h).
+enum class PointTable { kCanonical, kScene };
+
 class StudyDatabase {
  public:
   // Opens or creates `path` in WAL mode and migrates it. Throws DbError (see MigrateToCurrent).
@@ -90,10 +93,12 @@ class StudyDatabase {
   void EndRun(std::int64_t run_id);
   // Points left 'running' by a process of this host that no longer exists (or by a run that
   // ended) go back to 'pending'. Returns how many.
-  int ReclaimStalePoints(std::int64_t study_id, const std::string& host);
+  int ReclaimStalePoints(std::int64_t study_id, const std::string& host,
+                         PointTable table = PointTable::kCanonical);
   // 'pending' points (and 'failed' ones when retry_failed), in point_id order.
   std::vector<PointRow> PointsToCompute(std::int64_t study_id, bool retry_failed);
-  void MarkRunning(const std::vector<std::int64_t>& point_ids, std::int64_t run_id);
+  void MarkRunning(const std::vector<std::int64_t>& point_ids, std::int64_t run_id,
+                   PointTable table = PointTable::kCanonical);
   // Final status of a point, with its score when it was computed; one transaction.
   void StoreResult(std::int64_t point_id, std::int64_t run_id, const std::string& status,
                    const std::string& message, const std::optional<ScoreRow>& score);

@@ -73,6 +73,10 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
 void CheckSettingsUnchanged(StudyDatabase& db, const StudySpec& spec) {
   const auto stored = db.StoredSpec(spec.name);
   if (!stored) return;
+  if (nlohmann::json::parse(*stored).contains("scene")) {
+    throw InputError(spec.file + ": study \"" + spec.name + "\" already exists in " +
+                     db.Raw().Path() + " as a scene study; give this one a new name");
+  }
   const StudySpec previous = ParseStudySpec(nlohmann::json::parse(*stored), db.Raw().Path());
   if (SettingsKey(previous) != SettingsKey(spec)) {
     throw InputError(spec.file + ": study \"" + spec.name + "\" already exists in " +

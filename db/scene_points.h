@@ -1,0 +1,58 @@
+#pragma once
+// The points and references of scene studies in the study database (schema version 2): written
+// by the one StudyDatabase writer, one transaction per call.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "db/study_database.h"
+
+namespace shockmap {
+
+struct ScenePointRow {
+  std::int64_t point_id = 0;
+  std::string point_key;        // Identifies the point within its study.
+  std::string reference_key;    // Equal keys share one reference, across studies.
+  std::string parameters_json;  // {"solver.r_ftrunc": 30, ...}
+};
+
+struct SceneScoreRow {
+  std::int64_t reference_id = 0;
+  std::optional<double> err, srf;
+  int coordinates = 0, zones = 0;
+  double dt_used_s = 0.0, dt_paper_s = 0.0, dt_sharp_s = 0.0;
+  std::int64_t steps = 0;
+  double wall_s = 0.0, cpu_s = 0.0, max_energy_ratio = 0.0;
+  double largest_force_n = 0.0;
+  std::string largest_force_zone;
+  int n_shocks = 0;  // Of the scored zone.
+  std::optional<double> first_shock_peak_n, first_shock_impulse_n_s;
+};
+
+struct SceneReferenceRow {
+  std::int64_t reference_id = 0;
+  std::string reference_key, parameters_json, status, message;
+  double output_dt_s = 0.0;
+  std::vector<double> displacement_m, force_n;  // The scored point and zone, from t = 0.
+  std::int64_t steps = 0;
+  double wall_s = 0.0, max_energy_ratio = 0.0;
+};
+
+// Inserts the points not yet in the study as 'pending'; returns how many were new.
+int AddScenePoints(StudyDatabase& db, std::int64_t study_id,
+                   const std::vector<ScenePointRow>& points);
+// 'pending' points (and 'failed' ones when retry_failed), in point_id order.
+std::vector<ScenePointRow> ScenePointsToCompute(StudyDatabase& db, std::int64_t study_id,
+                                                bool retry_failed);
+// Final status of a point, with its score when it was computed.
+void StoreSceneResult(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
+                      const std::string& status, const std::string& message,
+                      const std::optional<SceneScoreRow>& score);
+std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key);
+// Stores a new reference and returns its id.
+std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& reference,
+                                 std::int64_t run_id);
+
+}  // namespace shockmap
