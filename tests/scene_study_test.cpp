@@ -82,6 +82,15 @@ TEST_F(SceneStudy, SweepIsScoredStoredAndResumed) {
   EXPECT_LT(rows[1]["err"].get<double>(), rows[0]["err"].get<double>());
 }
 
+TEST_F(SceneStudy, ShippedBundleStudyRunsEveryPoint) {
+  const auto r = RunShockmap("study run --quiet " + std::string(SHOCKMAP_SOURCE_DIR) +
+                             "/studies/bundle_row_truncation.json --db " + Path("s.db"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("16 points in the study, 16 computed now"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("ok 16"), std::string::npos) << r.output;
+}
+
 TEST_F(SceneStudy, BadStudiesAreRefusedBeforeTheDatabaseIsTouched) {
   const std::vector<std::pair<std::function<void(Json&)>, std::string>> cases = {
       {[](Json& s) {
