@@ -134,17 +134,20 @@ std::shared_ptr<Configuration> MakeConfiguration(const CantileverImpact& problem
 }
 
 // First tau in (0, tau_max] where the tip leaves the phase's side of the gap, or nullopt.
-// Samples that start on the wrong side (the projection on a truncated basis puts the tip a
-// hair off the gap) are skipped until the tip is inside; if it never gets inside within one
-// shortest period the phase is a graze and ends at once (tau = 0).
+// A phase that starts inside is watched from its first instant (step / 1000), so that a
+// re-contact shorter than one sample right after a transition is bracketed too. A phase that
+// starts on the wrong side (the projection on a truncated basis puts the tip a hair off the
+// gap) is watched from the first sample inside; if none comes within one shortest period the
+// phase is a graze and ends at once (tau = 0).
 std::optional<double> FindExit(const Configuration& c, const ReferencePhase& p, double gap,
                                double step, double tau_max) {
   auto s = [&](double tau) { return c.Tip(p, tau) - gap; };
   auto inside = [&](double v) { return p.in_contact ? v < 0.0 : v > 0.0; };
   auto outside = [&](double v) { return p.in_contact ? v > 0.0 : v < 0.0; };
   const double grace = 16.0 * step;
-  bool seen_inside = false;
-  double prev = 0.0;
+  const double first = std::min(1e-3 * step, tau_max);
+  bool seen_inside = inside(s(first));
+  double prev = seen_inside ? first : 0.0;
   for (long k = 1;; ++k) {
     const double tau = std::min(static_cast<double>(k) * step, tau_max);
     const double v = s(tau);
