@@ -51,11 +51,11 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
     }
     data << "\n\n";
     const bool is_implicit = key.first == "implicit";
-    auto clause = [&](int column) {
+    auto clause = [&, &title = curve.title](int column) {
       return fmt::format(
           "'{}' index {} using 1:{} with linespoints lw 2 pt {} ps 1.3 {} title '{}'",
           data_file.string(), index, column, is_implicit ? 8 : 7,
-          is_implicit ? "dt 2 lc rgb '#000000'" : "", curve.title);
+          is_implicit ? "dt 2 lc rgb '#000000'" : "", title);
     };
     err_plot += (err_plot.empty() ? "" : ", ") + clause(2);
     srf_plot += (srf_plot.empty() ? "" : ", ") + clause(3);

@@ -1,12 +1,22 @@
 #include "studies/json_reader.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace shockmap {
 
 nlohmann::json ReadJsonFile(const std::string& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(path + ": no such file");
+  if (!std::filesystem::is_regular_file(status)) throw InputError(path + ": not a regular file");
+  // Refused before reading: no scene or study comes near this; a device or a dump might.
+  constexpr std::uintmax_t kMaxBytes = 64u << 20;
+  if (std::filesystem::file_size(path, ec) > kMaxBytes) {
+    throw InputError(path + ": larger than 64 MiB; not a scene or study file");
+  }
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the file");
   std::stringstream text;

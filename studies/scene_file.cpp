@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/transient_run.h"
+#include "studies/acceleration_csv.h"
 #include "studies/json_reader.h"
 
 namespace shockmap {
@@ -245,6 +246,14 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
     }
   }
 
+  // Refused before anything is generated: at most 6 zones per pin and height.
+  const double zones = 6.0 * static_cast<double>(positions.size()) * heights.size();
+  if (zones > kMaxZones) {
+    FailAt(file, "bundle",
+           std::to_string(positions.size()) + " pins with " + std::to_string(heights.size()) +
+               " wire heights would make up to " + Shown(Json(zones)) + " zones: at most " +
+               std::to_string(kMaxZones) + " are allowed");
+  }
   const int first = static_cast<int>(scene.beams.size());
   wrapper.name = "wrapper";
   scene.beams.push_back(wrapper);
@@ -302,53 +311,14 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   scene.zones.insert(scene.zones.end(), wall_zones.begin(), wall_zones.end());
 }
 
-// t_s,a_m_s2 rows with a header, times strictly increasing, every value finite.
 void LoadAccelerationCsv(const std::filesystem::path& csv, const std::string& where,
                          BaseMotionEffect& base) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(csv, ec))
+    FailAt(where, "effects.base_motion.csv", csv.string() + " is not a regular file");
   std::ifstream in(csv);
   if (!in) FailAt(where, "effects.base_motion.csv", "cannot open " + csv.string());
-  std::string line;
-  int number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (number == 1) {
-      if (line != "t_s,a_m_s2")
-        FailAt(csv.string(), "line 1",
-               "expected the header \"t_s,a_m_s2\", got \"" + line.substr(0, 60) + "\"");
-      continue;
-    }
-    if (line.empty()) continue;
-    std::istringstream fields(line);
-    std::string t_text, a_text, extra;
-    if (!std::getline(fields, t_text, ',') || !std::getline(fields, a_text, ',') ||
-        std::getline(fields, extra, ',')) {
-      FailAt(csv.string(), "line " + std::to_string(number),
-             "expected two values \"t,a\", got \"" + line.substr(0, 60) + "\"");
-    }
-    double t = 0, a = 0;
-    try {
-      std::size_t used_t = 0, used_a = 0;
-      t = std::stod(t_text, &used_t);
-      a = std::stod(a_text, &used_a);
-      if (used_t != t_text.size() || used_a != a_text.size())
-        throw std::invalid_argument("trailing");
-    } catch (const std::exception&) {
-      FailAt(csv.string(), "line " + std::to_string(number),
-             "not two numbers: \"" + line.substr(0, 60) + "\"");
-    }
-    if (!std::isfinite(t) || !std::isfinite(a))
-      FailAt(csv.string(), "line " + std::to_string(number), "values must be finite");
-    if (!base.table_t_s.empty() && t <= base.table_t_s.back()) {
-      FailAt(csv.string(), "line " + std::to_string(number), "times must increase strictly");
-    }
-    if (base.table_t_s.size() >= 10'000'000)
-      FailAt(csv.string(), "line " + std::to_string(number), "more than 1e7 rows");
-    base.table_t_s.push_back(t);
-    base.table_a_m_s2.push_back(a);
-  }
-  if (base.table_t_s.size() < 2)
-    FailAt(csv.string(), "(file)", "needs at least two rows after the header");
+  ParseAccelerationCsv(in, csv.string(), base);
 }
 
 int BeamIndex(const Scene& scene, JsonObjectReader& r, const std::string& key) {
