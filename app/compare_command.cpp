@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/flag_checks.h"
+#include "core/transient_run.h"
 #include "studies/comparison.h"
 #include "studies/comparison_json.h"
 #include "studies/comparison_plot.h"
@@ -75,6 +76,13 @@ void Run(const CompareFlags& flags) {
   f.options.scheme = *SchemeFromString(f.scheme);
   std::string error;
   if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
+  if (const auto max_steps = TransientOptions{}.max_steps;
+      f.options.dt.dt_s && f.options.window_s / *f.options.dt.dt_s > max_steps) {
+    throw InputError(fmt::format("--dt: {:g} s over the {:g} s window is {:.3g} steps; at most {} "
+                                 "are allowed",
+                                 *f.options.dt.dt_s, f.options.window_s,
+                                 f.options.window_s / *f.options.dt.dt_s, max_steps));
+  }
 
   const ComparisonResult result = RunComparison(f.problem, f.options);
   if (f.json) {

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "app/compare_command.h"
 #include "app/criteria_command.h"
@@ -25,6 +26,20 @@ int main(int argc, char** argv) {
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddViewCommands(app);
+  // CLI11 would only say that a subcommand is required.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found = found || sub->get_name() == argv[1];
+    }
+    if (!found) {
+      std::cerr << "shockmap: error: unknown command \"" << argv[1] << "\"; use one of " << known
+                << '\n';
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

@@ -218,13 +218,15 @@ void CheckSchema(Connection& db) {
 }
 
 void MigrateToCurrent(Connection& db) {
-  for (int version = CheckedVersion(db); version < kSchemaVersion; ++version) {
-    Transaction t(db);
-    db.Execute(kMigrations[version]);
-    db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
-    db.Execute("PRAGMA user_version = " + std::to_string(version + 1));
-    t.Commit();
-  }
+  const int from = CheckedVersion(db);
+  if (from == kSchemaVersion) return;
+  // All pending migrations in one transaction: a process killed midway leaves the file as it
+  // was, never at an intermediate version.
+  Transaction t(db);
+  for (int version = from; version < kSchemaVersion; ++version) db.Execute(kMigrations[version]);
+  db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
+  db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
+  t.Commit();
 }
 
 }  // namespace shockmap

@@ -9,7 +9,7 @@ inline constexpr int kSchemaVersion = 2;
 // PRAGMA application_id of every shockmap database ("SHMP"): tells ours from a foreign file.
 inline constexpr int kApplicationId = 0x53484D50;
 
-// Brings a database to kSchemaVersion, each migration in its own transaction. A new, empty
+// Brings a database to kSchemaVersion, all pending migrations in one transaction. A new, empty
 // file is initialized. Throws DbError without modifying the file when it is not a shockmap
 // database (foreign application id or foreign tables), was written by a newer shockmap
 // (user_version > kSchemaVersion), or fails PRAGMA quick_check.

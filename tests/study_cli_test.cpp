@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <thread>
 
 #include "db/read_only_query.h"
@@ -61,6 +62,19 @@ std::int64_t Count(const std::string& db, const std::string& sql) {
   return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
 }
 
+// `shockmap study run SPEC --db DB --jobs 2 --quiet` in a child process; its pid, or -1.
+pid_t StartStudy(const std::string& spec, const std::string& db) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(SHOCKMAP_BIN, SHOCKMAP_BIN, "study", "run", spec.c_str(), "--db", db.c_str(), "--jobs",
+          "2", "--quiet", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  return pid;
+}
+
 TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
   const std::string spec = Path("slow.json");
   WriteText(spec, kSlowStudy);
@@ -68,15 +82,8 @@ TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
   const auto uninterrupted = RunShockmap("study run " + spec + " --db " + whole + " --quiet");
   ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
 
-  const pid_t pid = fork();
+  const pid_t pid = StartStudy(spec, killed);
   ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    freopen("/dev/null", "w", stdout);
-    freopen("/dev/null", "w", stderr);
-    execl(SHOCKMAP_BIN, SHOCKMAP_BIN, "study", "run", spec.c_str(), "--db", killed.c_str(),
-          "--jobs", "2", "--quiet", static_cast<char*>(nullptr));
-    _exit(127);
-  }
   // Kill once a few points are stored and before the study is done.
   std::int64_t stored = 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -107,6 +114,50 @@ TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
   EXPECT_EQ(Count(killed, "SELECT count(*) FROM points"), total);
   EXPECT_EQ(Count(killed, "SELECT count(*) FROM scores"), total);
   EXPECT_EQ(Count(killed, "SELECT count(*) FROM points WHERE status IN ('pending', 'running')"), 0);
+  EXPECT_EQ(Outcomes(killed), Outcomes(whole));
+}
+
+// Killed five times at random moments (seeded), from the opening of the database to the middle
+// of the points: after each kill the file is sound and holds every point once; the final run
+// completes the study with the outcomes of an uninterrupted one.
+TEST_F(StudyProcess, KilledRepeatedlyAtRandomMomentsLosesAndDuplicatesNothing) {
+  const std::string spec = Path("slow.json");
+  WriteText(spec, kSlowStudy);
+  const std::string whole = Path("whole.db"), killed = Path("killed.db");
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + whole + " --quiet").exit_code, 0);
+  const std::int64_t total = Count(whole, "SELECT count(*) FROM points");
+  std::mt19937 rng(20261123);
+  std::uniform_int_distribution<int> delay_ms(0, 1500);
+  int kills = 0;
+  for (int attempt = 0; attempt < 5; ++attempt) {
+    const pid_t pid = StartStudy(spec, killed);
+    ASSERT_GE(pid, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(rng)));
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    kills += WIFSIGNALED(status) ? 1 : 0;
+    if (!std::filesystem::exists(killed)) continue;  // Killed before it created the file.
+    EXPECT_EQ(
+        std::get<std::string>(RunReadOnlyQuery(killed, "PRAGMA integrity_check").rows.at(0).at(0)),
+        "ok");
+    const std::int64_t points = Count(killed, "SELECT count(*) FROM points");
+    EXPECT_TRUE(points == 0 || points == total) << points << " of " << total;
+    EXPECT_EQ(Count(killed,
+                    "SELECT count(*) FROM (SELECT point_key FROM points GROUP BY "
+                    "point_key HAVING count(*) > 1)"),
+              0);
+    // A point is finished exactly when it has its score.
+    EXPECT_EQ(Count(killed,
+                    "SELECT count(*) FROM points p LEFT JOIN scores s USING (point_id) "
+                    "WHERE (p.status IN ('ok', 'diverged')) != (s.point_id IS NOT NULL)"),
+              0);
+  }
+  EXPECT_GE(kills, 3) << "the study finished before most kills";
+  const auto resumed = RunShockmap("study run " + spec + " --db " + killed + " --quiet");
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM points"), total);
+  EXPECT_EQ(Count(killed, "SELECT count(*) FROM scores"), total);
   EXPECT_EQ(Outcomes(killed), Outcomes(whole));
 }
 
@@ -207,7 +258,7 @@ TEST_F(StudyProcess, ForeignCorruptAndNewerDatabasesAreRefusedUntouched) {
       {foreign, "not a shockmap database"}, {corrupt, "corrupt.db"}, {newer, "newer shockmap"}};
   for (const auto& [db, expected] : cases) {
     const std::string bytes = ReadBytes(db);
-    for (const std::string command :
+    for (const std::string& command :
          {"study run " + spec + " --quiet", std::string("study status"),
           std::string("query 'SELECT 1'"), std::string("criteria derive")}) {
       const auto o = RunShockmap(command + " --db " + db);
