@@ -55,6 +55,8 @@ class HostileInput : public ::testing::Test {
       for (std::string* s : {&c.args, &c.named}) {
         for (auto at = s->find("DIR"); at != std::string::npos; at = s->find("DIR"))
           s->replace(at, 3, dir_.string());
+        for (auto at = s->find("SRC"); at != std::string::npos; at = s->find("SRC"))
+          s->replace(at, 3, SHOCKMAP_SOURCE_DIR);
       }
       const auto r = RunShockmap(c.args);
       EXPECT_EQ(r.exit_code, 2) << c.what << ": shockmap " << c.args << "\n" << r.output;
@@ -79,7 +81,7 @@ TEST_F(HostileInput, CommandLineFlags) {
       {"unknown flag", "compare --rk 3000 --rftrunc 300 --turbo", "--turbo"},
       {"unknown command", "simulte x.json", "simulte"},
       {"missing argument", "simulate", "scene"},
-      {"zero workers", "study run studies/quick.json --jobs 0", "--jobs"},
+      {"zero workers", "study run SRC/studies/quick.json --jobs 0", "--jobs"},
       {"unknown format", "query \"SELECT 1\" --format xml", "--format"},
   });
 }
@@ -95,11 +97,11 @@ TEST_F(HostileInput, FilesAndPaths) {
       {"scene file is a directory", "simulate DIR/a_directory.json", "directory"},
       {"bundle of 1e8 zones", "simulate DIR/huge_bundle.json", "at most 1000000"},
       {"scene of 1e12 steps", "simulate DIR/endless.json", "solver.dt"},
-      {"database in a missing folder", "study run studies/quick.json --db DIR/no/such/s.db",
+      {"database in a missing folder", "study run SRC/studies/quick.json --db DIR/no/such/s.db",
        "DIR/no/such/s.db"},
-      {"database is a directory", "study run studies/quick.json --db DIR/a_directory.json",
+      {"database is a directory", "study run SRC/studies/quick.json --db DIR/a_directory.json",
        "a_directory.json"},
-      {"database not writable", "study run studies/quick.json --db /proc/s.db", "/proc/s.db"},
+      {"database not writable", "study run SRC/studies/quick.json --db /proc/s.db", "/proc/s.db"},
       {"query on a missing database", "query \"SELECT 1\" --db DIR/none.db", "DIR/none.db"},
       {"output folder not writable", "compare --rk 3000 --rftrunc 300 --out /proc/out",
        "/proc/out"},
