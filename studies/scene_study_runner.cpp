@@ -134,9 +134,7 @@ void CheckSettingsUnchanged(StudyDatabase& db, const SceneStudySpec& spec) {
 StudyRunSummary RunSceneStudy(const SceneStudySpec& spec, const StudyRunOptions& options) {
   const CpuTimer timer;
   StudyRunSummary summary;
-  summary.jobs = options.jobs > 0
-                     ? options.jobs
-                     : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  summary.jobs = WorkerCount(options);
   summary.points_in_study = spec.points.size();
 
   StudyDatabase db(options.database_path);
@@ -201,10 +199,7 @@ StudyRunSummary RunSceneStudy(const SceneStudySpec& spec, const StudyRunOptions&
       },
       [&](PointOutcome out) {
         StoreSceneResult(db, out.point_id, run_id, out.status, out.message, out.score);
-        ++summary.points_computed;
-        if (out.status == "ok") ++summary.ok;
-        if (out.status == "diverged") ++summary.diverged;
-        if (out.status == "failed") ++summary.failed;
+        CountOutcome(out.status, summary);
         progress.Update(static_cast<long>(summary.points_computed), summary.diverged,
                         summary.failed);
       });

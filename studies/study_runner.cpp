@@ -88,12 +88,23 @@ void CheckSettingsUnchanged(StudyDatabase& db, const StudySpec& spec) {
 
 }  // namespace
 
+int WorkerCount(const StudyRunOptions& options) {
+  return options.jobs > 0 ? options.jobs
+                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+void CountOutcome(const std::string& status, StudyRunSummary& summary) {
+  ++summary.points_computed;
+  if (status == "ok") ++summary.ok;
+  if (status == "diverged") ++summary.diverged;
+  if (status == "failed") ++summary.failed;
+  if (status == "reference_unconverged") ++summary.reference_unconverged;
+}
+
 StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) {
   const CpuTimer timer;
   StudyRunSummary summary;
-  summary.jobs = options.jobs > 0
-                     ? options.jobs
-                     : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  summary.jobs = WorkerCount(options);
   summary.points_in_study = spec.points.size();
 
   StudyDatabase db(options.database_path);
@@ -211,11 +222,7 @@ StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) 
       },
       [&](PointOutcome out) {
         db.StoreResult(out.point_id, run_id, out.status, out.message, out.score);
-        ++summary.points_computed;
-        if (out.status == "ok") ++summary.ok;
-        if (out.status == "diverged") ++summary.diverged;
-        if (out.status == "failed") ++summary.failed;
-        if (out.status == "reference_unconverged") ++summary.reference_unconverged;
+        CountOutcome(out.status, summary);
         progress.Update(static_cast<long>(summary.points_computed), summary.diverged,
                         summary.failed);
       });

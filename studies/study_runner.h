@@ -29,6 +29,12 @@ struct StudyRunSummary {
   double point_wall_s = 0.0;      // Wall time of the point phase.
 };
 
+// The workers a run uses: options.jobs, or one per hardware thread.
+int WorkerCount(const StudyRunOptions& options);
+
+// Counts one finished point in the summary by its stored status.
+void CountOutcome(const std::string& status, StudyRunSummary& summary);
+
 // Throws InputError when the study exists in the database with other problem or scoring
 // settings (its stored scores would no longer match its spec), and DbError on database faults.
 StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options);

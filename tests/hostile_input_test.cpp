@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/run_command.h"
+#include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
@@ -25,13 +26,10 @@ struct Hostile {
   std::string named;  // The message must contain this.
 };
 
-class HostileInput : public ::testing::Test {
+class HostileInput : public testing::TempDirTest {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("shockmap_hostile_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
+    TempDirTest::SetUp();
     std::filesystem::create_directories(dir_ / "a_directory.json");
     WriteText(Path("huge_grid.json"),
               R"({"name": "huge", "grids": [{"rk": {"logspace": [0, 6, 1000000000]}, )"
@@ -47,8 +45,6 @@ class HostileInput : public ::testing::Test {
               R"({"name": "e", "beams": [{"name": "b", "length_m": 1, "ei_n_m2": 1.5e5,
                   "rho_a_kg_per_m": 127}], "solver": {"end_time_s": 1e4, "dt": {"seconds": 1e-8}}})");
   }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
 
   void Check(const std::vector<Hostile>& cases) {
     for (Hostile c : cases) {
@@ -65,8 +61,6 @@ class HostileInput : public ::testing::Test {
       std::printf("[hostile] %s | %s\n", c.what.c_str(), first_line.c_str());
     }
   }
-
-  std::filesystem::path dir_;
 };
 
 TEST_F(HostileInput, CommandLineFlags) {

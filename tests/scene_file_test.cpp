@@ -15,6 +15,7 @@
 #include "core/input_error.h"
 #include "studies/scene_file.h"
 #include "tests/run_command.h"
+#include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
@@ -25,18 +26,8 @@ using Json = nlohmann::json;
 
 const std::string kScenes = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/";
 
-class SceneFiles : public ::testing::Test {
+class SceneFiles : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("shockmap_scene_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
   // The canonical scene with one change applied, written to a file.
   std::string Variant(const std::function<void(Json&)>& change) {
     std::ifstream in(kScenes + "cantilever_spring.json");
@@ -56,8 +47,6 @@ class SceneFiles : public ::testing::Test {
     }
     return "";
   }
-
-  std::filesystem::path dir_;
 };
 
 TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/run_command.h"
+#include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
@@ -17,18 +18,8 @@ using testing::RunShockmap;
 using testing::WriteText;
 using Json = nlohmann::json;
 
-class SceneStudy : public ::testing::Test {
+class SceneStudy : public testing::TempDirTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("shockmap_scene_study_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
   // The canonical scene swept over R_ftrunc, scored against R_ftrunc = 1000.
   std::string Study(const std::function<void(Json&)>& change = [](Json&) {}) {
     Json study = {{"name", "truncation"},
@@ -50,8 +41,6 @@ class SceneStudy : public ::testing::Test {
     EXPECT_EQ(r.exit_code, 0) << r.output;
     return Json::parse(r.output);
   }
-
-  std::filesystem::path dir_;
 };
 
 TEST_F(SceneStudy, SweepIsScoredStoredAndResumed) {

@@ -15,6 +15,7 @@
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
 #include "tests/run_command.h"
+#include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
@@ -23,20 +24,7 @@ using testing::ReadBytes;
 using testing::RunShockmap;
 using testing::WriteText;
 
-class StudyProcess : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("shockmap_study_cli_" + std::to_string(getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::string Path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::filesystem::path dir_;
-};
+class StudyProcess : public testing::TempDirTest {};
 
 // Implicit full-model points on fine meshes: ~0.1-0.5 s each, so a kill lands mid-study.
 constexpr const char* kSlowStudy = R"({
