@@ -541,6 +541,8 @@ Scene ParseScene(const nlohmann::json& json, const std::string& path) {
         if (zone == scene.zones.end()) FailAt(path, at, "no zone named \"" + name + "\"");
         scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
       }
+    } else if (v != nullptr && !v->is_boolean()) {
+      o.Fail("contact_forces", "expected true, false or a list of zone names, got " + Shown(*v));
     } else {
       scene.outputs.contact_forces = flag("contact_forces");
     }

@@ -87,6 +87,10 @@ TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
       {[](Json& s) { s["outputs"]["displacements"][0]["direction"] = "z"; },
        {"outputs.displacements[0].direction", "planar"}},
       {[](Json& s) { s["outputs"]["energies"] = "yes"; }, {"outputs.energies", "true or false"}},
+      {[](Json& s) { s["outputs"]["contact_forces"] = "yes"; },
+       {"outputs.contact_forces", "list of zone names"}},
+      {[](Json& s) { s["outputs"]["contact_forces"] = {"ghost"}; },
+       {"outputs.contact_forces[0]", "ghost"}},
       {[](Json& s) { s["outputs"]["record_stride"] = 0; }, {"outputs.record_stride"}},
       {[](Json& s) {
          s["beams"][0]["ends"] = {"free", "free"};
