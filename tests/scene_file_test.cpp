@@ -235,7 +235,16 @@ TEST_F(SceneFiles, SimulateRefusesBadInputWithExitCode2) {
     s["solver"]["dt"] = {{"rule", "sharp"}, {"factor", 1e-6}};
     s["solver"]["end_time_s"] = 1e3;
   });
+  // Every zone's force at every step of the 217-pin bundle: 6.7 GiB, refused before running.
+  const std::string histories = Path("histories.json");
+  {
+    std::ifstream in(kScenes + "bundle_hex.json");
+    Json scene = Json::parse(in);
+    scene["outputs"] = {{"contact_forces", true}};
+    WriteText(histories, scene.dump());
+  }
   const std::vector<std::pair<std::string, std::string>> cases = {
+      {"simulate " + histories, "record_stride"},
       {"simulate " + Path("missing.json"), "missing.json"},
       {"simulate " + Path("empty.json"), "empty.json"},
       {"simulate " + Path("truncated.json"), "truncated.json"},
