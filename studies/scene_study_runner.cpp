@@ -59,7 +59,8 @@ SceneReferenceRow ComputeReference(const SceneStudySpec& spec, const std::string
 
 PointOutcome ScorePoint(const SceneStudySpec& spec, const PointTask& task,
                         const SceneReferenceRow& ref) {
-  PointOutcome out{task.row.point_id};
+  PointOutcome out;
+  out.point_id = task.row.point_id;
   if (ref.status != "ok") {
     out.message = "reference " + ref.status + ": " + ref.message;
     return out;
