@@ -22,10 +22,6 @@ struct PointTask {
   SceneParameters parameters;
 };
 
-struct ReferenceOutcome {
-  SceneReferenceRow row;
-};
-
 struct PointOutcome {
   std::int64_t point_id = 0;
   std::string status = "failed";
@@ -176,12 +172,10 @@ StudyRunSummary RunSceneStudy(const SceneStudySpec& spec, const StudyRunOptions&
   const CpuTimer reference_timer;
   RunOnWorkers(
       missing.size(), summary.jobs,
-      [&](std::size_t i) {
-        return ReferenceOutcome{ComputeReference(spec, missing[i].first, missing[i].second)};
-      },
-      [&](ReferenceOutcome out) {
-        out.row.reference_id = StoreSceneReference(db, out.row, run_id);
-        references[out.row.reference_key] = std::move(out.row);
+      [&](std::size_t i) { return ComputeReference(spec, missing[i].first, missing[i].second); },
+      [&](SceneReferenceRow row) {
+        row.reference_id = StoreSceneReference(db, row, run_id);
+        references[row.reference_key] = std::move(row);
         ++summary.references_computed;
       });
   summary.reference_wall_s = reference_timer.WallSeconds();
