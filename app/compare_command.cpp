@@ -6,11 +6,11 @@
 #include <memory>
 
 #include "app/flag_checks.h"
+#include "compare/comparison.h"
 #include "core/transient_run.h"
-#include "studies/comparison.h"
-#include "studies/comparison_json.h"
-#include "studies/comparison_plot.h"
-#include "studies/history_csv.h"
+#include "formats/comparison_json.h"
+#include "formats/history_csv.h"
+#include "views/comparison_plot.h"
 
 namespace shockmap {
 namespace {
@@ -78,10 +78,11 @@ void Run(const CompareFlags& flags) {
   if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
   if (const auto max_steps = TransientOptions{}.max_steps;
       f.options.dt.dt_s && f.options.window_s / *f.options.dt.dt_s > max_steps) {
-    throw InputError(fmt::format("--dt: {:g} s over the {:g} s window is {:.3g} steps; at most {} "
-                                 "are allowed",
-                                 *f.options.dt.dt_s, f.options.window_s,
-                                 f.options.window_s / *f.options.dt.dt_s, max_steps));
+    throw InputError(
+        fmt::format("--dt: {:g} s over the {:g} s window is {:.3g} steps; at most {} "
+                    "are allowed",
+                    *f.options.dt.dt_s, f.options.window_s, f.options.window_s / *f.options.dt.dt_s,
+                    max_steps));
   }
 
   const ComparisonResult result = RunComparison(f.problem, f.options);

@@ -8,9 +8,9 @@
 #include "app/flag_checks.h"
 #include "core/input_error.h"
 #include "db/study_database.h"
-#include "studies/criteria_report.h"
-#include "studies/json_reader.h"
-#include "studies/scored_points.h"
+#include "formats/json_reader.h"
+#include "views/criteria_report.h"
+#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "app/flag_checks.h"
 #include "db/study_database.h"
-#include "studies/scored_points.h"
-#include "studies/validity_map.h"
+#include "views/scored_points.h"
+#include "views/validity_map.h"
 
 namespace shockmap {
 namespace {

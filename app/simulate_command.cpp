@@ -7,9 +7,9 @@
 #include <memory>
 
 #include "core/input_error.h"
-#include "studies/contact_force_map.h"
-#include "studies/scene_file.h"
-#include "studies/scene_outputs.h"
+#include "formats/scene_file.h"
+#include "formats/scene_outputs.h"
+#include "views/contact_force_map.h"
 
 namespace shockmap {
 namespace {

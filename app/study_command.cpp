@@ -7,10 +7,10 @@
 
 #include "db/read_only_query.h"
 #include "db/study_database.h"
-#include "studies/json_reader.h"
-#include "studies/query_output.h"
-#include "studies/scene_study_runner.h"
-#include "studies/study_runner.h"
+#include "engine/scene_study_runner.h"
+#include "engine/study_runner.h"
+#include "formats/json_reader.h"
+#include "views/query_output.h"
 
 namespace shockmap {
 namespace {

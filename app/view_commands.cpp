@@ -6,11 +6,11 @@
 
 #include "app/flag_checks.h"
 #include "db/study_database.h"
-#include "studies/advice.h"
-#include "studies/cost_front.h"
-#include "studies/fig4_plot.h"
-#include "studies/html_report.h"
-#include "studies/scored_points.h"
+#include "views/advice.h"
+#include "views/cost_front.h"
+#include "views/fig4_plot.h"
+#include "views/html_report.h"
+#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {

@@ -17,7 +17,7 @@
 
 #include "core/scene_model.h"
 #include "core/transient_run.h"
-#include "studies/scene_file.h"
+#include "formats/scene_file.h"
 
 namespace shockmap {
 namespace {

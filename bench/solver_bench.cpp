@@ -8,10 +8,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include "compare/comparison.h"
 #include "core/cantilever_impact.h"
 #include "core/transient_run.h"
 #include "reference/reference_solver.h"
-#include "studies/comparison.h"
 
 namespace shockmap {
 namespace {

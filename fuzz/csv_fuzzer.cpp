@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "studies/acceleration_csv.h"
+#include "formats/acceleration_csv.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
-#include "studies/scene_file.h"
+#include "formats/scene_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto json = nlohmann::json::parse(data, data + size, nullptr, false);

@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
-#include "studies/scene_study_spec.h"
-#include "studies/study_spec.h"
+#include "formats/scene_study_spec.h"
+#include "formats/study_spec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto json = nlohmann::json::parse(data, data + size, nullptr, false);

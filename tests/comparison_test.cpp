@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "studies/comparison.h"
+#include "compare/comparison.h"
 
 namespace shockmap {
 namespace {

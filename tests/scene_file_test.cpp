@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
-#include "studies/scene_file.h"
+#include "formats/scene_file.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 

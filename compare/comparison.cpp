@@ -1,0 +1,76 @@
+#include "compare/comparison.h"
+
+#include "core/validity.h"
+#include "validation/impulse_ratio.h"
+#include "validation/spectral_error.h"
+
+namespace shockmap {
+
+bool ComparisonOptions::IsValid(std::string* error) const {
+  return RequireAtLeast("r_ftrunc", r_ftrunc, 1.0, error) && dt.IsValid(error) &&
+         RequirePositive("window_s", window_s, error) &&
+         RequireAtLeast("n_elements", n_elements, 0, error) && psd.IsValid(error) &&
+         RequirePositive("rest_duration_t1", rest_duration_t1, error) &&
+         RequirePositive("reference_tolerance", reference_tolerance, error) &&
+         RequireAtLeast("reference.r_fref", reference.r_fref, 1.0, error) &&
+         RequireAtLeast("reference.crossing_samples_per_period",
+                        reference.crossing_samples_per_period, 4, error);
+}
+
+ShockSegmentationOptions ComparisonOptions::Shocks(double f1_hz) const {
+  ShockSegmentationOptions s;
+  s.rest_duration_s = rest_duration_t1 / f1_hz;
+  return s;
+}
+
+ComparisonResult RunComparison(const CantileverImpact& problem, const ComparisonOptions& options) {
+  return ScoreAgainstReference(
+      problem, options,
+      std::make_shared<const ReferenceRun>(ComputeReferenceRun(
+          problem, options.reference, options.window_s, options.Shocks(problem.F1Hz()))));
+}
+
+ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
+                                       const ComparisonOptions& options,
+                                       std::shared_ptr<const ReferenceRun> reference) {
+  ComparisonResult result;
+  const ImpactModel model =
+      BuildImpactModel(problem, options.scheme, options.r_ftrunc, options.n_elements);
+  result.n_modes = model.n_modes;
+  result.n_elements = model.n_elements;
+  result.n_dofs = model.n_dofs;
+  result.bounds = model.bounds;
+
+  TransientOptions run;
+  run.end_time_s = options.window_s;
+  run.dt_s = options.dt.Resolve(model.bounds);
+  run.observed_rows = {model.tip_row};
+  std::string error;
+  result.reference = std::move(reference);
+  if (!run.IsValid(&error)) {
+    result.status = ToString(RunStatus::kFailed);
+    result.message = error;
+    return result;
+  }
+  result.histories =
+      RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run);
+  result.numerical = result.histories.summary;
+  result.status = ToString(result.numerical.status);
+  result.message = result.numerical.message;
+  if (result.numerical.status != RunStatus::kOk) return result;
+
+  const ShockSegmentationOptions shocks = options.Shocks(problem.F1Hz());
+  result.shocks_numerical =
+      SegmentShocks(result.histories.contact_force_n[0], shocks, options.window_s);
+  if (result.reference->convergence.difference > options.reference_tolerance) {
+    result.status = "reference_unconverged";
+    result.message = "the reference truncations differ by more than reference_tolerance";
+    return result;
+  }
+  result.err = SpectralError(result.histories.displacement_m[0], result.reference->tip_m, 0.0,
+                             options.window_s, options.psd);
+  result.srf = FirstShockImpulseRatio(result.shocks_numerical, result.reference->shocks);
+  return result;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,27 @@
+#include "compare/reference_run.h"
+
+#include <cmath>
+
+#include "core/cpu_timer.h"
+
+namespace shockmap {
+
+ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
+                                 double window_s, const ShockSegmentationOptions& shocks) {
+  const CpuTimer timer;
+  ReferenceOptions solve_options = options;
+  solve_options.end_time_s = window_s;
+  const ReferenceSolution solution = SolveReference(problem, solve_options);
+  ReferenceRun run;
+  run.summary = solution.Summary();
+  run.convergence = MeasureReferenceConvergence(problem, solve_options, solution, window_s);
+  // The output step, shortened so that the last sample falls on the window's end.
+  const double dt = window_s / std::ceil(window_s / solution.OutputStep());
+  run.tip_m = solution.SampleTipDisplacement(dt, window_s);
+  run.force_n = solution.SampleContactForce(dt, window_s);
+  run.shocks = SegmentShocks(run.force_n, shocks, window_s);
+  run.wall_s = timer.WallSeconds();
+  return run;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,60 @@
+#include "engine/reference_store.h"
+
+#include <nlohmann/json.hpp>
+
+#include "formats/comparison_json.h"
+
+namespace shockmap {
+namespace {
+
+Shock ShockFromJson(const nlohmann::json& j) {
+  Shock s;
+  s.start_s = j.at("start_s").get<double>();
+  s.end_s = j.at("end_s").get<double>();
+  s.peak_force_n = j.at("peak_force_n").get<double>();
+  s.peak_time_s = j.at("peak_time_s").get<double>();
+  s.impulse_n_s = j.at("impulse_n_s").get<double>();
+  s.n_contacts = j.at("rebounds").get<int>() + 1;
+  s.truncated = j.at("truncated").get<bool>();
+  return s;
+}
+
+}  // namespace
+
+ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& reference_key, double r_k,
+                            double window_s) {
+  ReferenceRow row;
+  row.reference_key = reference_key;
+  row.r_k = r_k;
+  row.r_fref = run.convergence.r_fref;
+  row.r_fref_check = run.convergence.r_fref_check;
+  row.window_s = window_s;
+  row.convergence = run.convergence.difference;
+  row.n_modes_free = run.summary.n_modes_free;
+  row.n_modes_contact = run.summary.n_modes_contact;
+  row.n_transitions = run.summary.n_transitions;
+  row.wall_s = run.wall_s;
+  row.output_dt_s = run.tip_m.dt_s;
+  row.tip_m = run.tip_m.values;
+  row.force_n = run.force_n.values;
+  nlohmann::json shocks = nlohmann::json::array();
+  for (const auto& s : run.shocks) shocks.push_back(ShockToJson(s));
+  row.shocks_json = shocks.dump();
+  return row;
+}
+
+ReferenceRun FromReferenceRow(const ReferenceRow& row) {
+  ReferenceRun run;
+  run.tip_m = {0.0, row.output_dt_s, row.tip_m};
+  run.force_n = {0.0, row.output_dt_s, row.force_n};
+  for (const auto& s : nlohmann::json::parse(row.shocks_json))
+    run.shocks.push_back(ShockFromJson(s));
+  run.summary.n_modes_free = row.n_modes_free;
+  run.summary.n_modes_contact = row.n_modes_contact;
+  run.summary.n_transitions = row.n_transitions;
+  run.convergence = {row.r_fref, row.r_fref_check, row.convergence, 0.0};
+  run.wall_s = row.wall_s;
+  return run;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,13 @@
+#pragma once
+// A ReferenceRun as a database row and back, so a reference is computed once per database.
+
+#include "compare/reference_run.h"
+#include "db/study_database.h"
+
+namespace shockmap {
+
+ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& reference_key, double r_k,
+                            double window_s);
+ReferenceRun FromReferenceRow(const ReferenceRow& row);
+
+}  // namespace shockmap

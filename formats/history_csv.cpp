@@ -1,0 +1,36 @@
+#include "formats/history_csv.h"
+
+#include "formats/output_file.h"
+
+namespace shockmap {
+
+void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::path& dir) {
+  CreateOutputDirectory(dir);
+
+  const TransientResult& h = result.histories;
+  const auto num_file = dir / "numerical.csv";
+  std::ofstream num = OpenForWriting(num_file);
+  num << "t_s,tip_displacement_m,tip_velocity_m_s,contact_force_n,kinetic_j,strain_j,contact_j,"
+         "dissipated_j\n";
+  if (!h.displacement_m.empty()) {
+    const UniformSignal& u = h.displacement_m[0];
+    for (std::size_t i = 0; i < u.values.size(); ++i) {
+      num << u.TimeAt(i) << ',' << u.values[i] << ',' << h.velocity_m_s[0].values[i] << ','
+          << h.contact_force_n[0].values[i] << ',' << h.energy.kinetic_j.values[i] << ','
+          << h.energy.strain_j.values[i] << ',' << h.energy.contact_j.values[i] << ','
+          << h.energy.dissipated_j.values[i] << '\n';
+    }
+  }
+  CloseWritten(num, num_file);
+
+  const auto ref_file = dir / "reference.csv";
+  std::ofstream ref = OpenForWriting(ref_file);
+  ref << "t_s,tip_displacement_m,contact_force_n\n";
+  const UniformSignal& u = result.reference->tip_m;
+  for (std::size_t i = 0; i < u.values.size(); ++i) {
+    ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference->force_n.values[i] << '\n';
+  }
+  CloseWritten(ref, ref_file);
+}
+
+}  // namespace shockmap

@@ -1,0 +1,566 @@
+#include "formats/scene_file.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include "core/transient_run.h"
+#include "formats/acceleration_csv.h"
+#include "formats/json_reader.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+// Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
+constexpr int kMaxBeams = 10000;
+constexpr int kMaxZones = 1'000'000;
+constexpr int kMaxElements = 10000;
+
+double Positive(JsonObjectReader& r, const std::string& key, double hi = 1e15) {
+  const double v = r.RequiredNumber(key);
+  if (!(v > 0.0) || v > hi)
+    r.Fail(key, "value " + Shown(Json(v)) + " must be > 0 and <= " + Shown(Json(hi)));
+  return v;
+}
+
+double InRange(JsonObjectReader& r, const std::string& key, double fallback, double lo, double hi) {
+  const double v = r.Number(key, fallback);
+  if (v < lo || v > hi) {
+    r.Fail(key, "value " + Shown(Json(v)) + " must lie in [" + Shown(Json(lo)) + ", " +
+                    Shown(Json(hi)) + "]");
+  }
+  return v;
+}
+
+std::pair<double, double> Vector2(JsonObjectReader& r, const std::string& key,
+                                  std::pair<double, double> fallback, bool unit) {
+  const Json* v = r.Get(key);
+  if (v == nullptr) return fallback;
+  if (!v->is_array() || v->size() != 2) r.Fail(key, "expected [y, z], got " + Shown(*v));
+  double y = NumberAt((*v)[0], r.File(), r.PathOf(key) + "[0]");
+  double z = NumberAt((*v)[1], r.File(), r.PathOf(key) + "[1]");
+  if (unit) {
+    const double norm = std::hypot(y, z);
+    if (norm < 1e-12) r.Fail(key, "a direction must not be zero, got " + Shown(*v));
+    y /= norm, z /= norm;
+  }
+  return {y, z};
+}
+
+int Direction(JsonObjectReader& r, const std::string& key) {
+  const std::string d = r.String(key, "y");
+  if (d != "y" && d != "z") r.Fail(key, "\"" + d + "\" is not a direction: use \"y\" or \"z\"");
+  return d == "y" ? 0 : 1;
+}
+
+std::pair<EndCondition, EndCondition> Ends(JsonObjectReader& r) {
+  const Json* v = r.Get("ends");
+  if (v == nullptr) return {EndCondition::kClamped, EndCondition::kFree};
+  if (!v->is_array() || v->size() != 2)
+    r.Fail("ends", "expected [at x = 0, at x = L], got " + Shown(*v));
+  EndCondition e[2];
+  for (int i = 0; i < 2; ++i) {
+    const auto c =
+        (*v)[i].is_string() ? EndConditionFromString((*v)[i].get<std::string>()) : std::nullopt;
+    if (!c)
+      FailAt(r.File(), r.PathOf("ends") + "[" + std::to_string(i) + "]",
+             Shown((*v)[i]) +
+                 " is not an end: use \"clamped\", \"pinned\" or \"free\" (with "
+                 "end_springs_n_per_m for elastic)");
+    e[i] = *c;
+  }
+  return {e[0], e[1]};
+}
+
+SceneBeam ParseBeamProperties(JsonObjectReader& r) {
+  SceneBeam b;
+  b.length_m = Positive(r, "length_m", 1e3);
+  b.ei_n_m2 = Positive(r, "ei_n_m2");
+  b.rho_a_kg_per_m = Positive(r, "rho_a_kg_per_m", 1e6);
+  b.n_elements = r.Integer("elements", b.n_elements);
+  if (b.n_elements < 1 || b.n_elements > kMaxElements) {
+    r.Fail("elements", "value " + std::to_string(b.n_elements) + " must lie in [1, " +
+                           std::to_string(kMaxElements) + "]");
+  }
+  std::tie(b.at_zero, b.at_length) = Ends(r);
+  const auto springs = Vector2(r, "end_springs_n_per_m", {0.0, 0.0}, false);
+  if (springs.first < 0 || springs.second < 0)
+    r.Fail("end_springs_n_per_m", "springs must be >= 0");
+  b.spring_at_zero_n_per_m = springs.first;
+  b.spring_at_length_n_per_m = springs.second;
+  if (r.Has("r_ftrunc") && r.Has("f_trunc_hz"))
+    r.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
+  if (r.Has("r_ftrunc")) b.r_ftrunc = InRange(r, "r_ftrunc", 0.0, 1.0, 1e5);
+  if (r.Has("f_trunc_hz")) b.f_trunc_hz = Positive(r, "f_trunc_hz", 1e7);
+  if (b.at_zero == EndCondition::kFree && b.at_length == EndCondition::kFree &&
+      springs.first == 0 && springs.second == 0) {
+    r.Fail("ends", "a free-free beam without end springs has rigid-body modes and no support");
+  }
+  return b;
+}
+
+// Gap values for `count` zones: a number, {"uniform": g}, {"list": [...]} or
+// {"normal": {"mean", "std", "seed", "min"}} (drawn with mt19937_64 and Box-Muller, so the same
+// seed gives the same gaps on every platform).
+std::vector<double> Gaps(const Json& v, const std::string& file, const std::string& path,
+                         std::size_t count) {
+  auto check = [&](double g, const std::string& at) {
+    if (std::abs(g) > 1.0) FailAt(file, at, "gap " + Shown(Json(g)) + " m must lie in [-1, 1] m");
+    return g;
+  };
+  if (v.is_number()) return std::vector<double>(count, check(NumberAt(v, file, path), path));
+  JsonObjectReader r(v, file, path);
+  std::vector<double> gaps;
+  if (r.Has("uniform")) {
+    gaps.assign(count, check(r.RequiredNumber("uniform"), r.PathOf("uniform")));
+  } else if (const Json* list = r.Get("list")) {
+    if (!list->is_array() || list->size() != count) {
+      r.Fail("list",
+             "expected " + std::to_string(count) + " gaps (one per zone), got " + Shown(*list));
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string at = r.PathOf("list") + "[" + std::to_string(i) + "]";
+      gaps.push_back(check(NumberAt((*list)[i], file, at), at));
+    }
+  } else if (const Json* normal = r.Get("normal")) {
+    JsonObjectReader n(*normal, file, r.PathOf("normal"));
+    const double mean = n.RequiredNumber("mean");
+    const double sd = n.RequiredNumber("std");
+    const double lo = n.Number("min", 0.0);
+    const int seed = n.Integer("seed", 1);
+    n.Finish();
+    if (sd < 0) n.Fail("std", "must be >= 0");
+    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+    auto uniform = [&] { return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53; };
+    for (std::size_t i = 0; i < count; ++i) {
+      const double g =
+          mean + sd * std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * M_PI * uniform());
+      gaps.push_back(check(std::max(lo, g), r.PathOf("normal")));
+    }
+  } else {
+    r.Fail("", "expected a number, {\"uniform\": g}, {\"list\": [...]} or {\"normal\": {...}}");
+  }
+  r.Finish();
+  return gaps;
+}
+
+std::vector<double> Heights(const Json& v, const std::string& file, const std::string& path) {
+  std::vector<double> h;
+  if (v.is_array()) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      h.push_back(NumberAt(v[i], file, path + "[" + std::to_string(i) + "]"));
+  } else {
+    JsonObjectReader r(v, file, path);
+    const Json* lin = r.Get("linspace");
+    r.Finish();
+    if (lin == nullptr || !lin->is_array() || lin->size() != 3 || !(*lin)[2].is_number_integer()) {
+      FailAt(file, path, "expected a list of heights or {\"linspace\": [first, last, count]}");
+    }
+    const double a = NumberAt((*lin)[0], file, path), b = NumberAt((*lin)[1], file, path);
+    const auto n = (*lin)[2].get<std::int64_t>();
+    if (n < 1 || n > 10000) FailAt(file, path + ".linspace[2]", "count must lie in [1, 10000]");
+    for (std::int64_t i = 0; i < n; ++i)
+      h.push_back(n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1));
+  }
+  if (h.empty()) FailAt(file, path, "give at least one height");
+  return h;
+}
+
+// Expands {"bundle": {...}}: a wrapper beam named "wrapper" and pins "pin_0", "pin_1", ... in a
+// row along y (layout "row") or on a hexagonal lattice with `rings` rings around a centre pin
+// (layout "hex": 1 + 3 rings (rings + 1) pins), with zones at every wire height between
+// neighbouring pins and between the outer pins and the wrapper.
+void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
+  JsonObjectReader r(v, file, "bundle");
+  const std::string layout = r.String("layout", "row");
+  if (layout != "row" && layout != "hex")
+    r.Fail("layout", "\"" + layout + "\" is not a layout: use \"row\" or \"hex\"");
+  const double pitch = Positive(r, "pin_pitch_m", 1.0);
+  std::vector<std::pair<double, double>> positions;
+  std::vector<std::array<int, 2>> axial;
+  if (layout == "row") {
+    const int pins = r.Integer("pins", 0);
+    if (pins < 1 || pins > kMaxBeams)
+      r.Fail("pins", "value " + std::to_string(pins) + " must lie in [1, " +
+                         std::to_string(kMaxBeams) + "]");
+    for (int i = 0; i < pins; ++i)
+      positions.push_back({(i - (pins - 1) / 2.0) * pitch, 0.0}), axial.push_back({i, 0});
+  } else {
+    const int rings = r.Integer("rings", 0);
+    if (rings < 0 || rings > 50)
+      r.Fail("rings", "value " + std::to_string(rings) + " must lie in [0, 50]");
+    for (int q = -rings; q <= rings; ++q) {
+      for (int s = -rings; s <= rings; ++s) {
+        if (std::abs(q + s) > rings) continue;
+        positions.push_back({pitch * (q + s / 2.0), pitch * s * std::sqrt(3.0) / 2.0});
+        axial.push_back({q, s});
+      }
+    }
+    scene.planes = BendingPlanes::kBoth;
+  }
+  JsonObjectReader pin(
+      *[&] {
+        const Json* p = r.Get("pin");
+        if (!p) r.Fail("pin", "required object is missing");
+        return p;
+      }(),
+      file, r.PathOf("pin"));
+  const SceneBeam pin_beam = ParseBeamProperties(pin);
+  pin.Finish();
+  JsonObjectReader wrap(
+      *[&] {
+        const Json* w = r.Get("wrapper");
+        if (!w) r.Fail("wrapper", "required object is missing");
+        return w;
+      }(),
+      file, r.PathOf("wrapper"));
+  SceneBeam wrapper = ParseBeamProperties(wrap);
+  const Json* wrapper_gap = wrap.Get("gap_m");
+  wrap.Finish();
+  JsonObjectReader wire(
+      *[&] {
+        const Json* w = r.Get("wire");
+        if (!w) r.Fail("wire", "required object is missing");
+        return w;
+      }(),
+      file, r.PathOf("wire"));
+  const Json* heights_json = wire.Get("heights_m");
+  if (heights_json == nullptr) wire.Fail("heights_m", "required");
+  const std::vector<double> heights = Heights(*heights_json, file, wire.PathOf("heights_m"));
+  const double k = Positive(wire, "stiffness_n_per_m");
+  const double c = InRange(wire, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  const Json* pin_gap = wire.Get("gap_m");
+  if (pin_gap == nullptr) wire.Fail("gap_m", "required");
+  wire.Finish();
+  r.Finish();
+  for (double h : heights) {
+    if (h < 0 || h > pin_beam.length_m || h > wrapper.length_m) {
+      FailAt(file, wire.PathOf("heights_m"),
+             "height " + Shown(Json(h)) + " m lies outside the pins or the wrapper");
+    }
+  }
+
+  // Refused before anything is generated: at most 6 zones per pin and height.
+  const double zones = 6.0 * static_cast<double>(positions.size()) * heights.size();
+  if (zones > kMaxZones) {
+    FailAt(file, "bundle",
+           std::to_string(positions.size()) + " pins with " + std::to_string(heights.size()) +
+               " wire heights would make up to " + Shown(Json(zones)) + " zones: at most " +
+               std::to_string(kMaxZones) + " are allowed");
+  }
+  const int first = static_cast<int>(scene.beams.size());
+  wrapper.name = "wrapper";
+  scene.beams.push_back(wrapper);
+  std::map<std::array<int, 2>, int> index;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    SceneBeam b = pin_beam;
+    b.name = "pin_" + std::to_string(i);
+    b.y_m = positions[i].first;
+    b.z_m = positions[i].second;
+    index[axial[i]] = static_cast<int>(scene.beams.size());
+    scene.beams.push_back(b);
+  }
+  // Neighbour pairs (each once) and outer faces against the wrapper.
+  const std::vector<std::array<int, 2>> steps =
+      layout == "row"
+          ? std::vector<std::array<int, 2>>{{1, 0}, {-1, 0}}
+          : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
+  std::vector<SceneZone> pair_zones, wall_zones;
+  for (const auto& [cell, a] : index) {
+    for (const auto& s : steps) {
+      const std::array<int, 2> next{cell[0] + s[0], cell[1] + s[1]};
+      const double ny = layout == "row" ? s[0] : s[0] + s[1] / 2.0;
+      const double nz = layout == "row" ? 0.0 : s[1] * std::sqrt(3.0) / 2.0;
+      const auto it = index.find(next);
+      for (double h : heights) {
+        SceneZone z;
+        z.beam_a = a;
+        z.height_m = h;
+        z.normal_y = ny, z.normal_z = nz;
+        z.stiffness_n_per_m = k;
+        z.damping_n_s_per_m = c;
+        z.y_m = positions[a - first - 1].first + 0.5 * pitch * ny;
+        z.z_m = positions[a - first - 1].second + 0.5 * pitch * nz;
+        if (it != index.end()) {
+          if (it->second < a) continue;  // Each pair once.
+          z.beam_b = it->second;
+          z.name = scene.beams[a].name + "-" + scene.beams[it->second].name + "@" + Shown(Json(h));
+          pair_zones.push_back(z);
+        } else {
+          z.beam_b = first;
+          z.name = scene.beams[a].name + "-wrapper@" + Shown(Json(h));
+          wall_zones.push_back(z);
+        }
+      }
+    }
+  }
+  const auto pair_gaps = Gaps(*pin_gap, file, wire.PathOf("gap_m"), pair_zones.size());
+  const auto wall_gaps =
+      wrapper_gap != nullptr ? Gaps(*wrapper_gap, file, wrap.PathOf("gap_m"), wall_zones.size())
+      : pair_gaps.empty()    ? std::vector<double>(wall_zones.size(), 0.0)
+                             : std::vector<double>(wall_zones.size(), pair_gaps.front());
+  for (std::size_t i = 0; i < pair_zones.size(); ++i) pair_zones[i].gap_m = pair_gaps[i];
+  for (std::size_t i = 0; i < wall_zones.size(); ++i) wall_zones[i].gap_m = wall_gaps[i];
+  scene.zones.insert(scene.zones.end(), pair_zones.begin(), pair_zones.end());
+  scene.zones.insert(scene.zones.end(), wall_zones.begin(), wall_zones.end());
+}
+
+void LoadAccelerationCsv(const std::filesystem::path& csv, const std::string& where,
+                         BaseMotionEffect& base) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(csv, ec))
+    FailAt(where, "effects.base_motion.csv", csv.string() + " is not a regular file");
+  std::ifstream in(csv);
+  if (!in) FailAt(where, "effects.base_motion.csv", "cannot open " + csv.string());
+  ParseAccelerationCsv(in, csv.string(), base);
+}
+
+int BeamIndex(const Scene& scene, JsonObjectReader& r, const std::string& key) {
+  const std::string name = r.RequiredString(key);
+  for (std::size_t i = 0; i < scene.beams.size(); ++i) {
+    if (scene.beams[i].name == name) return static_cast<int>(i);
+  }
+  r.Fail(key, "no beam named \"" + name + "\"");
+}
+
+double Height(const Scene& scene, JsonObjectReader& r, int beam) {
+  const double h = r.RequiredNumber("height_m");
+  if (h < 0 || h > scene.beams[beam].length_m) {
+    r.Fail("height_m", "value " + Shown(Json(h)) + " must lie on the beam, in [0, " +
+                           Shown(Json(scene.beams[beam].length_m)) + "]");
+  }
+  return h;
+}
+
+template <typename F>
+void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
+  const Json* list = parent.Get(key);
+  if (list == nullptr) return;
+  if (!list->is_array()) parent.Fail(key, "expected a list, got " + Shown(*list));
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    JsonObjectReader item((*list)[i], parent.File(),
+                          parent.PathOf(key) + "[" + std::to_string(i) + "]");
+    parse(item);
+    item.Finish();
+  }
+}
+
+}  // namespace
+
+Scene LoadScene(const std::string& path) { return ParseScene(ReadJsonFile(path), path); }
+
+Scene ParseScene(const nlohmann::json& json, const std::string& path) {
+  Scene scene;
+  JsonObjectReader r(json, path, "");
+  scene.name = r.RequiredString("name");
+  scene.description = r.String("description", "");
+  const std::string planes = r.String("bending", "planar");
+  if (planes != "planar" && planes != "both")
+    r.Fail("bending", "\"" + planes + "\" must be \"planar\" or \"both\"");
+  scene.planes = planes == "both" ? BendingPlanes::kBoth : BendingPlanes::kPlanar;
+
+  EachItem(r, "beams", [&](JsonObjectReader& b) {
+    SceneBeam beam = ParseBeamProperties(b);
+    beam.name = b.RequiredString("name");
+    for (const auto& other : scene.beams) {
+      if (other.name == beam.name) b.Fail("name", "beam \"" + beam.name + "\" is defined twice");
+    }
+    std::tie(beam.y_m, beam.z_m) = Vector2(b, "position_m", {0.0, 0.0}, false);
+    scene.beams.push_back(beam);
+  });
+  if (const Json* bundle = r.Get("bundle")) ExpandBundle(*bundle, path, scene);
+  if (scene.beams.empty())
+    r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
+  if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
+    r.Fail("beams", "more than " + std::to_string(kMaxBeams) + " beams");
+
+  EachItem(r, "zones", [&](JsonObjectReader& z) {
+    SceneZone zone;
+    zone.name = z.RequiredString("name");
+    zone.beam_a = BeamIndex(scene, z, "beam");
+    const std::string against = z.String("against", "stop");
+    if (against != "stop") {
+      zone.beam_b = -1;
+      for (std::size_t i = 0; i < scene.beams.size(); ++i) {
+        if (scene.beams[i].name == against) zone.beam_b = static_cast<int>(i);
+      }
+      if (zone.beam_b < 0) z.Fail("against", "no beam named \"" + against + "\" (or use \"stop\")");
+      if (zone.beam_b == zone.beam_a) z.Fail("against", "a beam cannot hit itself");
+    }
+    zone.height_m = Height(scene, z, zone.beam_a);
+    if (zone.beam_b >= 0 && zone.height_m > scene.beams[zone.beam_b].length_m) {
+      z.Fail("height_m", "lies beyond the end of \"" + against + "\"");
+    }
+    std::tie(zone.normal_y, zone.normal_z) = Vector2(z, "normal", {1.0, 0.0}, true);
+    const SceneBeam& a = scene.beams[zone.beam_a];
+    const SceneBeam* b = zone.beam_b >= 0 ? &scene.beams[zone.beam_b] : nullptr;
+    std::tie(zone.y_m, zone.z_m) = Vector2(
+        z, "position_m",
+        b ? std::pair{0.5 * (a.y_m + b->y_m), 0.5 * (a.z_m + b->z_m)} : std::pair{a.y_m, a.z_m},
+        false);
+    zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
+    zone.stiffness_n_per_m = Positive(z, "stiffness_n_per_m");
+    zone.damping_n_s_per_m = InRange(z, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+    scene.zones.push_back(zone);
+  });
+  if (scene.zones.size() > static_cast<std::size_t>(kMaxZones))
+    r.Fail("zones", "more than " + std::to_string(kMaxZones) + " zones");
+
+  if (const Json* effects = r.Get("effects")) {
+    JsonObjectReader e(*effects, path, "effects");
+    if (const Json* md = e.Get("modal_damping")) {
+      JsonObjectReader m(*md, path, e.PathOf("modal_damping"));
+      ModalDampingEffect d;
+      if (const Json* ratios = m.Get("ratios")) {
+        if (!ratios->is_array() || ratios->empty())
+          m.Fail("ratios", "expected a non-empty list of damping ratios");
+        for (std::size_t i = 0; i < ratios->size(); ++i) {
+          const double xi =
+              NumberAt((*ratios)[i], path, m.PathOf("ratios") + "[" + std::to_string(i) + "]");
+          if (xi < 0 || xi > 10)
+            FailAt(path, m.PathOf("ratios") + "[" + std::to_string(i) + "]",
+                   "ratio must lie in [0, 10]");
+          d.ratios.push_back(xi);
+        }
+      }
+      d.mass_proportional_per_s = InRange(m, "mass_proportional_per_s", 0.0, 0.0, 1e6);
+      m.Finish();
+      scene.modal_damping = d;
+    }
+    if (const Json* bm = e.Get("base_motion")) {
+      JsonObjectReader b(*bm, path, e.PathOf("base_motion"));
+      BaseMotionEffect base;
+      std::tie(base.dir_y, base.dir_z) = Vector2(b, "direction", {1.0, 0.0}, true);
+      if (const Json* hs = b.Get("half_sine")) {
+        JsonObjectReader h(*hs, path, b.PathOf("half_sine"));
+        base.amplitude_m_s2 = InRange(h, "amplitude_m_s2", 0.0, -1e7, 1e7);
+        base.duration_s = Positive(h, "duration_s", 100.0);
+        base.start_s = InRange(h, "start_s", 0.0, 0.0, 1e4);
+        h.Finish();
+      } else if (b.Has("csv")) {
+        const std::filesystem::path csv =
+            std::filesystem::path(path).parent_path() / b.String("csv", "");
+        LoadAccelerationCsv(csv, path, base);
+      } else {
+        b.Fail("", "give \"half_sine\": {...} or \"csv\": \"file.csv\"");
+      }
+      b.Finish();
+      scene.base_motion = base;
+    }
+    EachItem(e, "static_forces", [&](JsonObjectReader& f) {
+      StaticForceEffect force;
+      force.beam = BeamIndex(scene, f, "beam");
+      force.height_m = Height(scene, f, force.beam);
+      std::tie(force.dir_y, force.dir_z) = Vector2(f, "direction", {1.0, 0.0}, true);
+      force.force_n = InRange(f, "force_n", 0.0, -1e9, 1e9);
+      force.start_s = InRange(f, "start_s", 0.0, 0.0, 1e4);
+      force.ramp_s = InRange(f, "ramp_s", 0.0, 0.0, 1e4);
+      scene.static_forces.push_back(force);
+    });
+    EachItem(e, "initial_state", [&](JsonObjectReader& s) {
+      InitialStateEffect init;
+      init.beam = BeamIndex(scene, s, "beam");
+      init.direction = Direction(s, "direction");
+      init.mode = s.Integer("mode", 1);
+      if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
+      init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
+      init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
+      init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+      if (init.static_force_n != 0.0) init.height_m = Height(scene, s, init.beam);
+      scene.initial_state.push_back(init);
+    });
+    e.Finish();
+  }
+
+  const Json* solver = r.Get("solver");
+  if (solver == nullptr) r.Fail("solver", "required object is missing");
+  JsonObjectReader s(*solver, path, "solver");
+  if (s.Has("r_ftrunc") && s.Has("f_trunc_hz"))
+    s.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
+  scene.solver.r_ftrunc = InRange(s, "r_ftrunc", scene.solver.r_ftrunc, 1.0, 1e5);
+  if (s.Has("f_trunc_hz")) scene.solver.f_trunc_hz = Positive(s, "f_trunc_hz", 1e7);
+  if (const Json* v = s.Get("static_correction")) {
+    if (!v->is_boolean()) s.Fail("static_correction", "expected true or false, got " + Shown(*v));
+    scene.solver.static_correction = v->get<bool>();
+  }
+  scene.solver.end_time_s = Positive(s, "end_time_s", 1e4);
+  if (const Json* dt = s.Get("dt")) {
+    JsonObjectReader d(*dt, path, s.PathOf("dt"));
+    if (d.Has("seconds")) {
+      scene.solver.dt.dt_s = Positive(d, "seconds", 1.0);
+    } else {
+      const std::string rule = d.String("rule", "sharp");
+      const auto parsed = DtRuleFromString(rule);
+      if (!parsed) d.Fail("rule", "\"" + rule + "\" is not a rule: use \"paper\" or \"sharp\"");
+      scene.solver.dt.rule = *parsed;
+      scene.solver.dt.factor = InRange(d, "factor", scene.solver.dt.factor, 1e-6, 100.0);
+    }
+    d.Finish();
+  }
+  const auto max_steps = TransientOptions{}.max_steps;
+  if (scene.solver.dt.dt_s &&
+      scene.solver.end_time_s / *scene.solver.dt.dt_s > static_cast<double>(max_steps)) {
+    s.Fail("dt",
+           "end_time_s / dt = " + Shown(Json(scene.solver.end_time_s / *scene.solver.dt.dt_s)) +
+               " steps: at most " + std::to_string(max_steps) + " are allowed");
+  }
+  s.Finish();
+
+  if (const Json* outputs = r.Get("outputs")) {
+    JsonObjectReader o(*outputs, path, "outputs");
+    EachItem(o, "displacements", [&](JsonObjectReader& d) {
+      ObservedPoint p;
+      p.name = d.RequiredString("name");
+      p.beam = BeamIndex(scene, d, "beam");
+      p.height_m = Height(scene, d, p.beam);
+      p.direction = Direction(d, "direction");
+      if (p.direction == 1 && scene.planes == BendingPlanes::kPlanar)
+        d.Fail("direction", "a planar scene bends in y only");
+      scene.outputs.displacements.push_back(p);
+    });
+    auto flag = [&](const char* key) {
+      const Json* v = o.Get(key);
+      if (v != nullptr && !v->is_boolean()) o.Fail(key, "expected true or false, got " + Shown(*v));
+      return v != nullptr && v->get<bool>();
+    };
+    if (const Json* v = o.Get("contact_forces"); v != nullptr && v->is_array()) {
+      // Zone names: only their histories.
+      scene.outputs.contact_forces = true;
+      for (std::size_t i = 0; i < v->size(); ++i) {
+        const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
+        if (!(*v)[i].is_string()) FailAt(path, at, "expected a zone name, got " + Shown((*v)[i]));
+        const std::string name = (*v)[i].get<std::string>();
+        const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
+                                       [&](const SceneZone& z) { return z.name == name; });
+        if (zone == scene.zones.end()) FailAt(path, at, "no zone named \"" + name + "\"");
+        scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
+      }
+    } else if (v != nullptr && !v->is_boolean()) {
+      o.Fail("contact_forces", "expected true, false or a list of zone names, got " + Shown(*v));
+    } else {
+      scene.outputs.contact_forces = flag("contact_forces");
+    }
+    scene.outputs.energies = flag("energies");
+    scene.outputs.max_contact_force = flag("max_contact_force");
+    if (const Json* shocks = o.Get("shocks")) {
+      JsonObjectReader sh(*shocks, path, o.PathOf("shocks"));
+      scene.outputs.shocks = true;
+      scene.outputs.rest_duration_s = Positive(sh, "rest_duration_s", 100.0);
+      sh.Finish();
+    }
+    scene.outputs.record_stride = o.Integer("record_stride", 1);
+    if (scene.outputs.record_stride < 1 || scene.outputs.record_stride > 1'000'000)
+      o.Fail("record_stride", "must lie in [1, 1e6]");
+    o.Finish();
+  }
+  r.Finish();
+  return scene;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,173 @@
+#include "formats/scene_outputs.h"
+
+#include <algorithm>
+
+#include "formats/comparison_json.h"
+#include "formats/output_file.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+std::string BeamName(const Scene& scene, int beam) {
+  return beam >= 0 ? scene.beams[beam].name : std::string("stop");
+}
+
+Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
+  const SceneZone& z = scene.zones[i];
+  Json zone = {{"name", z.name},
+               {"beam", BeamName(scene, z.beam_a)},
+               {"against", BeamName(scene, z.beam_b)},
+               {"height_m", z.height_m},
+               {"position_m", {z.y_m, z.z_m}}};
+  if (!run.max_contact_force_n.empty()) zone["max_force_n"] = run.max_contact_force_n[i];
+  const auto recorded =
+      std::find(run.recorded_zones.begin(), run.recorded_zones.end(), static_cast<int>(i));
+  if (!run.shocks.empty() && recorded != run.recorded_zones.end()) {
+    const auto& shocks =
+        run.shocks[static_cast<std::size_t>(recorded - run.recorded_zones.begin())];
+    double impulse = 0.0, peak = 0.0;
+    int rebounds = 0;
+    for (const Shock& s : shocks) {
+      impulse += s.impulse_n_s;
+      peak = std::max(peak, s.peak_force_n);
+      rebounds += s.Rebounds();
+    }
+    zone["shocks"] = {{"count", shocks.size()},
+                      {"rebounds", rebounds},
+                      {"largest_peak_n", peak},
+                      {"total_impulse_n_s", impulse},
+                      {"first", shocks.empty() ? Json(nullptr) : ShockToJson(shocks.front())}};
+  }
+  return zone;
+}
+
+template <typename Row>
+void WriteCsv(const std::filesystem::path& file, const std::string& header, std::size_t rows,
+              Row row, std::vector<std::filesystem::path>& written) {
+  std::ofstream out = OpenForWriting(file);
+  out << header << '\n';
+  for (std::size_t i = 0; i < rows; ++i) row(out, i);
+  CloseWritten(out, file);
+  written.push_back(file);
+}
+
+}  // namespace
+
+Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
+  const RunSummary& s = run.result.summary;
+  Json json = {{"scene", scene.name},
+               {"status", ToString(s.status)},
+               {"message", s.message},
+               {"end_time_s", scene.solver.end_time_s},
+               {"dt_s", s.dt_used_s},
+               {"dt_requested_s", s.dt_requested_s},
+               {"dt_paper_s", run.bounds.dt_paper_s},
+               {"dt_sharp_s", run.bounds.dt_sharp_s},
+               {"steps", s.steps_taken},
+               {"beams", scene.beams.size()},
+               {"zones", scene.zones.size()},
+               {"coordinates", run.coordinates},
+               {"distinct_bases", run.distinct_bases},
+               {"max_energy_ratio", s.max_energy_ratio},
+               {"build_wall_s", run.build_wall_s},
+               {"wall_s", s.wall_s},
+               {"cpu_s", s.cpu_s}};
+  if (!run.max_contact_force_n.empty()) {
+    const auto largest =
+        std::max_element(run.max_contact_force_n.begin(), run.max_contact_force_n.end());
+    const std::size_t at = static_cast<std::size_t>(largest - run.max_contact_force_n.begin());
+    json["largest_contact_force"] = {{"zone", scene.zones[at].name}, {"force_n", *largest}};
+  }
+  if (!run.max_contact_force_n.empty() || !run.shocks.empty()) {
+    Json zones = Json::array();
+    for (std::size_t i = 0; i < scene.zones.size(); ++i) zones.push_back(ZoneJson(scene, run, i));
+    json["zone_results"] = std::move(zones);
+  }
+  return json;
+}
+
+std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const SceneRun& run,
+                                                     const std::filesystem::path& dir) {
+  CreateOutputDirectory(dir);
+  std::vector<std::filesystem::path> written;
+  const TransientResult& r = run.result;
+
+  if (!r.displacement_m.empty()) {
+    std::string header = "t_s";
+    for (const auto& p : scene.outputs.displacements) {
+      header += "," + CsvField(p.name + "_m") + "," + CsvField(p.name + "_velocity_m_s");
+    }
+    WriteCsv(
+        dir / "displacements.csv", header, r.displacement_m[0].values.size(),
+        [&](std::ofstream& out, std::size_t i) {
+          out << r.displacement_m[0].TimeAt(i);
+          for (std::size_t p = 0; p < r.displacement_m.size(); ++p)
+            out << ',' << r.displacement_m[p].values[i] << ',' << r.velocity_m_s[p].values[i];
+          out << '\n';
+        },
+        written);
+  }
+  if (!r.contact_force_n.empty()) {
+    std::string header = "t_s";
+    for (int z : run.recorded_zones) header += "," + CsvField(scene.zones[z].name + "_n");
+    WriteCsv(
+        dir / "contact_forces.csv", header, r.contact_force_n[0].values.size(),
+        [&](std::ofstream& out, std::size_t i) {
+          out << r.contact_force_n[0].TimeAt(i);
+          for (const auto& f : r.contact_force_n) out << ',' << f.values[i];
+          out << '\n';
+        },
+        written);
+  }
+  if (!r.energy.kinetic_j.values.empty()) {
+    const EnergyHistory& e = r.energy;
+    WriteCsv(
+        dir / "energies.csv", "t_s,kinetic_j,strain_j,contact_j,dissipated_j,external_work_j",
+        e.kinetic_j.values.size(),
+        [&](std::ofstream& out, std::size_t i) {
+          out << e.kinetic_j.TimeAt(i) << ',' << e.kinetic_j.values[i] << ','
+              << e.strain_j.values[i] << ',' << e.contact_j.values[i] << ','
+              << e.dissipated_j.values[i] << ',' << e.external_work_j.values[i] << '\n';
+        },
+        written);
+  }
+  if (!run.max_contact_force_n.empty()) {
+    WriteCsv(
+        dir / "max_contact_force.csv", "zone,beam,against,height_m,y_m,z_m,max_force_n",
+        scene.zones.size(),
+        [&](std::ofstream& out, std::size_t i) {
+          const SceneZone& z = scene.zones[i];
+          out << CsvField(z.name) << ',' << CsvField(BeamName(scene, z.beam_a)) << ','
+              << CsvField(BeamName(scene, z.beam_b)) << ',' << z.height_m << ',' << z.y_m << ','
+              << z.z_m << ',' << run.max_contact_force_n[i] << '\n';
+        },
+        written);
+  }
+  if (!run.shocks.empty()) {
+    std::vector<std::pair<std::size_t, const Shock*>> rows;
+    for (std::size_t i = 0; i < run.shocks.size(); ++i) {
+      for (const Shock& s : run.shocks[i]) rows.emplace_back(run.recorded_zones[i], &s);
+    }
+    WriteCsv(
+        dir / "shocks.csv",
+        "zone,start_s,end_s,duration_s,peak_force_n,peak_time_s,impulse_n_s,rebounds,truncated",
+        rows.size(),
+        [&](std::ofstream& out, std::size_t i) {
+          const Shock& s = *rows[i].second;
+          out << CsvField(scene.zones[rows[i].first].name) << ',' << s.start_s << ',' << s.end_s
+              << ',' << s.Duration() << ',' << s.peak_force_n << ',' << s.peak_time_s << ','
+              << s.impulse_n_s << ',' << s.Rebounds() << ',' << (s.truncated ? 1 : 0) << '\n';
+        },
+        written);
+  }
+  const auto summary = dir / "summary.json";
+  std::ofstream out = OpenForWriting(summary);
+  out << SceneRunToJson(scene, run).dump(2) << '\n';
+  CloseWritten(out, summary);
+  written.push_back(summary);
+  return written;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,26 @@
+#pragma once
+// What `shockmap simulate` writes: the summary of a scene run as JSON, and the requested
+// histories and per-zone statistics as CSV files. Nothing unrequested is written.
+
+#include <filesystem>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compare/scene_run.h"
+
+namespace shockmap {
+
+// Status, time step and bounds, model size, timings, and per zone the maximum force and shock
+// statistics when they were requested.
+nlohmann::json SceneRunToJson(const Scene& scene, const SceneRun& run);
+
+// Writes into `dir` (created): summary.json always; displacements.csv (t_s, then each observed
+// point's displacement and velocity), contact_forces.csv (t_s, one column per zone),
+// energies.csv, max_contact_force.csv (one row per zone with its location) and shocks.csv (one
+// row per shock) when requested. Returns the files written. Throws InputError naming a file
+// that cannot be written.
+std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const SceneRun& run,
+                                                     const std::filesystem::path& dir);
+
+}  // namespace shockmap

@@ -1,0 +1,235 @@
+#include "formats/scene_study_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "core/input_error.h"
+#include "formats/json_reader.h"
+#include "formats/scene_file.h"
+#include "formats/study_spec.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+// "bundle.wire.gap_m" or "zones[0].gap_m" as a JSON pointer; nullopt when malformed.
+std::optional<Json::json_pointer> PointerOf(const std::string& path) {
+  std::string pointer;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    std::string segment = path.substr(start, dot - start);
+    std::string index;
+    if (const auto open = segment.find('['); open != std::string::npos) {
+      if (segment.back() != ']' || open == 0) return std::nullopt;
+      index = segment.substr(open + 1, segment.size() - open - 2);
+      segment.resize(open);
+      if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return std::nullopt;
+    }
+    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos) return std::nullopt;
+    pointer += "/" + segment;
+    if (!index.empty()) pointer += "/" + index;
+    start = dot + 1;
+  }
+  return Json::json_pointer(pointer);
+}
+
+// Where the numeric parameter `path` sits in the scene; InputError (naming `where`) unless
+// the scene holds a number there.
+Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
+                                    const std::string& file, const std::string& where) {
+  const auto pointer = PointerOf(path);
+  if (!pointer) {
+    FailAt(file, where,
+           "\"" + path +
+               "\" is not a parameter path: use keys joined by dots, with [i] for list "
+               "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
+  }
+  if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
+    FailAt(file, where,
+           "the scene has no number at \"" + path +
+               "\"; only numbers the scene file sets can be swept (write the default there)");
+  }
+  return *pointer;
+}
+
+Json Applied(const Json& scene, const SceneParameters& parameters) {
+  Json variant = scene;
+  for (const auto& [path, value] : parameters) variant[*PointerOf(path)] = value;
+  return variant;
+}
+
+SceneParameters ParseParameters(const Json& value, const Json& scene, const std::string& file,
+                                const std::string& where) {
+  JsonObjectReader r(value, file, where);
+  SceneParameters parameters;
+  for (const auto& [path, v] : value.items()) {
+    NumericParameter(scene, path, file, r.PathOf(path));
+    parameters.emplace_back(path, NumberAt(*r.Get(path), file, r.PathOf(path)));
+  }
+  r.Finish();
+  return parameters;
+}
+
+}  // namespace
+
+bool IsSceneStudy(const Json& study) { return study.is_object() && study.contains("scene"); }
+
+SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
+  SceneStudySpec spec;
+  spec.file = file;
+  JsonObjectReader r(json, file, "");
+  spec.name = r.RequiredString("name");
+  if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
+  spec.description = r.String("description", "");
+  spec.scene_file =
+      (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
+  spec.scene = ReadJsonFile(spec.scene_file);
+  const Scene base = ParseScene(spec.scene, spec.scene_file);
+
+  const Json* sweep = r.Get("sweep");
+  if (sweep == nullptr || !sweep->is_object() || sweep->empty()) {
+    r.Fail("sweep", "expected {\"parameter.path\": [values...], ...} with at least one parameter");
+  }
+  std::vector<std::pair<std::string, std::vector<double>>> axes;
+  double count = 1.0;
+  for (const auto& [path, values] : sweep->items()) {
+    const std::string where = r.PathOf("sweep") + "." + path;
+    NumericParameter(spec.scene, path, file, where);
+    if (!values.is_array() || values.empty())
+      FailAt(file, where, "expected a non-empty list of numbers, got " + Shown(values));
+    std::vector<double> axis;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      axis.push_back(NumberAt(values[i], file, where + "[" + std::to_string(i) + "]"));
+    count *= static_cast<double>(axis.size());
+    axes.emplace_back(path, std::move(axis));
+  }
+  if (count > static_cast<double>(kMaxStudyPoints)) {
+    r.Fail("sweep", "the sweep has " + Shown(Json(count)) + " points: at most " +
+                        std::to_string(kMaxStudyPoints) + " are allowed");
+  }
+  if (const Json* reference = r.Get("reference")) {
+    spec.reference = ParseParameters(*reference, spec.scene, file, "reference");
+  }
+  if (spec.reference.empty()) {
+    r.Fail("reference",
+           "give the refined settings each point is scored against, e.g. {\"solver.r_ftrunc\": "
+           "1000, \"solver.dt.factor\": 0.05} (the paths must be set in the scene)");
+  }
+
+  const Json* scoring = r.Get("scoring");
+  if (scoring == nullptr) r.Fail("scoring", "required object is missing");
+  JsonObjectReader s(*scoring, file, "scoring");
+  SceneScoring& sc = spec.scoring;
+  sc.displacement = s.RequiredString("displacement");
+  sc.zone = s.RequiredString("zone");
+  sc.window_s = s.Number("window_s", base.solver.end_time_s);
+  if (!(sc.window_s > 0.0) || sc.window_s > 1e4) s.Fail("window_s", "must lie in (0, 1e4] s");
+  sc.rest_duration_s = s.RequiredNumber("rest_duration_s");
+  if (!(sc.rest_duration_s > 0.0)) s.Fail("rest_duration_s", "must be > 0");
+  sc.err_max = s.Number("err_max", sc.err_max);
+  sc.srf_min = s.Number("srf_min", sc.srf_min);
+  if (sc.err_max <= 0 || sc.err_max > 1) s.Fail("err_max", "must lie in (0, 1]");
+  if (sc.srf_min < 0 || sc.srf_min > 1) s.Fail("srf_min", "must lie in [0, 1]");
+  s.Finish();
+  r.Finish();
+
+  // The full product of the axes, each point sorted by path.
+  spec.points = {{}};
+  for (const auto& [path, axis] : axes) {
+    std::vector<SceneParameters> next;
+    for (const auto& p : spec.points) {
+      for (double v : axis) {
+        SceneParameters q = p;
+        q.emplace_back(path, v);
+        next.push_back(std::move(q));
+      }
+    }
+    spec.points = std::move(next);
+  }
+  for (auto& p : spec.points) std::sort(p.begin(), p.end());
+  std::sort(spec.points.begin(), spec.points.end());
+  spec.points.erase(std::unique(spec.points.begin(), spec.points.end()), spec.points.end());
+  std::sort(spec.reference.begin(), spec.reference.end());
+
+  ScoredScene(spec, {});  // The scored output and zone exist.
+
+  // Every point's scene and its reference's must be valid scenes, with the scored outputs.
+  for (const auto& p : spec.points) {
+    for (const SceneParameters& q : {p, ReferenceParameters(spec, p)}) {
+      try {
+        ScoredScene(spec, q);
+      } catch (const InputError& e) {
+        throw InputError(file + ": sweep point " + ParametersJson(q) + ": " + e.what());
+      }
+    }
+  }
+  Json stored = json;
+  stored["scene_json"] = spec.scene;
+  stored["settings"] = Json::parse(SceneSettingsKey(spec));
+  spec.spec_json = stored.dump();
+  return spec;
+}
+
+Scene ScoredScene(const SceneStudySpec& spec, const SceneParameters& parameters) {
+  Scene scene = ParseScene(Applied(spec.scene, parameters), spec.scene_file);
+  const auto point =
+      std::find_if(scene.outputs.displacements.begin(), scene.outputs.displacements.end(),
+                   [&](const ObservedPoint& o) { return o.name == spec.scoring.displacement; });
+  if (point == scene.outputs.displacements.end()) {
+    throw InputError(spec.file + ": scoring.displacement: the scene has no output named \"" +
+                     spec.scoring.displacement + "\" in outputs.displacements");
+  }
+  const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
+                                 [&](const SceneZone& z) { return z.name == spec.scoring.zone; });
+  if (zone == scene.zones.end()) {
+    throw InputError(spec.file + ": scoring.zone: the scene has no zone named \"" +
+                     spec.scoring.zone + "\"");
+  }
+  SceneOutputs outputs;
+  outputs.displacements = {*point};
+  outputs.contact_forces = true;
+  outputs.contact_force_zones = {static_cast<int>(zone - scene.zones.begin())};
+  outputs.max_contact_force = true;
+  outputs.shocks = true;
+  outputs.rest_duration_s = spec.scoring.rest_duration_s;
+  scene.outputs = outputs;
+  scene.solver.end_time_s = spec.scoring.window_s;
+  return scene;
+}
+
+SceneParameters ReferenceParameters(const SceneStudySpec& spec, const SceneParameters& point) {
+  std::map<std::string, double> merged(point.begin(), point.end());
+  for (const auto& [path, value] : spec.reference) merged[path] = value;
+  return {merged.begin(), merged.end()};
+}
+
+std::string ParametersJson(const SceneParameters& parameters) {
+  Json json = Json::object();
+  for (const auto& [path, value] : parameters) json[path] = value;
+  return json.dump();
+}
+
+std::string SceneReferenceKey(const SceneStudySpec& spec, const SceneParameters& reference) {
+  return Json{{"scene", spec.scene},
+              {"parameters", Json::parse(ParametersJson(reference))},
+              {"displacement", spec.scoring.displacement},
+              {"zone", spec.scoring.zone},
+              {"window_s", spec.scoring.window_s}}
+      .dump();
+}
+
+std::string SceneSettingsKey(const SceneStudySpec& spec) {
+  return Json{{"scene", spec.scene},
+              {"reference", Json::parse(ParametersJson(spec.reference))},
+              {"displacement", spec.scoring.displacement},
+              {"zone", spec.scoring.zone},
+              {"window_s", spec.scoring.window_s},
+              {"rest_duration_s", spec.scoring.rest_duration_s}}
+      .dump();
+}
+
+}  // namespace shockmap

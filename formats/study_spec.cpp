@@ -1,0 +1,387 @@
+#include "formats/study_spec.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "formats/json_reader.h"
+
+namespace shockmap {
+
+double ReferencePolicy::RFref(double r_k) const {
+  return std::max(r_fref_min, r_fref_per_sqrt_rk * std::sqrt(r_k));
+}
+
+namespace {
+
+using Json = nlohmann::json;
+
+struct Range {
+  double lo;
+  bool lo_strict;
+  double hi;
+  std::string Allowed() const {
+    std::string s = lo_strict ? "> " : ">= ";
+    s += Shown(Json(lo));
+    if (std::isfinite(hi)) s += " and <= " + Shown(Json(hi));
+    return s;
+  }
+  bool Contains(double v) const { return (lo_strict ? v > lo : v >= lo) && v <= hi; }
+};
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// An axis: a number, a non-empty list of numbers, {"logspace": [a, b, n]} (n values from 10^a
+// to 10^b) or {"linspace": [a, b, n]}.
+std::vector<double> ParseAxis(const Json& value, const std::string& file, const std::string& path,
+                              const Range& range) {
+  std::vector<double> values;
+  if (value.is_number()) {
+    values.push_back(NumberAt(value, file, path));
+  } else if (value.is_array()) {
+    if (value.empty()) FailAt(file, path, "empty axis: give at least one value");
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      values.push_back(NumberAt(value[i], file, path + "[" + std::to_string(i) + "]"));
+    }
+  } else if (value.is_object()) {
+    JsonObjectReader r(value, file, path);
+    const bool log = r.Has("logspace");
+    const char* key = log ? "logspace" : "linspace";
+    const Json* spec = r.Get(key);
+    if (spec == nullptr)
+      r.Fail("", "expected {\"logspace\": [a, b, n]} or {\"linspace\": [a, b, n]}");
+    r.Finish();
+    const std::string at = r.PathOf(key);
+    if (!spec->is_array() || spec->size() != 3) {
+      FailAt(file, at, "expected [start, stop, count], got " + Shown(*spec));
+    }
+    const double a = NumberAt((*spec)[0], file, at + "[0]");
+    const double b = NumberAt((*spec)[1], file, at + "[1]");
+    if (!(*spec)[2].is_number_integer() || (*spec)[2].get<std::int64_t>() < 1 ||
+        (*spec)[2].get<std::int64_t>() > static_cast<std::int64_t>(kMaxStudyPoints)) {
+      FailAt(file, at + "[2]",
+             "count must be an integer in [1, " + std::to_string(kMaxStudyPoints) + "], got " +
+                 Shown((*spec)[2]));
+    }
+    const auto n = (*spec)[2].get<std::int64_t>();
+    if (log && (std::abs(a) > 300 || std::abs(b) > 300)) {
+      FailAt(file, at, "exponents must lie in [-300, 300], got " + Shown(*spec));
+    }
+    for (std::int64_t i = 0; i < n; ++i) {
+      const double x =
+          n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1);
+      values.push_back(log ? std::pow(10.0, x) : x);
+    }
+  } else {
+    FailAt(file, path,
+           "expected a number, a list of numbers or a {\"logspace\"|\"linspace\": "
+           "[a, b, n]} range, got " +
+               Shown(value));
+  }
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!range.Contains(values[i])) {
+      FailAt(file, path,
+             "value " + Shown(Json(values[i])) + " out of range: must be " + range.Allowed());
+    }
+  }
+  return values;
+}
+
+std::vector<Scheme> ParseSchemes(const Json& value, const std::string& file,
+                                 const std::string& path) {
+  const Json list = value.is_array() ? value : Json::array({value});
+  if (list.empty()) FailAt(file, path, "empty axis: give at least one scheme");
+  std::vector<Scheme> schemes;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = path + (value.is_array() ? "[" + std::to_string(i) + "]" : "");
+    const auto s =
+        list[i].is_string() ? SchemeFromString(list[i].get<std::string>()) : std::nullopt;
+    if (!s)
+      FailAt(file, at,
+             Shown(list[i]) + " is not a scheme: use \"explicit-modal\" or \"implicit-full\"");
+    schemes.push_back(*s);
+  }
+  return schemes;
+}
+
+// {"rule": "paper"|"sharp", "factor": AXIS} or {"seconds": AXIS}.
+std::vector<TimeStepRequest> ParseDt(const Json& value, const std::string& file,
+                                     const std::string& path) {
+  JsonObjectReader r(value, file, path);
+  std::vector<TimeStepRequest> requests;
+  if (r.Has("seconds")) {
+    for (double s : ParseAxis(*r.Get("seconds"), file, r.PathOf("seconds"), {0.0, true, 1.0})) {
+      requests.push_back({s, 0.0, DtRule::kSharp});
+    }
+  } else {
+    const std::string rule_name = r.String("rule", ToString(TimeStepRequest{}.rule));
+    const auto rule = DtRuleFromString(rule_name);
+    if (!rule) r.Fail("rule", "\"" + rule_name + "\" is not a rule: use \"paper\" or \"sharp\"");
+    const Json* factors = r.Get("factor");
+    const std::vector<double> values =
+        factors == nullptr ? std::vector<double>{TimeStepRequest{}.factor}
+                           : ParseAxis(*factors, file, r.PathOf("factor"), {0.0, true, 100.0});
+    for (double f : values) requests.push_back({std::nullopt, f, *rule});
+  }
+  r.Finish();
+  return requests;
+}
+
+struct AxisSet {
+  std::vector<double> rk, rftrunc, window_s, mass_damping_per_s;
+  std::vector<TimeStepRequest> dt;
+  std::vector<Scheme> scheme;
+  std::vector<int> n_elements;
+};
+
+const Range kRk{0.0, true, 1e12};
+const Range kRftrunc{1.0, false, 1e5};
+const Range kWindow{0.0, true, 100.0};
+const Range kDamping{0.0, false, 1e6};
+const Range kElements{0.0, false, 100000.0};
+
+AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) {
+  const std::string& file = r.File();
+  AxisSet a;
+  auto required = [&](const char* key, const Range& range) {
+    const Json* v = r.Get(key);
+    if (v == nullptr) r.Fail(key, "required axis is missing");
+    if (single && !v->is_number()) r.Fail(key, "expected one number, got " + Shown(*v));
+    return ParseAxis(*v, file, r.PathOf(key), range);
+  };
+  auto optional = [&](const char* key, const Range& range, double fallback) {
+    const Json* v = r.Get(key);
+    if (v == nullptr) return std::vector<double>{fallback};
+    if (single && !v->is_number()) r.Fail(key, "expected one number, got " + Shown(*v));
+    return ParseAxis(*v, file, r.PathOf(key), range);
+  };
+  a.rk = required("rk", kRk);
+  a.rftrunc = required("rftrunc", kRftrunc);
+  a.window_s = optional("window_s", kWindow, scoring.window_s);
+  a.mass_damping_per_s = optional("mass_damping_per_s", kDamping, 0.0);
+  for (double e : optional("n_elements", kElements, 0.0)) {
+    if (e != std::floor(e)) r.Fail("n_elements", "expected integers, got " + Shown(Json(e)));
+    a.n_elements.push_back(static_cast<int>(e));
+  }
+  const Json* dt = r.Get("dt");
+  a.dt = dt == nullptr ? std::vector<TimeStepRequest>{TimeStepRequest{}}
+                       : ParseDt(*dt, file, r.PathOf("dt"));
+  if (single && a.dt.size() != 1) r.Fail("dt", "expected one time step for a listed point");
+  const Json* scheme = r.Get("scheme");
+  a.scheme = scheme == nullptr ? std::vector<Scheme>{Scheme::kExplicitModal}
+                               : ParseSchemes(*scheme, file, r.PathOf("scheme"));
+  if (single && a.scheme.size() != 1) r.Fail("scheme", "expected one scheme for a listed point");
+  r.Finish();
+  return a;
+}
+
+void AppendGrid(const AxisSet& a, const std::string& file, const std::string& path,
+                std::vector<StudyPoint>& points) {
+  const double size = static_cast<double>(a.rk.size()) * static_cast<double>(a.rftrunc.size()) *
+                      static_cast<double>(a.dt.size()) * static_cast<double>(a.scheme.size()) *
+                      static_cast<double>(a.window_s.size()) *
+                      static_cast<double>(a.n_elements.size()) *
+                      static_cast<double>(a.mass_damping_per_s.size());
+  if (size + static_cast<double>(points.size()) > static_cast<double>(kMaxStudyPoints)) {
+    FailAt(file, path,
+           "the grid has " + Shown(Json(size)) + " points; at most " +
+               std::to_string(kMaxStudyPoints) + " are allowed in one study");
+  }
+  for (double rk : a.rk)
+    for (double rft : a.rftrunc)
+      for (const auto& dt : a.dt)
+        for (Scheme s : a.scheme)
+          for (double w : a.window_s)
+            for (int e : a.n_elements)
+              for (double d : a.mass_damping_per_s) points.push_back({rk, rft, s, dt, w, e, d});
+}
+
+void ParseProblem(const Json& value, const std::string& file, CantileverImpact& p) {
+  JsonObjectReader r(value, file, "problem");
+  if (const Json* beam = r.Get("beam")) {
+    JsonObjectReader b(*beam, file, r.PathOf("beam"));
+    p.beam.length_m = b.Number("length_m", p.beam.length_m);
+    p.beam.ei_n_m2 = b.Number("ei_n_m2", p.beam.ei_n_m2);
+    p.beam.rho_a_kg_per_m = b.Number("rho_a_kg_per_m", p.beam.rho_a_kg_per_m);
+    b.Finish();
+    std::string error;
+    if (!p.beam.IsValid(&error)) b.Fail(error.substr(0, error.find(' ')), error);
+  }
+  p.gap_m = r.Number("gap_m", p.gap_m);
+  p.initial_tip_m = r.Number("initial_tip_m", p.initial_tip_m);
+  r.Finish();
+  if (std::abs(p.gap_m) > 1.0)
+    r.Fail("gap_m", "value " + Shown(Json(p.gap_m)) + " must lie in [-1, 1] m");
+  if (!(p.initial_tip_m > 0.0) || p.initial_tip_m > 1.0) {
+    r.Fail("initial_tip_m", "value " + Shown(Json(p.initial_tip_m)) + " must be > 0 and <= 1 m");
+  }
+}
+
+void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
+  JsonObjectReader r(value, file, "scoring");
+  auto in_range = [&](JsonObjectReader& reader, const char* key, double v, const Range& range) {
+    if (!range.Contains(v))
+      reader.Fail(key, "value " + Shown(Json(v)) + " must be " + range.Allowed());
+    return v;
+  };
+  s.window_s = in_range(r, "window_s", r.Number("window_s", s.window_s), kWindow);
+  if (const Json* psd = r.Get("psd")) {
+    JsonObjectReader p(*psd, file, r.PathOf("psd"));
+    s.psd.n_samples = p.Integer("n_samples", s.psd.n_samples);
+    s.psd.zero_padding_factor = p.Integer("zero_padding_factor", s.psd.zero_padding_factor);
+    const std::string window = p.String("window", ToString(s.psd.window));
+    const auto w = PsdWindowFromString(window);
+    if (!w) p.Fail("window", "\"" + window + "\" is not a window: use \"hann\" or \"rectangular\"");
+    s.psd.window = *w;
+    p.Finish();
+    in_range(p, "n_samples", s.psd.n_samples, {16.0, false, 1 << 22});
+    in_range(p, "zero_padding_factor", s.psd.zero_padding_factor, {1.0, false, 64.0});
+  }
+  if (const Json* shocks = r.Get("shocks")) {
+    JsonObjectReader sh(*shocks, file, r.PathOf("shocks"));
+    s.rest_duration_t1 =
+        in_range(sh, "rest_duration_t1", sh.Number("rest_duration_t1", s.rest_duration_t1),
+                 {0.0, true, 10.0});
+    sh.Finish();
+  }
+  if (const Json* ref = r.Get("reference")) {
+    JsonObjectReader f(*ref, file, r.PathOf("reference"));
+    auto& p = s.reference;
+    p.r_fref_min =
+        in_range(f, "r_fref_min", f.Number("r_fref_min", p.r_fref_min), {1.0, false, 1e5});
+    p.r_fref_per_sqrt_rk =
+        in_range(f, "r_fref_per_sqrt_rk", f.Number("r_fref_per_sqrt_rk", p.r_fref_per_sqrt_rk),
+                 {0.0, false, 1e3});
+    p.crossing_samples_per_period = static_cast<int>(
+        in_range(f, "crossing_samples_per_period",
+                 f.Integer("crossing_samples_per_period", p.crossing_samples_per_period),
+                 {4.0, false, 1024.0}));
+    p.tolerance = in_range(f, "tolerance", f.Number("tolerance", p.tolerance), {0.0, true, 1.0});
+    f.Finish();
+  }
+  if (const Json* th = r.Get("thresholds")) {
+    JsonObjectReader t(*th, file, r.PathOf("thresholds"));
+    s.err_max = in_range(t, "err_max", t.Number("err_max", s.err_max), {0.0, true, 1.0});
+    s.srf_min = in_range(t, "srf_min", t.Number("srf_min", s.srf_min), {0.0, false, 1.0});
+    t.Finish();
+  }
+  r.Finish();
+}
+
+Json DtJson(const TimeStepRequest& dt) {
+  if (dt.dt_s) return {{"seconds", *dt.dt_s}};
+  return {{"rule", ToString(dt.rule)}, {"factor", dt.factor}};
+}
+
+Json ProblemJson(const CantileverImpact& p) {
+  return {{"length_m", p.beam.length_m},
+          {"ei_n_m2", p.beam.ei_n_m2},
+          {"rho_a_kg_per_m", p.beam.rho_a_kg_per_m},
+          {"gap_m", p.gap_m},
+          {"initial_tip_m", p.initial_tip_m}};
+}
+
+}  // namespace
+
+StudySpec ParseStudySpec(const Json& json, const std::string& file) {
+  StudySpec spec;
+  spec.file = file;
+  JsonObjectReader r(json, file, "");
+  spec.name = r.RequiredString("name");
+  if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
+  spec.description = r.String("description", "");
+  if (const Json* p = r.Get("problem")) ParseProblem(*p, file, spec.problem);
+  if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.scoring);
+  const Json* grids = r.Get("grids");
+  const Json* points = r.Get("points");
+  r.Finish();
+  if (grids == nullptr && points == nullptr) {
+    FailAt(file, "", "give \"grids\" (full products of axes) and/or \"points\" (a list)");
+  }
+  std::vector<StudyPoint> all;
+  for (const auto& [key, list] : {std::pair{"grids", grids}, std::pair{"points", points}}) {
+    if (list == nullptr) continue;
+    if (!list->is_array() || list->empty()) {
+      FailAt(file, key, "expected a non-empty list, got " + Shown(*list));
+    }
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string path = std::string(key) + "[" + std::to_string(i) + "]";
+      JsonObjectReader item((*list)[i], file, path);
+      AppendGrid(ParseAxes(item, spec.scoring, std::string(key) == "points"), file, path, all);
+    }
+  }
+  std::set<std::string> seen;
+  for (const auto& p : all) {
+    if (seen.insert(PointKey(p)).second) spec.points.push_back(p);
+  }
+  spec.spec_json = json.dump();
+  return spec;
+}
+
+StudySpec LoadStudySpec(const std::string& path) {
+  return ParseStudySpec(ReadJsonFile(path), path);
+}
+
+CantileverImpact ProblemOf(const StudySpec& spec, const StudyPoint& point) {
+  CantileverImpact p = spec.problem;
+  p.r_k = point.r_k;
+  p.mass_damping_per_s = point.mass_damping_per_s;
+  return p;
+}
+
+ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point) {
+  ComparisonOptions o;
+  o.r_ftrunc = point.r_ftrunc;
+  o.scheme = point.scheme;
+  o.dt = point.dt;
+  o.window_s = point.window_s;
+  o.n_elements = point.n_elements;
+  o.reference.r_fref = spec.scoring.reference.RFref(point.r_k);
+  o.reference.crossing_samples_per_period = spec.scoring.reference.crossing_samples_per_period;
+  o.psd = spec.scoring.psd;
+  o.rest_duration_t1 = spec.scoring.rest_duration_t1;
+  o.reference_tolerance = spec.scoring.reference.tolerance;
+  return o;
+}
+
+std::string PointKey(const StudyPoint& p) {
+  return Json{{"rk", p.r_k},
+              {"rftrunc", p.r_ftrunc},
+              {"scheme", ToString(p.scheme)},
+              {"dt", DtJson(p.dt)},
+              {"window_s", p.window_s},
+              {"n_elements", p.n_elements},
+              {"mass_damping_per_s", p.mass_damping_per_s}}
+      .dump();
+}
+
+std::string ReferenceKey(const StudySpec& spec, const StudyPoint& p) {
+  const ComparisonOptions o = OptionsOf(spec, p);
+  return Json{{"problem", ProblemJson(spec.problem)},
+              {"rk", p.r_k},
+              {"mass_damping_per_s", p.mass_damping_per_s},
+              {"r_fref", o.reference.r_fref},
+              {"crossing_samples_per_period", o.reference.crossing_samples_per_period},
+              {"window_s", p.window_s},
+              {"rest_duration_t1", o.rest_duration_t1}}
+      .dump();
+}
+
+std::string SettingsKey(const StudySpec& spec) {
+  const ScoringSpec& s = spec.scoring;
+  return Json{{"problem", ProblemJson(spec.problem)},
+              {"psd",
+               {{"n_samples", s.psd.n_samples},
+                {"window", ToString(s.psd.window)},
+                {"zero_padding_factor", s.psd.zero_padding_factor}}},
+              {"rest_duration_t1", s.rest_duration_t1},
+              {"reference",
+               {{"r_fref_min", s.reference.r_fref_min},
+                {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
+                {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
+                {"tolerance", s.reference.tolerance}}}}
+      .dump();
+}
+
+}  // namespace shockmap

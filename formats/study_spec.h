@@ -1,0 +1,77 @@
+#pragma once
+// A study file (JSON, in studies/): the problem, the scoring settings and the grid of
+// (R_k, R_ftrunc, dt) points to compare, parsed strictly into plain structs.
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "compare/comparison.h"
+#include "core/cantilever_impact.h"
+
+namespace shockmap {
+
+// Refused above this many points: a grid that large is a typing mistake, not a study.
+inline constexpr std::size_t kMaxStudyPoints = 1'000'000;
+
+// Truncation of the reference for each R_k: the shock frequency sqrt(R_k) f1 (paper eq. 10)
+// must lie well inside it, so r_fref = max(r_fref_min, r_fref_per_sqrt_rk * sqrt(R_k)).
+struct ReferencePolicy {
+  double r_fref_min = 3000.0;        // DESIGN §2: 3000 f1 and 1000 f1 agree at R_k = 3000.
+  double r_fref_per_sqrt_rk = 10.0;  // Ten times the shock frequency.
+  int crossing_samples_per_period = 16;
+  double tolerance = 0.02;  // Score nothing against a reference unconverged beyond this.
+
+  double RFref(double r_k) const;
+};
+
+struct ScoringSpec {
+  double window_s = ComparisonOptions{}.window_s;
+  PsdOptions psd;
+  double rest_duration_t1 = ComparisonOptions{}.rest_duration_t1;
+  ReferencePolicy reference;
+  // Validity thresholds the criteria are derived with (paper §2.4: SRf > 0.8 is acceptable).
+  double err_max = 0.10;
+  double srf_min = 0.80;
+};
+
+// One point of the grid: everything that varies between points.
+struct StudyPoint {
+  double r_k = 0.0;
+  double r_ftrunc = 0.0;
+  Scheme scheme = Scheme::kExplicitModal;
+  TimeStepRequest dt;
+  double window_s = 0.0;
+  int n_elements = 0;
+  double mass_damping_per_s = 0.0;
+};
+
+struct StudySpec {
+  std::string file;
+  std::string name;
+  std::string description;
+  CantileverImpact problem;  // r_k and mass_damping_per_s come from each point.
+  ScoringSpec scoring;
+  std::vector<StudyPoint> points;  // Union of the grids and the listed points, without repeats.
+  std::string spec_json;           // The file's JSON, compact, as stored with the study.
+};
+
+// Parses and validates a study file. Throws InputError naming the file, the key path, the value
+// and what is allowed: unknown keys, wrong types, empty axes, out-of-range values.
+StudySpec LoadStudySpec(const std::string& path);
+StudySpec ParseStudySpec(const nlohmann::json& json, const std::string& file);
+
+CantileverImpact ProblemOf(const StudySpec& spec, const StudyPoint& point);
+ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point);
+
+// Identifies a point within its study.
+std::string PointKey(const StudyPoint& point);
+// Identifies the reference a point is scored against; equal keys share one reference, across
+// studies of the same database.
+std::string ReferenceKey(const StudySpec& spec, const StudyPoint& point);
+// The problem and scoring settings: a study keeps them for life, since its stored scores
+// depend on them.
+std::string SettingsKey(const StudySpec& spec);
+
+}  // namespace shockmap

@@ -1,0 +1,127 @@
+#include "views/cost_front.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "core/input_error.h"
+#include "views/gnuplot.h"
+
+namespace shockmap {
+
+std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_points,
+                                       const std::vector<ScoredPoint>& implicit_points,
+                                       std::optional<double> r_k) {
+  std::map<double, CostTable> by_rk;
+  auto add = [&](const std::vector<ScoredPoint>& points, const char* scheme) {
+    for (const auto& p : points) {
+      if (p.status != "ok" || !p.err) continue;
+      CostTable& t = by_rk[p.r_k];
+      t.r_k = p.r_k;
+      t.rows.push_back({p, scheme, false});
+    }
+  };
+  add(explicit_points, "explicit-modal");
+  add(implicit_points, "implicit-full");
+  if (r_k && !by_rk.empty()) {
+    auto nearest = by_rk.begin();
+    for (auto it = by_rk.begin(); it != by_rk.end(); ++it) {
+      if (std::abs(std::log(it->first / *r_k)) < std::abs(std::log(nearest->first / *r_k))) {
+        nearest = it;
+      }
+    }
+    CostTable only = std::move(nearest->second);
+    by_rk.clear();
+    by_rk[only.r_k] = std::move(only);
+  }
+  std::vector<CostTable> tables;
+  for (auto& [key, t] : by_rk) {
+    std::ranges::sort(t.rows, {}, [](const CostRow& r) { return r.point.wall_s; });
+    double best_err = INFINITY;
+    for (auto& row : t.rows) {
+      if (*row.point.err < best_err) {
+        row.pareto = true;
+        best_err = *row.point.err;
+      }
+    }
+    std::vector<double> ratios;
+    for (const auto& imp : t.rows) {
+      if (imp.scheme != "implicit-full") continue;
+      for (const auto& exp : t.rows) {  // Fastest first: the first match is the cheapest.
+        if (exp.scheme == "explicit-modal" && *exp.point.err <= *imp.point.err) {
+          ratios.push_back(imp.point.wall_s / exp.point.wall_s);
+          break;
+        }
+      }
+    }
+    if (!ratios.empty()) {
+      std::ranges::sort(ratios);
+      t.implicit_over_explicit = ratios[ratios.size() / 2];
+      t.ratio_pairs = static_cast<int>(ratios.size());
+    }
+    tables.push_back(std::move(t));
+  }
+  return tables;
+}
+
+std::string CostSummary(const std::vector<CostTable>& tables) {
+  std::string s;
+  for (const auto& t : tables) {
+    s += fmt::format("R_k = {:.4g}: {} scored points", t.r_k, t.rows.size());
+    if (t.implicit_over_explicit) {
+      s += fmt::format("; implicit / explicit wall time at equal accuracy: {:.3g} (median of {})",
+                       *t.implicit_over_explicit, t.ratio_pairs);
+    }
+    s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>8} {:>7} {}\n", "scheme", "R_ftrunc",
+                     "dt/dt_sharp", "wall (s)", "Err", "SRf", "Pareto");
+    for (const auto& r : t.rows) {
+      s +=
+          fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>8.4f} {:>7} {}\n", r.scheme,
+                      r.point.r_ftrunc, r.point.DtRatio(), r.point.wall_s, *r.point.err,
+                      r.point.srf ? fmt::format("{:.4f}", *r.point.srf) : "-", r.pareto ? "*" : "");
+    }
+  }
+  return s;
+}
+
+void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file) {
+  if (table.rows.empty()) throw InputError("nothing to draw: no scored point at this R_k");
+  std::error_code ec;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  const auto data_file = std::filesystem::path(file).replace_extension(".dat");
+  {
+    std::ofstream data(data_file);
+    data << "# wall_s err srf implicit pareto r_ftrunc dt_ratio\n";
+    for (const auto& r : table.rows) {
+      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.wall_s, *r.point.err,
+                          r.point.srf.value_or(NAN), r.scheme == "implicit-full" ? 1 : 0,
+                          r.pareto ? 1 : 0, r.point.r_ftrunc, r.point.DtRatio());
+    }
+  }
+  const std::string script = fmt::format(
+      R"gp(set terminal {terminal}
+set output '{out}'
+set title "{study}: what accuracy costs at R_k = {rk:.4g}" noenhanced
+set logscale x
+set logscale y
+set format x '10^{{%L}}'
+set format y '10^{{%L}}'
+set xlabel 'wall time of the numerical run (s)'
+set ylabel 'Err (paper eq. 8)'
+set grid
+set key top right
+set palette defined (1 '#fee08b', 2 '#66bd63', 3 '#1a9850', 4 '#006837')
+set cblabel 'log_{{10}} R_{{ftrunc}}'
+plot '{data}' using 1:($4 == 0 ? $2 : 1/0):(log10($6)) with points pt 7 ps 1.5 lc palette title 'explicit modal', \
+     '' using 1:($4 == 1 ? $2 : 1/0) with points pt 9 ps 2 lc rgb '#000000' title 'implicit full model', \
+     '' using 1:($5 == 1 ? $2 : 1/0) with linespoints lw 2 pt 6 ps 2.2 lc rgb '#d73027' title 'Pareto front'
+)gp",
+      fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", file.string()),
+      fmt::arg("study", study), fmt::arg("rk", table.r_k), fmt::arg("data", data_file.string()));
+  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"));
+}
+
+}  // namespace shockmap

@@ -1,0 +1,256 @@
+#include "views/criteria_report.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "formats/json_reader.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+template <typename T>
+Json OrNull(const std::optional<T>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
+std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key) {
+  const Json* v = r.Get(key);
+  if (v == nullptr || v->is_null()) return std::nullopt;
+  return NumberAt(*v, r.File(), r.PathOf(key));
+}
+
+std::string Num(std::optional<double> v) { return v ? fmt::format("{:.4g}", *v) : "-"; }
+
+bool WithinFactor(double a, double b, double factor) {
+  return a > 0 && b > 0 && std::max(a / b, b / a) <= factor * (1 + 1e-12);
+}
+
+}  // namespace
+
+Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
+                    const CriteriaTolerances& t) {
+  Json boundary = Json::array();
+  for (const auto& b : c.boundary) {
+    boundary.push_back({{"r_k", b.r_k},
+                        {"n_points", b.n_points},
+                        {"n_passing", b.n_passing},
+                        {"r_ftrunc_min", OrNull(b.r_ftrunc_min)},
+                        {"dt_ratio_max", OrNull(b.dt_ratio_max)},
+                        {"largest_stable_dt_ratio", OrNull(b.largest_stable_dt_ratio)},
+                        {"smallest_diverged_dt_ratio", OrNull(b.smallest_diverged_dt_ratio)}});
+  }
+  Json fit = nullptr;
+  if (c.fit) {
+    const PowerLawFit& f = *c.fit;
+    fit = {{"n", f.n},
+           {"knee_r_k", f.knee_r_k},
+           {"p", f.p},
+           {"p_stderr", f.p_stderr},
+           {"p_low", f.p_low},
+           {"p_high", f.p_high},
+           {"confidence", c.options.confidence},
+           {"c", f.c},
+           {"log10_c_stderr", f.log10_c_stderr},
+           {"c_envelope", f.c_envelope},
+           {"rms_residual_log10", f.rms_residual_log10},
+           {"sqrt_rk_inside_interval", f.p_low <= 0.5 && 0.5 <= f.p_high}};
+  }
+  return {{"study", study},
+          {"scheme", "explicit-modal"},
+          {"thresholds", {{"err_max", c.options.err_max}, {"srf_min", c.options.srf_min}}},
+          {"r_ftrunc_smallest_studied", c.r_ftrunc_smallest_studied},
+          {"boundary", boundary},
+          {"fit", fit},
+          {"dt_ratio_max", OrNull(c.dt_ratio_max)},
+          {"largest_stable_dt_ratio", OrNull(c.largest_stable_dt_ratio)},
+          {"smallest_diverged_dt_ratio", OrNull(c.smallest_diverged_dt_ratio)},
+          {"tolerances",
+           {{"p", t.p},
+            {"c_envelope_factor", t.c_envelope_factor},
+            {"dt_ratio_factor", t.dt_ratio_factor}}}};
+}
+
+ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
+                                  CriteriaTolerances* tolerances) {
+  ValidityCriteria c;
+  JsonObjectReader r(json, file, "");
+  r.String("study", "");
+  r.String("scheme", "");
+  {
+    const Json* th = r.Get("thresholds");
+    if (th == nullptr) r.Fail("thresholds", "required object is missing");
+    JsonObjectReader t(*th, file, r.PathOf("thresholds"));
+    c.options.err_max = t.RequiredNumber("err_max");
+    c.options.srf_min = t.RequiredNumber("srf_min");
+    t.Finish();
+  }
+  c.r_ftrunc_smallest_studied = r.RequiredNumber("r_ftrunc_smallest_studied");
+  if (const Json* boundary = r.Get("boundary"); boundary != nullptr && boundary->is_array()) {
+    for (std::size_t i = 0; i < boundary->size(); ++i) {
+      JsonObjectReader b((*boundary)[i], file,
+                         r.PathOf("boundary") + "[" + std::to_string(i) + "]");
+      RkBoundary rb;
+      rb.r_k = b.RequiredNumber("r_k");
+      rb.n_points = b.Integer("n_points", 0);
+      rb.n_passing = b.Integer("n_passing", 0);
+      rb.r_ftrunc_min = OptionalNumber(b, "r_ftrunc_min");
+      rb.dt_ratio_max = OptionalNumber(b, "dt_ratio_max");
+      rb.largest_stable_dt_ratio = OptionalNumber(b, "largest_stable_dt_ratio");
+      rb.smallest_diverged_dt_ratio = OptionalNumber(b, "smallest_diverged_dt_ratio");
+      b.Finish();
+      c.boundary.push_back(rb);
+    }
+  } else {
+    r.Fail("boundary", "required list is missing");
+  }
+  if (const Json* fit = r.Get("fit"); fit != nullptr && !fit->is_null()) {
+    JsonObjectReader f(*fit, file, r.PathOf("fit"));
+    PowerLawFit p;
+    p.n = f.Integer("n", 0);
+    p.knee_r_k = f.RequiredNumber("knee_r_k");
+    p.p = f.RequiredNumber("p");
+    p.p_stderr = f.Number("p_stderr", 0.0);
+    p.p_low = f.Number("p_low", p.p);
+    p.p_high = f.Number("p_high", p.p);
+    c.options.confidence = f.Number("confidence", c.options.confidence);
+    p.c = f.RequiredNumber("c");
+    p.log10_c_stderr = f.Number("log10_c_stderr", 0.0);
+    p.c_envelope = f.RequiredNumber("c_envelope");
+    p.rms_residual_log10 = f.Number("rms_residual_log10", 0.0);
+    f.Get("sqrt_rk_inside_interval");
+    f.Finish();
+    c.fit = p;
+  }
+  c.dt_ratio_max = OptionalNumber(r, "dt_ratio_max");
+  c.largest_stable_dt_ratio = OptionalNumber(r, "largest_stable_dt_ratio");
+  c.smallest_diverged_dt_ratio = OptionalNumber(r, "smallest_diverged_dt_ratio");
+  if (const Json* t = r.Get("tolerances"); t != nullptr && tolerances != nullptr) {
+    JsonObjectReader tr(*t, file, r.PathOf("tolerances"));
+    tolerances->p = tr.Number("p", tolerances->p);
+    tolerances->c_envelope_factor = tr.Number("c_envelope_factor", tolerances->c_envelope_factor);
+    tolerances->dt_ratio_factor = tr.Number("dt_ratio_factor", tolerances->dt_ratio_factor);
+    tr.Finish();
+  }
+  r.Finish();
+  return c;
+}
+
+std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
+                            const std::vector<ScoredPoint>& points) {
+  std::string s = fmt::format(
+      "criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored points)\n", study,
+      c.options.err_max, c.options.srf_min, points.size());
+  s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
+                   "dt/dt_sharp max", "passing");
+  for (const auto& b : c.boundary) {
+    s += fmt::format("  {:>10.4g}  {:>12}  {:>9.4g}  {:>15}  {:>4}/{:<3}\n", b.r_k,
+                     Num(b.r_ftrunc_min), std::sqrt(b.r_k), Num(b.dt_ratio_max), b.n_passing,
+                     b.n_points);
+  }
+  if (c.fit) {
+    const PowerLawFit& f = *c.fit;
+    const bool inside = f.p_low <= 0.5 && 0.5 <= f.p_high;
+    s += fmt::format(
+        "  truncation  R_ftrunc > C R_k^p above R_k = {:.4g} ({} R_k): p = {:.3f} +- {:.3f}, "
+        "{:.0f} % interval [{:.3f}, {:.3f}]; C = {:.3g} (least squares), {:.3g} (covering every "
+        "boundary point)\n",
+        f.knee_r_k, f.n, f.p, f.p_stderr, 100 * c.options.confidence, f.p_low, f.p_high, f.c,
+        f.c_envelope);
+    s += fmt::format("  paper eq. 10  R_ftrunc > sqrt(R_k), p = 0.5: {} the interval.",
+                     inside ? "inside" : "outside");
+    double worst_ratio = 0.0, at = 0.0;
+    for (const auto& b : c.boundary) {
+      if (b.r_ftrunc_min && b.r_k >= f.knee_r_k) {
+        const double ratio = *b.r_ftrunc_min / std::sqrt(b.r_k);
+        if (ratio > worst_ratio) worst_ratio = ratio, at = b.r_k;
+      }
+    }
+    s += fmt::format(" The data needs up to {:.2g} x sqrt(R_k) (at R_k = {:.3g})", worst_ratio, at);
+    s += worst_ratio > 1 ? ": sqrt(R_k) alone is not enough there.\n"
+                         : ": sqrt(R_k) is sufficient everywhere studied.\n";
+  } else {
+    s += "  truncation  no fit: fewer than two R_k have a boundary above the smallest truncation\n";
+  }
+  double needed_above_100 = 0.0;
+  for (const auto& b : c.boundary) {
+    if (b.r_k > 100 && b.r_ftrunc_min)
+      needed_above_100 = std::max(needed_above_100, *b.r_ftrunc_min);
+  }
+  s += fmt::format(
+      "  paper eq. 11  R_ftrunc > 300 for R_k > 1e2: the data needs at most R_ftrunc = {:g} "
+      "there ({}).\n",
+      needed_above_100, needed_above_100 <= 300 ? "agrees" : "300 is not enough");
+  int paper_unstable = 0;
+  double first_rk = 0.0, first_rft = 0.0;
+  for (const auto& p : points) {
+    if (p.dt_paper_s > p.dt_sharp_s) {
+      if (paper_unstable++ == 0 || p.r_k < first_rk) first_rk = p.r_k, first_rft = p.r_ftrunc;
+    }
+  }
+  s += fmt::format(
+      "  paper eq. 11  1/(4 dt f1) > R_ftrunc: dt = 1/(4 f_trunc) exceeds the sharp bound "
+      "2/omega_max at {} of {} stored points{}.\n",
+      paper_unstable, points.size(),
+      paper_unstable ? fmt::format(" (from R_k = {:.3g} at R_ftrunc = {:g})", first_rk, first_rft)
+                     : "");
+  s += fmt::format(
+      "  time step   every point at dt <= {} dt_sharp above the boundary passes; stable up to "
+      "{} dt_sharp, diverged from {} dt_sharp (predicted: 1)\n",
+      Num(c.dt_ratio_max), Num(c.largest_stable_dt_ratio), Num(c.smallest_diverged_dt_ratio));
+  return s;
+}
+
+std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
+                                              const CriteriaTolerances& t,
+                                              const ValidityCriteria& current,
+                                              const std::vector<ScoredPoint>& points) {
+  std::vector<std::string> problems;
+  if (baseline.fit.has_value() != current.fit.has_value()) {
+    problems.push_back(fmt::format("criterion fit: baseline {}, now {}",
+                                   baseline.fit ? "fitted" : "none",
+                                   current.fit ? "fitted" : "none"));
+  } else if (baseline.fit) {
+    const PowerLawFit& a = *baseline.fit;
+    const PowerLawFit& b = *current.fit;
+    if (std::abs(a.p - b.p) > t.p) {
+      problems.push_back(
+          fmt::format("criterion p: baseline {:.4f}, now {:.4f} (tolerance {:g})", a.p, b.p, t.p));
+    }
+    if (!WithinFactor(a.c_envelope, b.c_envelope, t.c_envelope_factor)) {
+      problems.push_back(fmt::format("criterion C: baseline {:.4g}, now {:.4g} (tolerance x{:g})",
+                                     a.c_envelope, b.c_envelope, t.c_envelope_factor));
+    }
+    if (a.knee_r_k != b.knee_r_k) {
+      problems.push_back(
+          fmt::format("criterion knee R_k: baseline {:.4g}, now {:.4g}", a.knee_r_k, b.knee_r_k));
+    }
+  }
+  if (baseline.dt_ratio_max && current.dt_ratio_max &&
+      !WithinFactor(*baseline.dt_ratio_max, *current.dt_ratio_max, t.dt_ratio_factor)) {
+    problems.push_back(fmt::format("criterion dt/dt_sharp max: baseline {:.4g}, now {:.4g}",
+                                   *baseline.dt_ratio_max, *current.dt_ratio_max));
+  }
+  for (const auto& old : baseline.boundary) {
+    for (const auto& now : current.boundary) {
+      if (std::abs(now.r_k - old.r_k) > 1e-9 * old.r_k) continue;
+      const bool same = old.r_ftrunc_min.has_value() == now.r_ftrunc_min.has_value() &&
+                        (!old.r_ftrunc_min || std::abs(*old.r_ftrunc_min - *now.r_ftrunc_min) <=
+                                                  1e-9 * *old.r_ftrunc_min);
+      if (!same) {
+        problems.push_back(
+            fmt::format("criterion R_ftrunc_min at R_k = {:.4g}: baseline {}, now {}", old.r_k,
+                        Num(old.r_ftrunc_min), Num(now.r_ftrunc_min)));
+      }
+    }
+  }
+  for (const auto& c : FindContradictions(baseline, points)) {
+    problems.push_back(fmt::format("point {} (R_k = {:.4g}, R_ftrunc = {:g}): {}", c.point.point_id,
+                                   c.point.r_k, c.point.r_ftrunc, c.reason));
+  }
+  return problems;
+}
+
+}  // namespace shockmap

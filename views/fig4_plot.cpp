@@ -1,0 +1,89 @@
+#include "views/fig4_plot.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "core/input_error.h"
+#include "views/gnuplot.h"
+
+namespace shockmap {
+namespace {
+
+struct Curve {
+  std::string title;
+  std::map<double, const ScoredPoint*> by_rk;  // Finest time step per R_k.
+};
+
+void AddCurves(const std::vector<ScoredPoint>& points, const std::string& scheme,
+               std::map<std::pair<std::string, double>, Curve>& curves) {
+  for (const auto& p : points) {
+    Curve& c = curves[{scheme, p.r_ftrunc}];
+    c.title = fmt::format("{} R_{{ftrunc}} = {:g}", scheme, p.r_ftrunc);
+    auto& slot = c.by_rk[p.r_k];
+    if (slot == nullptr || p.DtRatio() < slot->DtRatio()) slot = &p;
+  }
+}
+
+std::string Value(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : "NaN"; }
+
+}  // namespace
+
+void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
+              const std::vector<ScoredPoint>& implicit_points, const CriteriaOptions& thresholds,
+              const std::filesystem::path& file) {
+  std::map<std::pair<std::string, double>, Curve> curves;
+  AddCurves(explicit_points, "explicit", curves);
+  AddCurves(implicit_points, "implicit", curves);
+  if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");
+  std::error_code ec;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  const auto data_file = std::filesystem::path(file).replace_extension(".dat");
+  std::ofstream data(data_file);
+  std::string err_plot, srf_plot;
+  int index = 0;
+  for (const auto& [key, curve] : curves) {
+    data << "# " << curve.title << "\n# r_k err srf status\n";
+    for (const auto& [r_k, p] : curve.by_rk) {
+      data << fmt::format("{:.10g} {} {} {}\n", r_k, Value(p->err), Value(p->srf), p->status);
+    }
+    data << "\n\n";
+    const bool is_implicit = key.first == "implicit";
+    auto clause = [&, &title = curve.title](int column) {
+      return fmt::format(
+          "'{}' index {} using 1:{} with linespoints lw 2 pt {} ps 1.3 {} title '{}'",
+          data_file.string(), index, column, is_implicit ? 8 : 7,
+          is_implicit ? "dt 2 lc rgb '#000000'" : "", title);
+    };
+    err_plot += (err_plot.empty() ? "" : ", ") + clause(2);
+    srf_plot += (srf_plot.empty() ? "" : ", ") + clause(3);
+    ++index;
+  }
+  data.close();
+  const std::string script = fmt::format(
+      R"gp(set terminal {terminal}
+set output '{out}'
+set multiplot layout 1,2 title "{study}: the paper's Fig. 4 (finest time step per point)" noenhanced
+set logscale x
+set format x '10^{{%L}}'
+set xlabel 'R_k = k_s / K_{{bend}}'
+set grid
+set key top left font ',10'
+set ylabel 'Err (paper eq. 8)'
+set yrange [0:*]
+plot {err_plot}, {err_max} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {err_max:g}'
+set ylabel 'SRf (paper eq. 9)'
+set yrange [0:1.05]
+set key bottom left font ',10'
+plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'
+unset multiplot
+)gp",
+      fmt::arg("terminal", TerminalFor(file, 1400, 600)), fmt::arg("out", file.string()),
+      fmt::arg("study", study), fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
+      fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min));
+  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"));
+}
+
+}  // namespace shockmap
