@@ -5,11 +5,9 @@
 #include <iostream>
 #include <memory>
 
-#include "db/read_only_query.h"
-#include "db/study_database.h"
-#include "engine/scene_study_runner.h"
-#include "engine/study_runner.h"
-#include "formats/json_reader.h"
+#include "db/study_queries.h"
+#include "engine/stop_request.h"
+#include "engine/study_run.h"
 #include "views/query_output.h"
 
 namespace shockmap {
@@ -24,24 +22,9 @@ struct StudyFlags {
   std::string format = "table";
 };
 
-void Run(const StudyFlags& f) {
-  StudyRunOptions options = f.run;
-  options.progress = !f.quiet;
-  // The whole file is checked before the database is touched.
-  const nlohmann::json json = ReadJsonFile(f.spec_path);
-  std::string name;
-  StudyRunSummary s;
-  if (IsSceneStudy(json)) {
-    const SceneStudySpec spec = ParseSceneStudySpec(json, f.spec_path);
-    name = spec.name;
-    s = RunSceneStudy(spec, options);
-  } else {
-    const StudySpec spec = ParseStudySpec(json, f.spec_path);
-    name = spec.name;
-    s = RunStudy(spec, options);
-  }
+void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
   const double rate = s.point_wall_s > 0 ? s.points_computed / s.point_wall_s : 0.0;
-  fmt::print("study {}: {} points in the study, {} computed now ({} jobs)\n", name,
+  fmt::print("study {}: {} points in the study, {} computed now ({} jobs)\n", s.study,
              s.points_in_study, s.points_computed, s.jobs);
   fmt::print("  outcomes     ok {}, diverged {}, failed {}, reference_unconverged {}\n", s.ok,
              s.diverged, s.failed, s.reference_unconverged);
@@ -55,21 +38,34 @@ void Run(const StudyFlags& f) {
       "points/s)\n",
       s.wall_s, s.reference_wall_s, s.wall_s > 0 ? 100.0 * s.reference_wall_s / s.wall_s : 0.0,
       s.point_wall_s, rate);
-  fmt::print("  database     {}\n", options.database_path);
+  fmt::print("  database     {}\n", database_path);
+}
+
+// Exit code of a run stopped by a signal: 128 + the signal, as a shell reports it.
+struct Interrupted : CLI::RuntimeError {
+  explicit Interrupted(int signal) : CLI::RuntimeError(128 + signal) {}
+};
+
+void Run(const StudyFlags& f) {
+  StudyRunOptions options = f.run;
+  options.progress = !f.quiet;
+  // The whole file, and every point's scene, is checked before the database is touched.
+  const StudyFile study = ReadStudyFile(f.spec_path);
+  InstallStopHandlers();
+  const StudyRunSummary s = RunStudy(study, options);
+  PrintSummary(s, options.database_path);
+  if (s.stop_signal != 0) {
+    fmt::print(stderr,
+               "shockmap: {} received: {} of the {} points to compute are stored, the rest are "
+               "pending; run the study again to resume\n",
+               SignalName(s.stop_signal), s.points_computed, s.points_to_compute);
+    std::fflush(stdout);
+    throw Interrupted(s.stop_signal);
+  }
 }
 
 void Status(const StudyFlags& f) {
-  const char* sql =
-      "SELECT st.name AS study, count(*) AS points, "
-      "sum(p.status = 'ok') AS ok, sum(p.status = 'diverged') AS diverged, "
-      "sum(p.status = 'failed') AS failed, "
-      "sum(p.status = 'reference_unconverged') AS reference_unconverged, "
-      "sum(p.status = 'pending') AS pending, sum(p.status = 'running') AS running, "
-      "max(p.updated_utc) AS last_update "
-      "FROM (SELECT study_id, status, updated_utc FROM points UNION ALL "
-      "SELECT study_id, status, updated_utc FROM scene_points) p "
-      "JOIN studies st USING (study_id) GROUP BY st.name ORDER BY st.name";
-  QueryResult r = RunReadOnlyQuery(f.run.database_path, sql);
+  QueryResult r = StudyProgress(f.run.database_path);
   if (!f.study.empty()) {
     std::erase_if(r.rows,
                   [&](const auto& row) { return std::get<std::string>(row[0]) != f.study; });
@@ -78,6 +74,9 @@ void Status(const StudyFlags& f) {
     }
   }
   WriteQueryResult(r, QueryFormat::kTable, std::cout);
+  if (const auto writer = LiveWriter(f.run.database_path)) {
+    std::cout << "being written by " << *writer << "; its running points are held by it\n";
+  }
 }
 
 }  // namespace

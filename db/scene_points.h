@@ -11,12 +11,9 @@
 
 namespace shockmap {
 
-struct ScenePointRow {
-  std::int64_t point_id = 0;
-  std::string point_key;        // Identifies the point within its study.
-  std::string reference_key;    // Equal keys share one reference, across studies.
-  std::string parameters_json;  // {"solver.r_ftrunc": 30, ...}
-};
+// The points table of scene studies; its one parameter column holds the point's parameters as
+// JSON ({"solver.r_ftrunc": 30, ...}).
+extern const PointTable kScenePoints;
 
 struct SceneScoreRow {
   std::int64_t reference_id = 0;
@@ -40,16 +37,10 @@ struct SceneReferenceRow {
   double wall_s = 0.0, max_energy_ratio = 0.0;
 };
 
-// Inserts the points not yet in the study as 'pending'; returns how many were new.
-int AddScenePoints(StudyDatabase& db, std::int64_t study_id,
-                   const std::vector<ScenePointRow>& points);
-// 'pending' points (and 'failed' ones when retry_failed), in point_id order.
-std::vector<ScenePointRow> ScenePointsToCompute(StudyDatabase& db, std::int64_t study_id,
-                                                bool retry_failed);
-// Final status of a point, with its score when it was computed.
-void StoreSceneResult(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                      const std::string& status, const std::string& message,
-                      const std::optional<SceneScoreRow>& score);
+// A point's final status with its score when it was computed; one transaction.
+void StoreSceneOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
+                       const std::string& status, const std::string& message,
+                       const std::optional<SceneScoreRow>& score);
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key);
 // Stores a new reference and returns its id.
 std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& reference,

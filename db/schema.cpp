@@ -171,6 +171,13 @@ JOIN studies st ON st.study_id = p.study_id
 LEFT JOIN scene_references r ON r.reference_id = p.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 2 -> 3: the writer's lease. A run holds the database while its heartbeat is recent
+    // (db/study_database.h); how each run ended.
+    R"sql(
+ALTER TABLE runs ADD COLUMN heartbeat_unix_s REAL;
+ALTER TABLE runs ADD COLUMN end_reason TEXT;
+UPDATE runs SET end_reason = 'completed' WHERE ended_utc IS NOT NULL;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);
@@ -213,16 +220,17 @@ void CheckSchema(Connection& db) {
   if (CheckedVersion(db) != kSchemaVersion) {
     throw DbError(db.Path() +
                   ": schema is older than this build's; open it once for writing "
-                  "(e.g. shockmap study status) to migrate");
+                  "(shockmap study run) to migrate");
   }
 }
 
 void MigrateToCurrent(Connection& db) {
-  const int from = CheckedVersion(db);
-  if (from == kSchemaVersion) return;
-  // All pending migrations in one transaction: a process killed midway leaves the file as it
-  // was, never at an intermediate version.
+  if (CheckedVersion(db) == kSchemaVersion) return;
+  // All pending migrations in one IMMEDIATE transaction: a process killed midway leaves the
+  // file as it was, never at an intermediate version; two processes migrating at once are
+  // serialized, and the second reads the version again under the lock and finds nothing to do.
   Transaction t(db);
+  const int from = CheckedVersion(db);
   for (int version = from; version < kSchemaVersion; ++version) db.Execute(kMigrations[version]);
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));

@@ -101,6 +101,18 @@ Statement& Statement::BindNull(int i) {
   return *this;
 }
 
+Statement& Statement::BindValue(int i, const SqlValue& v) {
+  return std::visit(
+      [&](const auto& x) -> Statement& {
+        if constexpr (std::is_same_v<std::decay_t<decltype(x)>, std::monostate>) {
+          return BindNull(i);
+        } else {
+          return Bind(i, x);
+        }
+      },
+      v);
+}
+
 bool Statement::Step() {
   const int rc = sqlite3_step(stmt_);
   if (rc == SQLITE_ROW) return true;

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 namespace shockmap {
@@ -19,6 +20,9 @@ class DbError : public std::runtime_error {
 };
 
 class Statement;
+
+// One SQL value: NULL, integer, real or text.
+using SqlValue = std::variant<std::monostate, std::int64_t, double, std::string>;
 
 class Connection {
  public:
@@ -58,6 +62,7 @@ class Statement {
   Statement& Bind(int i, const char* v) { return Bind(i, std::string_view(v)); }
   Statement& Bind(int i, const std::vector<double>& blob);
   Statement& BindNull(int i);
+  Statement& BindValue(int i, const SqlValue& v);
   template <typename T>
   Statement& Bind(int i, const std::optional<T>& v) {
     return v ? Bind(i, *v) : BindNull(i);

@@ -2,10 +2,15 @@
 // The writer's view of a study database. Exactly one StudyDatabase (one connection, one thread)
 // writes; workers never touch SQLite. Every method that writes is one transaction, so a process
 // killed at any moment leaves every point either as it was or completely stored.
+//
+// What is common to every study kind lives here: studies, runs (with the writer's lease) and the
+// life of a point (pending -> running -> its outcome). Each kind keeps its own parameters,
+// scores and references (db/canonical_points.h, db/scene_points.h) in its own point table.
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "db/sqlite_handle.h"
@@ -14,53 +19,11 @@ namespace shockmap {
 
 inline constexpr const char* kDefaultDatabasePath = "shockmap.db";
 
-// Parameters of one grid point as stored; point_key identifies it within its study.
-struct PointParameters {
-  std::string point_key;
-  std::string reference_key;
-  double r_k = 0.0;
-  double r_ftrunc = 0.0;
-  std::string scheme;
-  std::optional<std::string> dt_rule;
-  std::optional<double> dt_factor;
-  std::optional<double> dt_asked_s;
-  double window_s = 0.0;
-  int n_elements_asked = 0;
-  double mass_damping_per_s = 0.0;
-};
-
-struct PointRow {
-  std::int64_t point_id = 0;
-  PointParameters parameters;
-  std::string status;
-};
-
-struct ShockColumns {
-  double start_s = 0.0, impulse_n_s = 0.0, peak_n = 0.0, duration_s = 0.0;
-  int rebounds = 0;
-};
-
-struct ScoreRow {
-  std::int64_t reference_id = 0;
-  std::optional<double> err, srf;
-  int n_modes = 0, n_elements = 0, n_dofs = 0;
-  double dt_requested_s = 0.0, dt_used_s = 0.0, dt_paper_s = 0.0, dt_sharp_s = 0.0;
-  std::int64_t steps = 0;
-  double wall_s = 0.0, cpu_s = 0.0, max_energy_ratio = 0.0;
-  int n_shocks = 0;
-  std::optional<ShockColumns> first_shock;
-  std::string shocks_json = "[]";
-};
-
-struct ReferenceRow {
-  std::int64_t reference_id = 0;
-  std::string reference_key;
-  double r_k = 0.0, r_fref = 0.0, r_fref_check = 0.0, window_s = 0.0, convergence = 0.0;
-  int n_modes_free = 0, n_modes_contact = 0, n_transitions = 0;
-  double wall_s = 0.0, output_dt_s = 0.0;
-  std::vector<double> tip_m, force_n;
-  std::string shocks_json = "[]";
-};
+// A run holds the database while its heartbeat is younger than this: a second run is refused
+// until then, and takes over the points of a run whose heartbeat is older (a killed process,
+// a restarted container, a stopped process). The writer beats every kHeartbeatPeriodS.
+inline constexpr double kLeaseGraceS = 30.0;
+inline constexpr double kHeartbeatPeriodS = 5.0;
 
 struct Provenance {
   std::string code_version, compiler, build_type, host;
@@ -68,14 +31,31 @@ struct Provenance {
   int jobs = 1;
 };
 
-struct StatusCount {
-  std::string study;
-  std::string status;
-  std::int64_t count = 0;
+// A table of study points. Its lifecycle columns are the same for every kind: point_id,
+// study_id, point_key, reference_key, status, message, run_id, updated_utc. The parameter
+// columns are the kind's, bound in this order.
+struct PointTable {
+  std::string_view name;
+  std::vector<std::string_view> parameter_columns;
 };
 
-// Points of the canonical problem's studies, or of scene studies (db/scene_points.h).
-enum class PointTable { kCanonical, kScene };
+// A point to register: its key within the study, the key of its reference (equal keys share
+// one reference across studies) and its parameter values in the table's column order.
+struct NewPoint {
+  std::string point_key;
+  std::string reference_key;
+  std::vector<SqlValue> parameters;
+};
+
+// A point waiting to be computed.
+struct PendingPoint {
+  std::int64_t point_id = 0;
+  std::string point_key;
+  std::string reference_key;
+};
+
+// How a run ended, stored in runs.end_reason.
+enum class RunEnd { kCompleted, kInterrupted, kFailed };
 
 class StudyDatabase {
  public:
@@ -84,38 +64,62 @@ class StudyDatabase {
 
   // Creates the study or, when it exists, records its latest spec. Returns study_id.
   std::int64_t UpsertStudy(const std::string& name, const std::string& spec_json);
-  std::optional<std::int64_t> FindStudy(const std::string& name);
   std::optional<std::string> StoredSpec(const std::string& name);
-  // Inserts the points not yet in the study as 'pending'; returns how many were new.
-  int AddPoints(std::int64_t study_id, const std::vector<PointParameters>& points);
 
+  // Takes the writer's lease: throws DbError naming the holder (run, host, pid, heartbeat age)
+  // when another run's heartbeat is younger than kLeaseGraceS. Returns the new run_id.
   std::int64_t BeginRun(std::int64_t study_id, const Provenance& provenance);
-  void EndRun(std::int64_t run_id);
-  // Points left 'running' by a process of this host that no longer exists (or by a run that
-  // ended) go back to 'pending'. Returns how many.
-  int ReclaimStalePoints(std::int64_t study_id, const std::string& host,
-                         PointTable table = PointTable::kCanonical);
+  // Renews the lease. Throws DbError when another run has taken it over (this process was
+  // stopped for longer than the grace period): it must stop writing.
+  void Heartbeat(std::int64_t run_id);
+  void EndRun(std::int64_t run_id, RunEnd end);
+
+  // Inserts the points not yet in the study as 'pending'; returns how many were new.
+  int AddPoints(const PointTable& table, std::int64_t study_id,
+                const std::vector<NewPoint>& points);
+  // Points left 'running' by any run but `run_id` go back to 'pending'; the caller holds the
+  // lease, so their runs are gone. Returns how many.
+  int ReclaimStalePoints(const PointTable& table, std::int64_t study_id, std::int64_t run_id);
   // 'pending' points (and 'failed' ones when retry_failed), in point_id order.
-  std::vector<PointRow> PointsToCompute(std::int64_t study_id, bool retry_failed);
-  void MarkRunning(const std::vector<std::int64_t>& point_ids, std::int64_t run_id,
-                   PointTable table = PointTable::kCanonical);
-  // Final status of a point, with its score when it was computed; one transaction.
-  void StoreResult(std::int64_t point_id, std::int64_t run_id, const std::string& status,
-                   const std::string& message, const std::optional<ScoreRow>& score);
+  std::vector<PendingPoint> PointsToCompute(const PointTable& table, std::int64_t study_id,
+                                            bool retry_failed);
+  void MarkRunning(const PointTable& table, const std::vector<std::int64_t>& point_ids,
+                   std::int64_t run_id);
+  // Points of `run_id` still 'running' go back to 'pending' (an interrupted run). Returns how
+  // many.
+  int ReleaseRunningPoints(const PointTable& table, std::int64_t run_id);
 
-  std::optional<ReferenceRow> FindReference(const std::string& reference_key);
-  // Stores a new reference and returns its id.
-  std::int64_t StoreReference(const ReferenceRow& reference, std::int64_t run_id);
-
-  std::vector<StatusCount> CountByStatus(const std::optional<std::string>& study);
-
+  // For the kinds' own tables in db/ (canonical_points, scene_points) only.
   Connection& Raw() { return db_; }
 
  private:
   Connection db_;
 };
 
+// Stores a point's final status in one transaction with whatever `write_score` writes on the
+// same connection (the kind's score row), and counts it in its run.
+template <typename WriteScore>
+void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
+                       std::int64_t run_id, std::string_view status, std::string_view message,
+                       WriteScore write_score);
+
 // The current UTC time as ISO 8601 with milliseconds.
 std::string UtcNow();
+
+namespace detail {
+void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,
+                       std::int64_t run_id, std::string_view status, std::string_view message);
+}  // namespace detail
+
+template <typename WriteScore>
+void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
+                       std::int64_t run_id, std::string_view status, std::string_view message,
+                       WriteScore write_score) {
+  Connection& c = db.Raw();
+  Transaction t(c);
+  write_score(c);
+  detail::UpdatePointStatus(c, table, point_id, run_id, status, message);
+  t.Commit();
+}
 
 }  // namespace shockmap

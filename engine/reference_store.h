@@ -2,7 +2,7 @@
 // A ReferenceRun as a database row and back, so a reference is computed once per database.
 
 #include "compare/reference_run.h"
-#include "db/study_database.h"
+#include "db/canonical_points.h"
 
 namespace shockmap {
 

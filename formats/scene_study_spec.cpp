@@ -76,8 +76,6 @@ SceneParameters ParseParameters(const Json& value, const Json& scene, const std:
 
 }  // namespace
 
-bool IsSceneStudy(const Json& study) { return study.is_object() && study.contains("scene"); }
-
 SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
   SceneStudySpec spec;
   spec.file = file;
@@ -85,6 +83,9 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
   spec.name = r.RequiredString("name");
   if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
   spec.description = r.String("description", "");
+  if (r.String("kind", "scene_sweep") != "scene_sweep") {
+    r.Fail("kind", "this reader takes \"scene_sweep\" studies (formats/study_file.h dispatches)");
+  }
   spec.scene_file =
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);

@@ -32,9 +32,6 @@ struct SceneStudySpec {
   std::string spec_json;                // The study with the scene embedded, as stored.
 };
 
-// True for a study file that names a scene (otherwise it is a study of the paper's problem).
-bool IsSceneStudy(const nlohmann::json& study);
-
 // Parses the study, reads its scene and checks every point's scene (so that a bad sweep value
 // is refused before anything runs). Throws InputError naming the file, the key path or the
 // point, the value and what is allowed.

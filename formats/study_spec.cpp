@@ -291,6 +291,9 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   spec.name = r.RequiredString("name");
   if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
   spec.description = r.String("description", "");
+  if (r.String("kind", "canonical") != "canonical") {
+    r.Fail("kind", "this reader takes \"canonical\" studies (formats/study_file.h dispatches)");
+  }
   if (const Json* p = r.Get("problem")) ParseProblem(*p, file, spec.problem);
   if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.scoring);
   const Json* grids = r.Get("grids");

@@ -7,18 +7,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
-#include "formats/scene_study_spec.h"
-#include "formats/study_spec.h"
+#include "formats/study_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const auto json = nlohmann::json::parse(data, data + size, nullptr, false);
   if (json.is_discarded()) return 0;
   try {
-    if (shockmap::IsSceneStudy(json)) {
-      shockmap::ParseSceneStudySpec(json, "fuzz/corpus/study/study.json");
-    } else {
-      shockmap::ParseStudySpec(json, "fuzz/corpus/study/study.json");
-    }
+    shockmap::ParseStudyFile(json, "fuzz/corpus/study/study.json");
   } catch (const shockmap::InputError&) {
   }
   return 0;

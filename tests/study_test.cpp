@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "db/read_only_query.h"
-#include "engine/study_runner.h"
+#include "engine/study_run.h"
 #include "tests/run_command.h"
 
 namespace shockmap {

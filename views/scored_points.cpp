@@ -3,7 +3,7 @@
 #include <variant>
 
 #include "core/input_error.h"
-#include "db/read_only_query.h"
+#include "db/study_queries.h"
 
 namespace shockmap {
 namespace {
@@ -22,10 +22,9 @@ std::optional<double> OptionalReal(const QueryCell& c) {
 }  // namespace
 
 std::string ResolveStudyName(const std::string& database_path, const std::string& study) {
-  const QueryResult r = RunReadOnlyQuery(database_path, "SELECT name FROM studies ORDER BY name");
+  const std::vector<std::string> stored = StudyNames(database_path);
   std::string names;
-  for (const auto& row : r.rows) {
-    const auto& name = std::get<std::string>(row[0]);
+  for (const std::string& name : stored) {
     if (name == study) return study;
     names += (names.empty() ? "" : ", ") + name;
   }
@@ -33,21 +32,16 @@ std::string ResolveStudyName(const std::string& database_path, const std::string
     throw InputError("no study named \"" + study + "\" in " + database_path +
                      " (studies: " + (names.empty() ? "none" : names) + ")");
   }
-  if (r.rows.size() != 1) {
-    throw InputError(database_path + " holds " + std::to_string(r.rows.size()) +
+  if (stored.size() != 1) {
+    throw InputError(database_path + " holds " + std::to_string(stored.size()) +
                      " studies; name one of: " + (names.empty() ? "none" : names));
   }
-  return std::get<std::string>(r.rows[0][0]);
+  return stored.front();
 }
 
 std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                                           const std::string& study, const std::string& scheme) {
-  const QueryResult r = RunReadOnlyQuery(
-      database_path,
-      "SELECT point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s, "
-      "wall_s, n_modes, steps FROM results WHERE study = ?1 AND scheme = ?2 "
-      "AND dt_requested_s IS NOT NULL ORDER BY point_id",
-      {study, scheme});
+  const QueryResult r = ScoredPointRows(database_path, study, scheme);
   std::vector<ScoredPoint> points;
   for (const auto& row : r.rows) {
     ScoredPoint p;

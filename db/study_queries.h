@@ -1,0 +1,28 @@
+#pragma once
+// The read-only queries behind `study status`, criteria, maps and reports: all on read-only
+// connections (db/read_only_query.h), so they work on a database another run is writing.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "db/read_only_query.h"
+
+namespace shockmap {
+
+// One row per study: points, counts by status (running ones are held by a run), last update.
+QueryResult StudyProgress(const std::string& database_path);
+
+// The names of the stored studies, sorted.
+std::vector<std::string> StudyNames(const std::string& database_path);
+
+// The run holding the database ("run 7 (host h, pid 42), last heartbeat 3 s ago"), if one's
+// heartbeat is younger than kLeaseGraceS.
+std::optional<std::string> LiveWriter(const std::string& database_path);
+
+// Columns point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s,
+// wall_s, n_modes, steps of the points of `study` run with `scheme` that have a score row.
+QueryResult ScoredPointRows(const std::string& database_path, const std::string& study,
+                            const std::string& scheme);
+
+}  // namespace shockmap

@@ -1,0 +1,58 @@
+#pragma once
+// The study kind of the paper's problem (paper §2): a grid of (R_k, R_ftrunc, dt, scheme)
+// points on the cantilever, each scored with Err (eq. 8) and SRf (eq. 9) against the
+// semi-analytical reference of its R_k and window.
+
+#include <memory>
+
+#include "compare/comparison.h"
+#include "db/canonical_points.h"
+#include "engine/study_kind.h"
+#include "formats/study_file.h"
+
+namespace shockmap {
+
+class CanonicalStudy {
+ public:
+  using Point = StudyPoint;
+  // A reference with what identifies it in the database.
+  struct Reference {
+    std::string key;
+    double r_k = 0.0, window_s = 0.0;
+    std::shared_ptr<const ReferenceRun> run;  // Shared by every point scored against it.
+  };
+  struct Outcome {
+    std::string status;
+    std::string message;
+    std::optional<ScoreRow> score;
+  };
+
+  explicit CanonicalStudy(StudySpec spec);
+
+  const StudyHeader& Header() const { return header_; }
+  const PointTable& Table() const { return kCanonicalPoints; }
+  void CheckStoredSpec(const std::string& stored_json, const std::string& database_path) const;
+  const std::vector<Point>& Points() const { return spec_.points; }
+  NewPoint Describe(const Point& point) const;
+
+  double ReferenceCost(const Point& point) const;
+  Reference ComputeReference(const Point& point) const;
+  std::optional<StoredReference<Reference>> FindReference(StudyDatabase& db,
+                                                          const std::string& key) const;
+  std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
+                              std::int64_t run_id) const;
+
+  Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
+  Outcome Failed(const Point& point, const std::string& message) const;
+  static const std::string& StatusOf(const Outcome& outcome) { return outcome.status; }
+  void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
+                    const Outcome& outcome) const;
+
+ private:
+  StudySpec spec_;
+  StudyHeader header_;
+};
+
+static_assert(StudyKind<CanonicalStudy>);
+
+}  // namespace shockmap

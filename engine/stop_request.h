@@ -1,0 +1,17 @@
+#pragma once
+// A study run asked to stop by SIGINT, SIGTERM or SIGHUP: no new point starts, the points in
+// flight are finished and stored, and the run ends with its row closed. A second signal ends
+// the process at once (the default action); the next run then takes over its points.
+
+namespace shockmap {
+
+// Installs the handlers (idempotent). The CLI calls it before a study run.
+void InstallStopHandlers();
+
+// The signal that asked to stop, or 0.
+int StopSignal();
+
+// "SIGTERM", "SIGINT", "SIGHUP" or "signal N".
+const char* SignalName(int signal);
+
+}  // namespace shockmap

@@ -1,0 +1,70 @@
+#pragma once
+// What the study engine (engine/study_engine.h) asks of a kind of study. The paper's problem
+// (engine/canonical_study.h) and scene sweeps (engine/scene_study.h) are two kinds; a new kind
+// is a new class that meets this concept, with no change to the engine's loop.
+//
+// A kind has three types:
+//   Point     one point of the study, as the spec describes it (what a worker needs);
+//   Reference what its points are scored against, computed once per database and shared;
+//   Outcome   one point's result, as it will be stored.
+// The Compute/Score members run on workers: they are const, thread-safe and never touch the
+// database. Everything that takes a StudyDatabase runs on the one writer.
+
+#include <concepts>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "db/study_database.h"
+
+namespace shockmap {
+
+// What every study has: the file it came from, its name, and the spec stored with it.
+struct StudyHeader {
+  std::string file;
+  std::string name;
+  std::string spec_json;
+};
+
+// A reference as found in the database, with its id.
+template <typename Reference>
+struct StoredReference {
+  std::int64_t id = 0;
+  Reference value;
+};
+
+template <typename K>
+concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K::Point& point,
+                             const typename K::Reference& reference,
+                             const typename K::Outcome& outcome, const std::string& text,
+                             std::int64_t id) {
+  { kind.Header() } -> std::same_as<const StudyHeader&>;
+  { kind.Table() } -> std::same_as<const PointTable&>;
+  // Throws InputError when the study is stored with settings its scores depend on that differ
+  // from this spec's (`text`: the stored spec JSON; the database path is the second argument).
+  kind.CheckStoredSpec(text, text);
+  { kind.Points() } -> std::same_as<const std::vector<typename K::Point>&>;
+  // The point's keys and parameter row.
+  { kind.Describe(point) } -> std::same_as<NewPoint>;
+
+  // Relative cost of the point's reference: references are computed longest first.
+  { kind.ReferenceCost(point) } -> std::convertible_to<double>;
+  // May throw: the points that need it then fail with the message.
+  { kind.ComputeReference(point) } -> std::same_as<typename K::Reference>;
+  {
+    kind.FindReference(db, text)
+    } -> std::same_as<std::optional<StoredReference<typename K::Reference>>>;
+  // Returns the stored reference's id.
+  { kind.StoreReference(db, reference, id) } -> std::same_as<std::int64_t>;
+
+  // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
+  { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
+  // The outcome of a point whose reference could not be computed.
+  { kind.Failed(point, text) } -> std::same_as<typename K::Outcome>;
+  { K::StatusOf(outcome) } -> std::convertible_to<std::string>;
+  // One transaction: the point's status and score.
+  kind.StoreOutcome(db, id, id, outcome);
+};
+
+}  // namespace shockmap

@@ -1,0 +1,40 @@
+#pragma once
+// The front door of study files: every study file declares its kind, and is parsed by that
+// kind's reader.
+//
+//   "kind": "canonical"    the paper's problem: grids of (R_k, R_ftrunc, dt) points
+//                          (formats/study_spec.h);
+//   "kind": "scene_sweep"  a scene file with a sweep of its numeric parameters
+//                          (formats/scene_study_spec.h).
+// Files written before the field existed are still read: without "kind", a file naming a
+// "scene" is a scene sweep, any other a study of the paper's problem.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "formats/scene_study_spec.h"
+#include "formats/study_spec.h"
+
+namespace shockmap {
+
+enum class StudyFileKind { kCanonical, kSceneSweep };
+
+std::string ToString(StudyFileKind kind);
+// Throws InputError naming the file and the allowed kinds.
+StudyFileKind StudyFileKindFromString(std::string_view text, const std::string& file);
+
+// The declared (or, for older files, implied) kind of a study's JSON. Throws InputError for an
+// unknown kind or a JSON that is not an object.
+StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file);
+
+using StudyFile = std::variant<StudySpec, SceneStudySpec>;
+
+// Reads, dispatches and parses a study file; the whole file, and every point's scene, is
+// checked before anything runs. Throws InputError naming the file, the key path, the value and
+// what is allowed.
+StudyFile ReadStudyFile(const std::string& path);
+StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file);
+
+}  // namespace shockmap
