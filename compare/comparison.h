@@ -23,7 +23,7 @@ struct ComparisonOptions {
   Scheme scheme = Scheme::kExplicitModal;
   TimeStepRequest dt;
   // Covers the first two shocks at R_k = 3000 (first contact at T1/4 = 13 ms, the second
-  // shock near 44 ms), where references at 1000 f1 and 3000 f1 still agree (DESIGN §2).
+  // shock near 44 ms), where references at 1000 f1 and 3000 f1 still agree (docs/physics.md §2).
   double window_s = 0.06;
   int n_elements = 0;  // 0: DefaultElementCount(r_ftrunc).
   ReferenceOptions reference;

@@ -1,6 +1,7 @@
 #pragma once
 // One simulation of a scene: build its modal model, integrate it explicitly with the declared
-// effects only, and keep exactly the outputs the scene requests (DESIGN §5-6).
+// effects only, and keep exactly the outputs the scene requests (docs/physics.md §5,
+// docs/architecture.md).
 
 #include <vector>
 

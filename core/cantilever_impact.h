@@ -22,7 +22,7 @@ struct CantileverImpact {
   double initial_tip_m = 1e-3;
   double contact_damping_n_s_per_m = 0.0;
   // C = alpha M: the only damping that is the same operator with and without the spring, and so
-  // the only one the reference can represent (DESIGN §2).
+  // the only one the reference can represent (docs/physics.md §2).
   double mass_damping_per_s = 0.0;
 
   double SpringStiffness() const { return r_k * beam.TipBendingStiffness(); }

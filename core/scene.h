@@ -1,7 +1,7 @@
 #pragma once
 // What the physics of a scene is: beams, contact zones, the effects declared, the solver and the
-// outputs requested (DESIGN §5-6). Plain description structs; parsing lives outside core
-// (studies/scene_file), building lives in core/scene_model.
+// outputs requested (docs/physics.md §5, docs/architecture.md). Plain description structs; parsing
+// lives outside core (studies/scene_file), building lives in core/scene_model.
 
 #include <optional>
 #include <string>

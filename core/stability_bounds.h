@@ -1,5 +1,6 @@
 #pragma once
-// Time-step bounds of explicit central differences on the modal model (DESIGN §3, paper eq. 11).
+// Time-step bounds of explicit central differences on the modal model (docs/physics.md §3, paper
+// eq. 11).
 
 #include <optional>
 #include <string>

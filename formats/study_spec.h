@@ -18,7 +18,7 @@ inline constexpr std::size_t kMaxStudyPoints = 1'000'000;
 // Truncation of the reference for each R_k: the shock frequency sqrt(R_k) f1 (paper eq. 10)
 // must lie well inside it, so r_fref = max(r_fref_min, r_fref_per_sqrt_rk * sqrt(R_k)).
 struct ReferencePolicy {
-  double r_fref_min = 3000.0;        // DESIGN §2: 3000 f1 and 1000 f1 agree at R_k = 3000.
+  double r_fref_min = 3000.0;  // docs/physics.md §2: 3000 f1 and 1000 f1 agree at R_k = 3000.
   double r_fref_per_sqrt_rk = 10.0;  // Ten times the shock frequency.
   int crossing_samples_per_period = 16;
   double tolerance = 0.02;  // Score nothing against a reference unconverged beyond this.

@@ -1,5 +1,6 @@
 #pragma once
-// Self-convergence of the truncated reference (DESIGN §2): the same problem at two truncations.
+// Self-convergence of the truncated reference (docs/physics.md §2): the same problem at two
+// truncations.
 
 #include "reference/reference_solver.h"
 

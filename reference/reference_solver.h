@@ -13,8 +13,8 @@
 namespace shockmap {
 
 struct ReferenceOptions {
-  // f_ref / f1. DESIGN §2: references at 1000 f1 and 3000 f1 agree over the first ~0.06 s at
-  // R_k = 3000; the higher one is the default.
+  // f_ref / f1. docs/physics.md §2: references at 1000 f1 and 3000 f1 agree over the first ~0.06 s
+  // at R_k = 3000; the higher one is the default.
   double r_fref = 3000.0;
   double end_time_s = 0.0;  // Required, > 0.
   // Crossings are bracketed by sampling u(L, t) at this many points per shortest retained

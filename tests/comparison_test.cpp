@@ -60,8 +60,8 @@ TEST_F(PaperFig3, ErrorDecreasesWithTruncation) {
 }
 
 TEST_F(PaperFig3, PaperTimeStepRuleDivergesWhereTheSharpBoundHolds) {
-  // DESIGN §3: at R_ftrunc = 10, dt = 1/(4 f_trunc) exceeds 2/omega_max of the contact-stiffened
-  // modal stiffness.
+  // docs/physics.md §3: at R_ftrunc = 10, dt = 1/(4 f_trunc) exceeds 2/omega_max of the
+  // contact-stiffened modal stiffness.
   const ComparisonResult paper = Compare(10.0, {std::nullopt, 1.0, DtRule::kPaper});
   EXPECT_GT(paper.bounds.dt_paper_s, paper.bounds.dt_sharp_s);
   EXPECT_EQ(paper.status, "diverged");

@@ -1,4 +1,4 @@
-// Verification of core/ (DESIGN §3): FE frequencies against the analytic clamped-free and
+// Verification of core/ (docs/physics.md §3): FE frequencies against the analytic clamped-free and
 // clamped-pinned ones at the observed h^4 order, the modal basis, Newmark's order and energy
 // behaviour against exact modal solutions, the energy balance with damping and contact, the
 // stability bounds (analytic values and what they do and do not guarantee), the implicit contact
@@ -67,7 +67,7 @@ double Bisect(const std::function<double(double)>& f, double lo, double hi) {
 }
 
 // n-th root (n >= 1) of 1 + cos b cosh b = 0, divided by cosh b so it keeps its digits
-// (DESIGN §2); exactly one root lies in [(n - 1) pi, n pi].
+// (docs/physics.md §2); exactly one root lies in [(n - 1) pi, n pi].
 double ClampedFreeRoot(int n) {
   return Bisect([](double b) { return std::cos(b) + 1.0 / std::cosh(b); }, (n - 1) * kPi, n * kPi);
 }

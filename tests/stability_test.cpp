@@ -122,8 +122,8 @@ TEST_P(CanonicalStabilityTest, EndsWithExpectedStatus) {
 }
 
 // Energy ratios on this problem are sensitive: the cascade into high modes through micro-impacts
-// (DESIGN §2) makes them vary with dt by a percent. The bounds below hold for dt * {0.99, 1,
-// 1.01} and initial amplitudes 0.7 to 3.7 mm (measured spread in the comments); the statuses are
+// (docs/physics.md §2) makes them vary with dt by a percent. The bounds below hold for dt * {0.99,
+// 1, 1.01} and initial amplitudes 0.7 to 3.7 mm (measured spread in the comments); the statuses are
 // the same for all of those.
 const StabilityCase kStabilityCases[] = {
     // Just below the bound at R_ftrunc = 300: kOk over the first 0.3 s, with ratio 1.39 at
@@ -139,7 +139,8 @@ const StabilityCase kStabilityCases[] = {
      RunStatus::kDiverged, 0},
     {"Explicit_R300_1p1Sharp", Scheme::kExplicitModal, 300, 1.1, DtRule::kSharp, 0.3,
      RunStatus::kDiverged, 0},
-    // DESIGN §3: the paper's 1 / (4 f_trunc) is 6 dt_sharp at R_ftrunc = 10 (step 64 / 231).
+    // docs/physics.md §3: the paper's 1 / (4 f_trunc) is 6 dt_sharp at R_ftrunc = 10 (step 64 /
+    // 231).
     {"Explicit_R10_PaperBound", Scheme::kExplicitModal, 10, 1.0, DtRule::kPaper, 0.3,
      RunStatus::kDiverged, 0},
     // The studies' default factor 0.1: bounded over 3 s, ~58 periods of f1 and hundreds of
