@@ -63,6 +63,13 @@ class Statement {
   Statement& Bind(int i, const std::vector<double>& blob);
   Statement& BindNull(int i);
   Statement& BindValue(int i, const SqlValue& v);
+  // Binds `values` to ?1, ?2, ... in order.
+  template <typename... T>
+  Statement& BindAll(const T&... values) {
+    int i = 0;
+    (Bind(++i, values), ...);
+    return *this;
+  }
   template <typename T>
   Statement& Bind(int i, const std::optional<T>& v) {
     return v ? Bind(i, *v) : BindNull(i);
@@ -83,10 +90,23 @@ class Statement {
   std::string GetText(int i) const;
   std::optional<double> GetOptionalDouble(int i) const;
   std::vector<double> GetBlob(int i) const;
+  // Reads the current row's columns 0, 1, ... into `out` in order, each by its type (double,
+  // std::int64_t, int, std::string, std::optional<double> or a blob of doubles).
+  template <typename... T>
+  void ReadColumns(T&... out) const {
+    int i = 0;
+    (Read(i++, out), ...);
+  }
   // True when the statement cannot modify the database (sqlite3_stmt_readonly).
   bool IsReadOnly() const;
 
  private:
+  void Read(int i, double& v) const { v = GetDouble(i); }
+  void Read(int i, std::int64_t& v) const { v = GetInt(i); }
+  void Read(int i, int& v) const { v = static_cast<int>(GetInt(i)); }
+  void Read(int i, std::string& v) const { v = GetText(i); }
+  void Read(int i, std::optional<double>& v) const { v = GetOptionalDouble(i); }
+  void Read(int i, std::vector<double>& v) const { v = GetBlob(i); }
   void Check(int rc) const;
   sqlite3* db_;
   sqlite3_stmt* stmt_;

@@ -169,19 +169,22 @@ int StudyDatabase::AddPoints(const PointTable& table, std::int64_t study_id,
   return added;
 }
 
-int StudyDatabase::ReclaimStalePoints(const PointTable& table, std::int64_t study_id,
-                                      std::int64_t run_id) {
+template <typename... Ids>
+int StudyDatabase::BackToPending(const PointTable& table, std::string_view condition, Ids... ids) {
   Transaction t(db_);
   db_.Prepare(fmt::format("UPDATE {} SET status = 'pending', updated_utc = ? "
-                          "WHERE study_id = ? AND status = 'running' AND run_id IS NOT ?",
-                          table.name))
-      .Bind(1, UtcNow())
-      .Bind(2, study_id)
-      .Bind(3, run_id)
+                          "WHERE status = 'running' AND {}",
+                          table.name, condition))
+      .BindAll(UtcNow(), ids...)
       .Run();
-  const int reclaimed = sqlite3_changes(db_.Raw());
+  const int changed = sqlite3_changes(db_.Raw());
   t.Commit();
-  return reclaimed;
+  return changed;
+}
+
+int StudyDatabase::ReclaimStalePoints(const PointTable& table, std::int64_t study_id,
+                                      std::int64_t run_id) {
+  return BackToPending(table, "study_id = ? AND run_id IS NOT ?", study_id, run_id);
 }
 
 std::vector<PendingPoint> StudyDatabase::PointsToCompute(const PointTable& table,
@@ -213,16 +216,7 @@ void StudyDatabase::MarkRunning(const PointTable& table, const std::vector<std::
 }
 
 int StudyDatabase::ReleaseRunningPoints(const PointTable& table, std::int64_t run_id) {
-  Transaction t(db_);
-  db_.Prepare(fmt::format("UPDATE {} SET status = 'pending', updated_utc = ? "
-                          "WHERE status = 'running' AND run_id = ?",
-                          table.name))
-      .Bind(1, UtcNow())
-      .Bind(2, run_id)
-      .Run();
-  const int released = sqlite3_changes(db_.Raw());
-  t.Commit();
-  return released;
+  return BackToPending(table, "run_id = ?", run_id);
 }
 
 namespace detail {

@@ -93,6 +93,10 @@ class StudyDatabase {
   Connection& Raw() { return db_; }
 
  private:
+  // Running points matching `condition` (its ? bound to `ids`) back to 'pending'.
+  template <typename... Ids>
+  int BackToPending(const PointTable& table, std::string_view condition, Ids... ids);
+
   Connection db_;
 };
 
@@ -102,6 +106,17 @@ template <typename WriteScore>
 void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
                        std::int64_t run_id, std::string_view status, std::string_view message,
                        WriteScore write_score);
+
+// Runs one INSERT with `values` bound in order, in its own transaction; returns the new rowid.
+template <typename... T>
+std::int64_t InsertRow(StudyDatabase& db, std::string_view sql, const T&... values) {
+  Connection& c = db.Raw();
+  Transaction t(c);
+  c.Prepare(sql).BindAll(values...).Run();
+  const std::int64_t id = c.LastInsertRowId();
+  t.Commit();
+  return id;
+}
 
 // The current UTC time as ISO 8601 with milliseconds.
 std::string UtcNow();

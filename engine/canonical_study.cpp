@@ -105,7 +105,7 @@ std::int64_t CanonicalStudy::StoreReference(StudyDatabase& db, const Reference& 
 
 CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Reference& reference,
                                               std::int64_t reference_id) const {
-  Outcome out{"failed", "", std::nullopt};
+  Outcome out;
   try {
     const ComparisonResult r =
         ScoreAgainstReference(ProblemOf(spec_, point), OptionsOf(spec_, point), reference.run);
@@ -116,10 +116,6 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
     out.message = e.what();
   }
   return out;
-}
-
-CanonicalStudy::Outcome CanonicalStudy::Failed(const Point&, const std::string& message) const {
-  return {"failed", message, std::nullopt};
 }
 
 void CanonicalStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,

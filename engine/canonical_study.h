@@ -21,11 +21,7 @@ class CanonicalStudy {
     double r_k = 0.0, window_s = 0.0;
     std::shared_ptr<const ReferenceRun> run;  // Shared by every point scored against it.
   };
-  struct Outcome {
-    std::string status;
-    std::string message;
-    std::optional<ScoreRow> score;
-  };
+  using Outcome = PointOutcome<ScoreRow>;
 
   explicit CanonicalStudy(StudySpec spec);
 
@@ -43,8 +39,6 @@ class CanonicalStudy {
                               std::int64_t run_id) const;
 
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
-  Outcome Failed(const Point& point, const std::string& message) const;
-  static const std::string& StatusOf(const Outcome& outcome) { return outcome.status; }
   void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
                     const Outcome& outcome) const;
 

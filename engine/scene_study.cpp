@@ -99,7 +99,7 @@ SceneScoreRow SceneStudy::Measure(const Scene& scene, const SceneRun& run) const
 
 SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
                                       std::int64_t reference_id) const {
-  if (ref.status != "ok") return Failed(point, "reference " + ref.status + ": " + ref.message);
+  if (ref.status != "ok") return {"failed", "reference " + ref.status + ": " + ref.message, {}};
   Outcome out;
   try {
     const Scene scene = ScoredScene(spec_, point);
@@ -127,10 +127,6 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
     out.message = e.what();
   }
   return out;
-}
-
-SceneStudy::Outcome SceneStudy::Failed(const Point&, const std::string& message) const {
-  return {"failed", message, std::nullopt};
 }
 
 void SceneStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,

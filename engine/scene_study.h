@@ -13,11 +13,7 @@ class SceneStudy {
  public:
   using Point = SceneParameters;
   using Reference = SceneReferenceRow;  // Stored whatever its status, with its histories.
-  struct Outcome {
-    std::string status = "failed";
-    std::string message;
-    std::optional<SceneScoreRow> score;
-  };
+  using Outcome = PointOutcome<SceneScoreRow>;
 
   explicit SceneStudy(SceneStudySpec spec);
 
@@ -35,8 +31,6 @@ class SceneStudy {
                               std::int64_t run_id) const;
 
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
-  Outcome Failed(const Point& point, const std::string& message) const;
-  static const std::string& StatusOf(const Outcome& outcome) { return outcome.status; }
   void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
                     const Outcome& outcome) const;
 

@@ -181,7 +181,7 @@ class StudyRun {
         to_compute_.size(), summary_.jobs, [&](std::size_t i) { return Score(to_compute_[i]); },
         [&](std::pair<std::int64_t, Outcome> out) {
           kind_.StoreOutcome(db_, out.first, run_id_, out.second);
-          CountOutcome(Kind::StatusOf(out.second), summary_);
+          CountOutcome(out.second.status, summary_);
           progress.Update(static_cast<long>(summary_.points_computed), summary_.diverged,
                           summary_.failed);
         },
@@ -194,7 +194,7 @@ class StudyRun {
   std::pair<std::int64_t, Outcome> Score(const PendingPoint& p) const {
     const Point& point = *by_key_.at(p.point_key);
     const ReferenceSlot& slot = references_.at(p.reference_key);
-    if (!slot.reference) return {p.point_id, kind_.Failed(point, slot.error)};
+    if (!slot.reference) return {p.point_id, Outcome{"failed", slot.error, std::nullopt}};
     return {p.point_id, kind_.Score(point, *slot.reference, slot.id)};
   }
 

@@ -6,7 +6,7 @@
 // A kind has three types:
 //   Point     one point of the study, as the spec describes it (what a worker needs);
 //   Reference what its points are scored against, computed once per database and shared;
-//   Outcome   one point's result, as it will be stored.
+//   Outcome   one point's result, as it will be stored: a PointOutcome of the kind's score row.
 // The Compute/Score members run on workers: they are const, thread-safe and never touch the
 // database. Everything that takes a StudyDatabase runs on the one writer.
 
@@ -25,6 +25,15 @@ struct StudyHeader {
   std::string file;
   std::string name;
   std::string spec_json;
+};
+
+// One point's result as stored: its status ("ok", "diverged", "failed",
+// "reference_unconverged"), a message, and the kind's score row when it was computed.
+template <typename Score>
+struct PointOutcome {
+  std::string status = "failed";
+  std::string message;
+  std::optional<Score> score;
 };
 
 // A reference as found in the database, with its id.
@@ -60,9 +69,7 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
 
   // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
   { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
-  // The outcome of a point whose reference could not be computed.
-  { kind.Failed(point, text) } -> std::same_as<typename K::Outcome>;
-  { K::StatusOf(outcome) } -> std::convertible_to<std::string>;
+  { outcome.status } -> std::convertible_to<std::string>;
   // One transaction: the point's status and score.
   kind.StoreOutcome(db, id, id, outcome);
 };
