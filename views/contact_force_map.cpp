@@ -34,7 +34,8 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
 
   // Columns: y (mm), z (mm), height (m), force (N), 1 between two beams / 0 against a stop.
   const auto zones_file = std::filesystem::path(file).replace_extension(".zones.dat");
-  std::ofstream zones = OpenForWriting(zones_file);
+  AtomicFile zones_out(zones_file);
+  std::ostream& zones = zones_out.Stream();
   double y_min = 0.0, y_max = 0.0, top = 0.0, largest_between = 0.0;
   for (std::size_t i : ByForce(max_force_n)) {
     const SceneZone& z = scene.zones[i];
@@ -44,7 +45,7 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
     top = std::max(top, z.height_m);
     if (z.beam_b >= 0) largest_between = std::max(largest_between, max_force_n[i]);
   }
-  CloseWritten(zones, zones_file);
+  zones_out.Commit();
   for (const SceneBeam& b : scene.beams) top = std::max(top, b.length_m);
 
   // Cross-section: the largest force over the heights at each location.
@@ -60,14 +61,15 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
     std::vector<std::pair<double, std::size_t>> cells;
     for (const auto& [key, cell] : at) cells.emplace_back(cell.second, cell.first);
     std::stable_sort(cells.begin(), cells.end());
-    std::ofstream section = OpenForWriting(section_file);
+    AtomicFile section_out(section_file);
+    std::ostream& section = section_out.Stream();
     for (const auto& [force, i] : cells) {
       section << 1e3 * scene.zones[i].y_m << ' ' << 1e3 * scene.zones[i].z_m << ' ' << force
               << '\n';
     }
     section << "\n\n";  // Index 1: the beams.
     for (const SceneBeam& b : scene.beams) section << 1e3 * b.y_m << ' ' << 1e3 * b.z_m << '\n';
-    CloseWritten(section, section_file);
+    section_out.Commit();
   }
 
   const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
@@ -84,46 +86,48 @@ set grid lc rgb '#dddddd'
 )",
       fmt::arg("cb", cb_max));
   const std::string profile = fmt::format(
-      R"(set title "zones by height and lateral position" font ',12'
+      R"(set title 'zones by height and lateral position' font ',12'
 set xlabel 'lateral position y (mm)'
 set ylabel 'height (m)'
 set xrange [{x0}:{x1}]
 set yrange [0:{top}]
 set key top right opaque box font ',10'
-plot '{zones}' using 1:($4 > 0 ? 1/0 : $3) with points pt 6 ps 0.8 lc rgb '#bdbdbd' title 'never in contact', \
+plot {zones} using 1:($4 > 0 ? 1/0 : $3) with points pt 6 ps 0.8 lc rgb '#bdbdbd' title 'never in contact', \
      '' using 1:($4 > 0 && $5 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.4 lc palette title 'between beams', \
      '' using 1:($4 > 0 && $5 == 0 ? $3 : 1/0) with points pt 5 ps 1.6 lc rgb '#000000' title 'against a stop', \
      '' using 1:($4 > 0 && $5 == 0 ? $3 : 1/0):(sprintf(' %.4g N', $4)) with labels left offset 1,0 font ',10' notitle
 )",
-      fmt::arg("zones", zones_file.string()), fmt::arg("x0", y_min - margin),
+      fmt::arg("zones", GnuplotFileName(zones_file)), fmt::arg("x0", y_min - margin),
       fmt::arg("x1", y_max + margin), fmt::arg("top", 1.05 * top));
   const std::string section =
       both ? fmt::format(
-                 R"(set title "cross-section: largest force over the heights" font ',12'
+                 R"(set title 'cross-section: largest force over the heights' font ',12'
 set xlabel 'y (mm)'
 set ylabel 'z (mm)'
 set autoscale xy
 set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 set size ratio -1
-plot '{section}' index 1 using 1:2 with points pt 6 ps 1.6 lc rgb '#969696' title 'beams', \
+plot {section} index 1 using 1:2 with points pt 6 ps 1.6 lc rgb '#969696' title 'beams', \
      '' index 0 using 1:2:3 with points pt 7 ps 1.1 lc palette title 'zones'
 )",
-                 fmt::arg("section", section_file.string()))
+                 fmt::arg("section", GnuplotFileName(section_file)))
            : "";
   const std::string script = fmt::format(
       R"(set terminal {terminal}
-set output '{out}'
+set output {out}
 {common}{layout}{profile}{section}{unset}
 )",
       fmt::arg("terminal", TerminalFor(file, both ? 1500 : 900, 800)),
-      fmt::arg("out", file.string()), fmt::arg("common", common),
-      fmt::arg("layout",
-               fmt::format("set multiplot layout 1,{} title \"{}: maximum contact force per zone "
-                           "(largest {:.4g} N at {})\" font ',13' noenhanced\n",
-                           both ? 2 : 1, scene.name, *largest, strongest.name)),
+      fmt::arg("out", GnuplotFileName(file)), fmt::arg("common", common),
+      fmt::arg(
+          "layout",
+          fmt::format("set multiplot layout 1,{} title {} font ',13' noenhanced\n", both ? 2 : 1,
+                      GnuplotQuoted(
+                          fmt::format("{}: maximum contact force per zone (largest {:.4g} N at {})",
+                                      scene.name, *largest, strongest.name)))),
       fmt::arg("profile", profile), fmt::arg("section", section),
       fmt::arg("unset", "unset multiplot"));
-  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"));
+  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 
 }  // namespace shockmap
