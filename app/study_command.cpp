@@ -105,14 +105,14 @@ void Status(const StudyFlags& f) {
   WriteQueryResult(r, QueryFormat::kTable, std::cout);
 }
 
-// Rows are printed as SQLite produces them; a limit reached ends the output with an error.
+// Rows are printed as SQLite produces them; a limit reached closes the output, then fails.
 void Query(const StudyFlags& f) {
   QueryWriter writer(*QueryFormatFromString(f.format), std::cout);
   CheckedStdoutSink sink(writer);
   try {
     StreamReadOnlyQuery(f.run.database_path, f.sql, {}, f.limits, sink);
   } catch (const QueryLimitReached& e) {
-    std::cout.flush();
+    writer.Finish();  // The rows printed stay a whole table, CSV or JSON array.
     throw InputError(std::string(e.what()) +
                      "; --max-rows N and --timeout-s S raise the limits, 0 lifts them");
   }
