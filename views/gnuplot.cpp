@@ -28,6 +28,19 @@ struct ChildOutcome {
   std::string output;  // stdout and stderr, the last kExcerptBytes * 4 bytes.
 };
 
+// What `fd` gives until its end, the last `keep` bytes of it.
+std::string ReadTail(int fd, std::size_t keep) {
+  std::string text;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+    if (text.size() > keep) text.erase(0, text.size() - keep);
+  }
+  return text;
+}
+
 // Runs `gnuplot ./NAME` in the script's folder with stdin from /dev/null and its output piped
 // back. Throws PlotError when gnuplot cannot be started.
 ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
@@ -58,14 +71,7 @@ ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
                                        std::strerror(rc));
   }
   ChildOutcome outcome;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(pipe_fds[0], buffer, sizeof buffer)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    outcome.output.append(buffer, static_cast<std::size_t>(n));
-    if (outcome.output.size() > 4 * kExcerptBytes)
-      outcome.output.erase(0, outcome.output.size() - 4 * kExcerptBytes);
-  }
+  outcome.output = ReadTail(pipe_fds[0], 4 * kExcerptBytes);
   ::close(pipe_fds[0]);
   while (::waitpid(pid, &outcome.status, 0) < 0 && errno == EINTR) {
   }
