@@ -137,6 +137,16 @@ TEST_F(GnuplotProcess, OutputPathWithQuotesIsAFileNotAShellCommand) {
   EXPECT_FALSE(Pwned(dir_));
 }
 
+TEST_F(GnuplotProcess, OutputNamedLikeAPipeIsAFile) {
+  for (const std::string out : {"|touch PWNED.png", "<touch PWNED.png"}) {
+    const Outcome o = Map(out);
+    ASSERT_EQ(o.exit_code, 0) << out << ": " << o.output;
+    EXPECT_GT(std::filesystem::file_size(dir_ / out), 1000u) << out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "PWNED.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "PWNED.dat"));
+}
+
 TEST_F(GnuplotProcess, OutputNamedLikeAnOptionIsDrawn) {
   const Outcome o = Map("-m.png");
   ASSERT_EQ(o.exit_code, 0) << o.output;
@@ -289,7 +299,10 @@ TEST_F(BoundedQuery, BadLimitsAreRefusedByFlag) {
   for (const std::string flags : {"--max-rows -1", "--timeout-s -2", "--timeout-s soon"}) {
     const Outcome o = Query("SELECT 1", flags);
     EXPECT_EQ(o.exit_code, 2) << flags << ": " << o.output;
-    EXPECT_NE(o.output.find(flags.substr(0, flags.find(' '))), std::string::npos) << o.output;
+    // "--flag: value V must be ...": the flag, the value and what is allowed.
+    const std::string flag = flags.substr(0, flags.find(' '));
+    EXPECT_NE(o.output.find(flag + ": value"), std::string::npos) << o.output;
+    EXPECT_NE(o.output.find(flags.substr(flags.find(' ') + 1)), std::string::npos) << o.output;
   }
 }
 

@@ -160,7 +160,8 @@ std::string GnuplotFileName(const std::filesystem::path& file) {
                        ": a plot file name may not hold line breaks or other control characters");
     }
   }
-  return GnuplotQuoted(name);
+  // "./" keeps gnuplot from reading a leading '|' (output) or '<' (data) as a command to run.
+  return GnuplotQuoted("./" + name);
 }
 
 void RunGnuplot(const std::string& script, const std::filesystem::path& script_file,

@@ -24,9 +24,9 @@ std::string TerminalFor(const std::filesystem::path& file, int width, int height
 // cannot hold, replaced by spaces.
 std::string GnuplotQuoted(std::string_view text);
 
-// The literal naming `file` in a script run from file's own folder (see RunGnuplot): its name
-// only, quoted. Throws InputError when the name holds a control character, which no gnuplot
-// string can carry.
+// The literal naming `file` in a script run from file's own folder (see RunGnuplot): "./" and
+// its name, quoted, so that no name reads as a command ('|cmd', '<cmd'). Throws InputError when the
+// name holds a control character, which no gnuplot string can carry.
 std::string GnuplotFileName(const std::filesystem::path& file);
 
 // Writes `script` to script_file (in full or not at all) and runs gnuplot on it from the
