@@ -10,6 +10,7 @@
 #include "core/transient_run.h"
 #include "formats/comparison_json.h"
 #include "formats/history_csv.h"
+#include "formats/output_file.h"
 #include "views/comparison_plot.h"
 
 namespace shockmap {
@@ -85,19 +86,22 @@ void Run(const CompareFlags& flags) {
                     max_steps));
   }
 
+  // The outputs are checked before the run and written before anything is reported.
+  if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
   const ComparisonResult result = RunComparison(f.problem, f.options);
-  if (f.json) {
-    std::cout << ComparisonToJson(f.problem, f.options, result).dump(2) << '\n';
-  } else {
-    PrintHuman(f, result);
-  }
+  std::optional<std::filesystem::path> png;
   if (!f.out_dir.empty()) {
     WriteComparisonCsv(result, f.out_dir);
-    if (f.plot) {
-      const auto png = PlotComparison(result, f.problem, f.options, f.out_dir);
-      if (!f.json) fmt::print("  plot              {}\n", png.string());
-    }
-    if (!f.json) fmt::print("  histories         {}/numerical.csv, reference.csv\n", f.out_dir);
+    if (f.plot) png = PlotComparison(result, f.problem, f.options, f.out_dir);
+  }
+  if (f.json) {
+    std::cout << ComparisonToJson(f.problem, f.options, result).dump(2) << '\n';
+    return;
+  }
+  PrintHuman(f, result);
+  if (png) fmt::print("  plot              {}\n", png->string());
+  if (!f.out_dir.empty()) {
+    fmt::print("  histories         {}/numerical.csv, reference.csv\n", f.out_dir);
   }
 }
 

@@ -1,7 +1,6 @@
 #include "app/criteria_command.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -9,6 +8,7 @@
 #include "core/input_error.h"
 #include "db/study_database.h"
 #include "formats/json_reader.h"
+#include "formats/output_file.h"
 #include "views/criteria_report.h"
 #include "views/scored_points.h"
 
@@ -29,19 +29,17 @@ constexpr int kCheckFailed = 1;
 void Derive(const CriteriaFlags& f) {
   std::string error;
   if (!f.options.IsValid(&error)) throw InputError(error);
+  if (!f.out.empty()) CheckPathLength(f.out, "--out");
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
   const ValidityCriteria criteria = DeriveCriteria(points, f.options);
-  std::cout << CriteriaSummary(study, criteria, points);
   if (!f.out.empty()) {
     const std::filesystem::path file(f.out);
-    std::error_code ec;
-    if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-    std::ofstream out(file);
-    out << CriteriaToJson(study, criteria).dump(2) << '\n';
-    if (!out) throw InputError("cannot write " + f.out);
-    std::cout << "  written     " << f.out << '\n';
+    if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
+    WriteFileAtomically(file, CriteriaToJson(study, criteria).dump(2) + '\n');
   }
+  std::cout << CriteriaSummary(study, criteria, points);
+  if (!f.out.empty()) std::cout << "  written     " << f.out << '\n';
 }
 
 void Check(const CriteriaFlags& f) {

@@ -1,5 +1,6 @@
 // shockmap: maps where a truncated modal basis with explicit integration gives contact forces
-// that can be trusted. Exit codes: 0 success, 1 internal failure, 2 bad input.
+// that can be trusted. Exit codes: 0 success, 1 internal failure or gnuplot failing, 2 bad input
+// or an output that could not be written (standard output included).
 
 #include <CLI/CLI.hpp>
 #include <iostream>
@@ -13,6 +14,8 @@
 #include "app/view_commands.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
+#include "formats/output_file.h"
+#include "views/gnuplot.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -42,6 +45,7 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
+    shockmap::CheckStandardOutput(true);
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // A verdict already printed (criteria check: 1).
   } catch (const CLI::ParseError& e) {
@@ -56,6 +60,9 @@ int main(int argc, char** argv) {
     // given is invalid or would write: all input the user can fix.
     std::cerr << "shockmap: database error: " << e.what() << '\n';
     return 2;
+  } catch (const shockmap::PlotError& e) {
+    std::cerr << "shockmap: plot error: " << e.what() << '\n';
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "shockmap: internal error: " << e.what() << '\n';
     return 1;

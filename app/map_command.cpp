@@ -5,6 +5,7 @@
 
 #include "app/flag_checks.h"
 #include "db/study_database.h"
+#include "formats/output_file.h"
 #include "views/scored_points.h"
 #include "views/validity_map.h"
 
@@ -22,6 +23,7 @@ struct MapFlags {
 };
 
 void Draw(const MapFlags& f) {
+  if (!f.out.empty()) CheckPathLength(f.out, "--out");
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
   MapOptions options;

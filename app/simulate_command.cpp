@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/input_error.h"
+#include "formats/output_file.h"
 #include "formats/scene_file.h"
 #include "formats/scene_outputs.h"
 #include "views/contact_force_map.h"
@@ -59,29 +60,44 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
   }
 }
 
-void Run(const SimulateFlags& f) {
-  const Scene scene = LoadScene(f.scene_file);
-  SceneRun run;
-  try {
-    run = RunScene(scene);
-  } catch (const InputError& e) {
-    throw InputError(f.scene_file + ": " + e.what());
-  }
-  if (f.json) {
-    std::cout << SceneRunToJson(scene, run).dump(2) << '\n';
-  } else {
-    PrintHuman(scene, run);
-  }
-  if (f.out_dir.empty()) return;
+// The longest name written into the output directory.
+constexpr const char* kLongestOutput = "contact_force_map.section.dat";
+
+// Writes the outputs the scene asks for into f.out_dir; the files written.
+std::vector<std::filesystem::path> WriteOutputs(const SimulateFlags& f, const Scene& scene,
+                                                const SceneRun& run) {
   auto written = WriteSceneOutputs(scene, run, f.out_dir);
   if (!run.max_contact_force_n.empty() && !scene.zones.empty()) {
     const auto map = std::filesystem::path(f.out_dir) / "contact_force_map.png";
     DrawContactForceMap(scene, run.max_contact_force_n, map);
     written.push_back(map);
   }
-  if (!f.json) {
-    for (const auto& file : written) fmt::print("  wrote             {}\n", file.string());
+  return written;
+}
+
+// The outputs are checked before the run and written before anything is reported, so that
+// success is printed only for files that exist.
+void Run(const SimulateFlags& f) {
+  const Scene scene = LoadScene(f.scene_file);
+  if (!f.out_dir.empty()) {
+    PrepareOutputDirectory(f.out_dir, "--out");
+    CheckPathLength(std::filesystem::path(f.out_dir) / kLongestOutput,
+                    "--out (with the names of the files written into it)");
   }
+  SceneRun run;
+  try {
+    run = RunScene(scene);
+  } catch (const InputError& e) {
+    throw InputError(f.scene_file + ": " + e.what());
+  }
+  const auto written =
+      f.out_dir.empty() ? std::vector<std::filesystem::path>{} : WriteOutputs(f, scene, run);
+  if (f.json) {
+    std::cout << SceneRunToJson(scene, run).dump(2) << '\n';
+    return;
+  }
+  PrintHuman(scene, run);
+  for (const auto& file : written) fmt::print("  wrote             {}\n", file.string());
 }
 
 }  // namespace

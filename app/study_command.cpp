@@ -5,13 +5,37 @@
 #include <iostream>
 #include <memory>
 
+#include "app/flag_checks.h"
 #include "db/study_queries.h"
 #include "engine/stop_request.h"
 #include "engine/study_run.h"
+#include "formats/output_file.h"
 #include "views/query_output.h"
 
 namespace shockmap {
 namespace {
+
+// Bounds of `shockmap query` unless the user lifts them (0) or sets others.
+constexpr std::int64_t kDefaultMaxRows = 1'000'000;
+constexpr double kDefaultTimeout_s = 60.0;
+
+// The query writer, with standard output checked after every row so that a failed write
+// stops the statement.
+class CheckedStdoutSink : public QueryRowSink {
+ public:
+  explicit CheckedStdoutSink(QueryWriter& writer) : writer_(writer) {}
+  void Columns(const std::vector<std::string>& names) override {
+    writer_.Columns(names);
+    CheckStandardOutput(false);
+  }
+  void Row(const std::vector<QueryCell>& row) override {
+    writer_.Row(row);
+    CheckStandardOutput(false);
+  }
+
+ private:
+  QueryWriter& writer_;
+};
 
 struct StudyFlags {
   std::string spec_path;
@@ -20,6 +44,7 @@ struct StudyFlags {
   bool quiet = false;
   std::string sql;
   std::string format = "table";
+  QueryLimits limits{kDefaultMaxRows, kDefaultTimeout_s};
 };
 
 void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
@@ -79,6 +104,20 @@ void Status(const StudyFlags& f) {
   }
 }
 
+// Rows are printed as SQLite produces them; a limit reached closes the output, then fails.
+void Query(const StudyFlags& f) {
+  QueryWriter writer(*QueryFormatFromString(f.format), std::cout);
+  CheckedStdoutSink sink(writer);
+  try {
+    StreamReadOnlyQuery(f.run.database_path, f.sql, {}, f.limits, sink);
+  } catch (const QueryLimitReached& e) {
+    writer.Finish();  // The rows printed stay a whole table, CSV or JSON array.
+    throw InputError(std::string(e.what()) +
+                     "; --max-rows N and --timeout-s S raise the limits, 0 lifts them");
+  }
+  writer.Finish();
+}
+
 }  // namespace
 
 void AddStudyCommand(CLI::App& app) {
@@ -116,10 +155,18 @@ void AddQueryCommand(CLI::App& app) {
   query->add_option("--format", flags->format, "output format")
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));
-  query->callback([flags] {
-    const QueryResult r = RunReadOnlyQuery(flags->run.database_path, flags->sql);
-    WriteQueryResult(r, *QueryFormatFromString(flags->format), std::cout);
-  });
+  query
+      ->add_option("--max-rows", flags->limits.max_rows,
+                   "stop with an error when the result has more rows (0: no limit)")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, false));
+  query
+      ->add_option("--timeout-s", flags->limits.timeout_s,
+                   "stop with an error when the statement runs longer, in seconds of wall time "
+                   "(0: no limit)")
+      ->capture_default_str()
+      ->check(FiniteAbove(0.0, false));
+  query->callback([flags] { Query(*flags); });
 }
 
 }  // namespace shockmap

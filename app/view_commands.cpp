@@ -5,7 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/flag_checks.h"
+#include "core/input_error.h"
+#include "db/report_queries.h"
 #include "db/study_database.h"
+#include "formats/output_file.h"
 #include "views/advice.h"
 #include "views/cost_front.h"
 #include "views/fig4_plot.h"
@@ -30,9 +33,14 @@ void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
 }
 
 StudySpec StoredSpec(const std::string& database_path, const std::string& study) {
-  StudyDatabase db(database_path);
-  const auto json = db.StoredSpec(study);
+  const auto json = StoredStudySpec(database_path, study);
+  if (!json) throw InputError("no study named \"" + study + "\" in " + database_path);
   return ParseStudySpec(nlohmann::json::parse(*json), database_path);
+}
+
+// Throws InputError naming --out when the plot or the files beside it could not be named.
+void CheckPlotPath(const std::string& out) {
+  if (!out.empty()) CheckPathLength(out, "--out");
 }
 
 }  // namespace
@@ -47,6 +55,7 @@ void AddViewCommands(CLI::App& app) {
   AddCommon(fig4, *flags, true);
   fig4->add_option("--out", flags->out, "image, .png or .svg (default: out/STUDY_fig4.png)");
   fig4->callback([flags] {
+    CheckPlotPath(flags->out);
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const std::string out = flags->out.empty() ? "out/" + study + "_fig4.png" : flags->out;
     DrawFig4(study, LoadScoredPoints(flags->database_path, study, "explicit-modal"),
@@ -64,6 +73,7 @@ void AddViewCommands(CLI::App& app) {
   cost->add_option("--out", flags->out,
                    "plot of the R_k given by --rk (default: out/STUDY_cost_rkX.png)");
   cost->callback([flags] {
+    CheckPlotPath(flags->out);
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto tables =
         BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
@@ -100,6 +110,7 @@ void AddViewCommands(CLI::App& app) {
   AddCommon(report, *flags, true);
   report->add_option("--out", flags->out, "directory for report.html and its figures")->required();
   report->callback([flags] {
+    CheckPathLength(std::filesystem::path(flags->out) / "map_status_dt.png", "--out");
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto page = WriteHtmlReport(flags->database_path, study, flags->thresholds, flags->out);
     std::cout << "report written to " << page.string() << '\n';

@@ -1,20 +1,33 @@
 #include "db/read_only_query.h"
 
 #include <cctype>
+#include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 #include "db/schema.h"
-#include "db/sqlite_handle.h"
 
 namespace shockmap {
+namespace {
 
-QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                             const std::vector<std::string>& text_parameters) {
-  if (!std::filesystem::is_regular_file(database_path)) {
-    throw DbError("no database at " + database_path);
-  }
-  Connection db(database_path, Connection::Mode::kReadOnly);
-  CheckSchema(db);
+using Clock = std::chrono::steady_clock;
+
+// Virtual machine instructions between two looks at the clock.
+constexpr int kProgressPeriod = 10000;
+
+struct Deadline {
+  Clock::time_point end;
+  bool reached = false;
+};
+
+int StopAtDeadline(void* context) {
+  auto* deadline = static_cast<Deadline*>(context);
+  deadline->reached = deadline->reached || Clock::now() >= deadline->end;
+  return deadline->reached ? 1 : 0;
+}
+
+// The one statement of `sql`, checked to be alone and read-only.
+Statement PrepareOne(Connection& db, const std::string& sql) {
   sqlite3_stmt* raw = nullptr;
   const char* tail = nullptr;
   if (sqlite3_prepare_v2(db.Raw(), sql.c_str(), static_cast<int>(sql.size()), &raw, &tail) !=
@@ -31,34 +44,85 @@ QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string
   if (!statement.IsReadOnly()) {
     throw DbError("refused: the statement would modify the database; shockmap query is read-only");
   }
+  return statement;
+}
+
+QueryCell Cell(const Statement& statement, int i) {
+  switch (statement.ColumnType(i)) {
+    case SQLITE_NULL:
+      return std::monostate{};
+    case SQLITE_INTEGER:
+      return statement.GetInt(i);
+    case SQLITE_FLOAT:
+      return statement.GetDouble(i);
+    case SQLITE_BLOB:
+      return "<blob " + std::to_string(statement.GetBlob(i).size()) + " doubles>";
+    default:
+      return statement.GetText(i);
+  }
+}
+
+// Steps once; throws QueryLimitReached when the deadline interrupted the step.
+bool Step(Statement& statement, const Deadline& deadline, double timeout_s) {
+  try {
+    return statement.Step();
+  } catch (const DbError&) {
+    if (!deadline.reached) throw;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", timeout_s);
+    throw QueryLimitReached(std::string("the statement ran longer than the time limit of ") +
+                            seconds + " s and was stopped");
+  }
+}
+
+class Collector : public QueryRowSink {
+ public:
+  explicit Collector(QueryResult& result) : result_(result) {}
+  void Columns(const std::vector<std::string>& names) override { result_.columns = names; }
+  void Row(const std::vector<QueryCell>& row) override { result_.rows.push_back(row); }
+
+ private:
+  QueryResult& result_;
+};
+
+}  // namespace
+
+void StreamReadOnlyQuery(const std::string& database_path, const std::string& sql,
+                         const std::vector<std::string>& text_parameters, const QueryLimits& limits,
+                         QueryRowSink& sink) {
+  if (!std::filesystem::is_regular_file(database_path)) {
+    throw DbError("no database at " + database_path);
+  }
+  Connection db(database_path, Connection::Mode::kReadOnly);
+  CheckSchema(db);
+  Statement statement = PrepareOne(db, sql);
   for (std::size_t i = 0; i < text_parameters.size(); ++i) {
     statement.Bind(static_cast<int>(i + 1), text_parameters[i]);
   }
-  QueryResult result;
-  for (int i = 0; i < statement.ColumnCount(); ++i)
-    result.columns.push_back(statement.ColumnName(i));
-  while (statement.Step()) {
-    std::vector<QueryCell> row;
-    for (int i = 0; i < statement.ColumnCount(); ++i) {
-      switch (statement.ColumnType(i)) {
-        case SQLITE_NULL:
-          row.emplace_back(std::monostate{});
-          break;
-        case SQLITE_INTEGER:
-          row.emplace_back(statement.GetInt(i));
-          break;
-        case SQLITE_FLOAT:
-          row.emplace_back(statement.GetDouble(i));
-          break;
-        case SQLITE_BLOB:
-          row.emplace_back("<blob " + std::to_string(statement.GetBlob(i).size()) + " doubles>");
-          break;
-        default:
-          row.emplace_back(statement.GetText(i));
-      }
-    }
-    result.rows.push_back(std::move(row));
+  Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(limits.timeout_s))};
+  if (limits.timeout_s > 0) {
+    sqlite3_progress_handler(db.Raw(), kProgressPeriod, StopAtDeadline, &deadline);
   }
+  std::vector<std::string> columns;
+  for (int i = 0; i < statement.ColumnCount(); ++i) columns.push_back(statement.ColumnName(i));
+  sink.Columns(columns);
+  std::vector<QueryCell> row(columns.size());
+  for (std::int64_t n = 0; Step(statement, deadline, limits.timeout_s); ++n) {
+    if (limits.max_rows > 0 && n == limits.max_rows) {
+      throw QueryLimitReached("the result has more than the row limit of " +
+                              std::to_string(limits.max_rows) + " rows; stopped there");
+    }
+    for (int i = 0; i < statement.ColumnCount(); ++i) row[i] = Cell(statement, i);
+    sink.Row(row);
+  }
+}
+
+QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
+                             const std::vector<std::string>& text_parameters) {
+  QueryResult result;
+  Collector collector(result);
+  StreamReadOnlyQuery(database_path, sql, text_parameters, {}, collector);
   return result;
 }
 

@@ -219,8 +219,8 @@ int CheckedVersion(Connection& db) {
 void CheckSchema(Connection& db) {
   if (CheckedVersion(db) != kSchemaVersion) {
     throw DbError(db.Path() +
-                  ": schema is older than this build's; open it once for writing "
-                  "(shockmap study run) to migrate");
+                  ": schema is older than this build's; `shockmap study run STUDY_FILE --db " +
+                  db.Path() + "` migrates it (it opens the database for writing)");
   }
 }
 

@@ -1,5 +1,10 @@
 #include "db/sqlite_handle.h"
 
+#include <sys/statvfs.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace shockmap {
@@ -18,12 +23,39 @@ std::string Describe(sqlite3* db) {
   return message;
 }
 
+// `path` as a file: URI (https://sqlite.org/uri.html) for a read-only, maybe immutable, open.
+std::string ReadOnlyUri(const std::string& path) {
+  std::string uri = path.starts_with('/') ? "file://" : "file:";
+  for (unsigned char c : path) {
+    if (c == '%' || c == '?' || c == '#' || c < 0x20 || c >= 0x7f) {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, "%%%02X", c);
+      uri += hex;
+    } else {
+      uri += static_cast<char>(c);
+    }
+  }
+  return uri + (OpensImmutable(path) ? "?mode=ro&immutable=1" : "?mode=ro");
+}
+
 }  // namespace
 
+bool OpensImmutable(const std::string& path) {
+  struct statvfs fs {};
+  if (::statvfs(path.c_str(), &fs) == 0 && (fs.f_flag & ST_RDONLY) != 0) return true;
+  const std::string folder = path.find('/') == std::string::npos
+                                 ? std::string(".")
+                                 : path.substr(0, std::max<std::size_t>(path.rfind('/'), 1));
+  const bool writable = ::access(path.c_str(), W_OK) == 0 && ::access(folder.c_str(), W_OK) == 0;
+  return !writable && ::access((path + "-wal").c_str(), F_OK) != 0;
+}
+
 Connection::Connection(const std::string& path, Mode mode) : path_(path) {
-  const int flags =
-      mode == Mode::kReadOnly ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
-  const int rc = sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
+  const bool read_only = mode == Mode::kReadOnly;
+  const std::string name = read_only ? ReadOnlyUri(path) : path;
+  const int flags = read_only ? SQLITE_OPEN_READONLY | SQLITE_OPEN_URI
+                              : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+  const int rc = sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
     const std::string msg = db_ != nullptr ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);

@@ -24,11 +24,18 @@ class Statement;
 // One SQL value: NULL, integer, real or text.
 using SqlValue = std::variant<std::monostate, std::int64_t, double, std::string>;
 
+// True when a read-only connection to `path` may treat the file as immutable: its file system
+// is mounted read-only, or this process may not write the file or its folder and no -wal file
+// (the mark of a writer in WAL mode) lies beside it.
+bool OpensImmutable(const std::string& path);
+
 class Connection {
  public:
   enum class Mode { kReadWriteCreate, kReadOnly };
   // Opens `path`. Throws DbError naming the path when it cannot be opened. A read-only
-  // connection never creates the file and sets PRAGMA query_only.
+  // connection never creates the file and sets PRAGMA query_only; where nothing can write the
+  // file (see OpensImmutable) it opens it immutable, so that SQLite neither locks it nor creates
+  // -wal or -shm files beside it.
   Connection(const std::string& path, Mode mode);
   ~Connection();
   Connection(const Connection&) = delete;

@@ -9,7 +9,8 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
 
   const TransientResult& h = result.histories;
   const auto num_file = dir / "numerical.csv";
-  std::ofstream num = OpenForWriting(num_file);
+  AtomicFile num_out(num_file);
+  std::ostream& num = num_out.Stream();
   num << "t_s,tip_displacement_m,tip_velocity_m_s,contact_force_n,kinetic_j,strain_j,contact_j,"
          "dissipated_j\n";
   if (!h.displacement_m.empty()) {
@@ -21,16 +22,17 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
           << h.energy.dissipated_j.values[i] << '\n';
     }
   }
-  CloseWritten(num, num_file);
+  num_out.Commit();
 
   const auto ref_file = dir / "reference.csv";
-  std::ofstream ref = OpenForWriting(ref_file);
+  AtomicFile ref_out(ref_file);
+  std::ostream& ref = ref_out.Stream();
   ref << "t_s,tip_displacement_m,contact_force_n\n";
   const UniformSignal& u = result.reference->tip_m;
   for (std::size_t i = 0; i < u.values.size(); ++i) {
     ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference->force_n.values[i] << '\n';
   }
-  CloseWritten(ref, ref_file);
+  ref_out.Commit();
 }
 
 }  // namespace shockmap

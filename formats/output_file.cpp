@@ -1,8 +1,28 @@
 #include "formats/output_file.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
 #include "core/input_error.h"
 
 namespace shockmap {
+namespace {
+
+std::string Reason(int error) { return error != 0 ? std::strerror(error) : "write error"; }
+
+std::string Excerpt(const std::string& text) {
+  return text.size() <= 80 ? text : text.substr(0, 60) + "..." + text.substr(text.size() - 16);
+}
+
+}  // namespace
 
 void CreateOutputDirectory(const std::filesystem::path& dir) {
   std::error_code ec;
@@ -10,16 +30,139 @@ void CreateOutputDirectory(const std::filesystem::path& dir) {
   if (ec) throw InputError("cannot create directory " + dir.string() + ": " + ec.message());
 }
 
-std::ofstream OpenForWriting(const std::filesystem::path& file) {
-  std::ofstream out(file);
-  if (!out) throw InputError("cannot write " + file.string());
-  out.precision(12);
-  return out;
+void CheckPathLength(const std::filesystem::path& path, std::string_view flag) {
+  const std::string text = path.string();
+  if (text.size() >= PATH_MAX) {
+    throw InputError(std::string(flag) + ": the path \"" + Excerpt(text) + "\" is " +
+                     std::to_string(text.size()) + " bytes long; the system allows at most " +
+                     std::to_string(PATH_MAX - 1));
+  }
+  for (const auto& part : path) {
+    if (part.string().size() > NAME_MAX) {
+      throw InputError(std::string(flag) + ": the name \"" + Excerpt(part.string()) + "\" is " +
+                       std::to_string(part.string().size()) +
+                       " bytes long; the system allows at most " + std::to_string(NAME_MAX) +
+                       " bytes per file or folder name");
+    }
+  }
 }
 
-void CloseWritten(std::ofstream& out, const std::filesystem::path& file) {
-  out.close();
-  if (!out) throw InputError("error while writing " + file.string());
+void PrepareOutputDirectory(const std::filesystem::path& dir, std::string_view flag) {
+  CheckPathLength(dir, flag);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec)) {
+    throw InputError(std::string(flag) + ": " + dir.string() +
+                     " exists and is not a directory; name a directory for the outputs");
+  }
+  CreateOutputDirectory(dir);
+}
+
+// A stream buffer over a file descriptor that keeps the first write error's errno.
+class AtomicFile::Buffer : public std::streambuf {
+ public:
+  explicit Buffer(int fd) : fd_(fd) { setp(data_.data(), data_.data() + data_.size()); }
+  ~Buffer() override {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  // Writes what is buffered, syncs and closes; the first errno met, 0 when all went through.
+  int Finish() {
+    Drain();
+    if (error_ == 0 && ::fsync(fd_) != 0) error_ = errno;
+    if (::close(fd_) != 0 && error_ == 0) error_ = errno;
+    fd_ = -1;
+    return error_;
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    if (!Drain()) return traits_type::eof();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override { return Drain() ? 0 : -1; }
+
+ private:
+  bool Drain() {
+    for (const char* p = pbase(); error_ == 0 && p < pptr();) {
+      const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+      if (n > 0) {
+        p += n;
+      } else if (n < 0 && errno != EINTR) {
+        error_ = errno;
+      } else if (n == 0) {
+        error_ = EIO;
+      }
+    }
+    setp(data_.data(), data_.data() + data_.size());
+    return error_ == 0;
+  }
+
+  int fd_;
+  int error_ = 0;
+  std::array<char, 1 << 16> data_{};
+};
+
+std::filesystem::path UnusedTemporaryName(const std::filesystem::path& dir) {
+  static std::atomic<unsigned> counter{0};
+  for (;;) {
+    auto name = dir / (".shockmap-" + std::to_string(::getpid()) + "-" +
+                       std::to_string(counter.fetch_add(1)) + ".tmp");
+    std::error_code ec;
+    if (!std::filesystem::exists(std::filesystem::symlink_status(name, ec))) return name;
+  }
+}
+
+AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)), stream_(nullptr) {
+  const auto dir = path_.has_parent_path() ? path_.parent_path() : std::filesystem::path(".");
+  int fd = -1;
+  do {
+    temp_ = UnusedTemporaryName(dir);
+    fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  } while (fd < 0 && errno == EEXIST);
+  if (fd < 0) throw InputError("cannot write " + path_.string() + ": " + Reason(errno));
+  buffer_ = std::make_unique<Buffer>(fd);
+  stream_.rdbuf(buffer_.get());
+  stream_.precision(12);
+}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  buffer_.reset();
+  std::error_code ec;
+  std::filesystem::remove(temp_, ec);
+}
+
+void AtomicFile::Commit() {
+  stream_.flush();
+  int error = buffer_->Finish();
+  if (error == 0 && std::rename(temp_.c_str(), path_.c_str()) != 0) error = errno;
+  if (error != 0) {
+    throw InputError("cannot write " + path_.string() + ": " + Reason(error) +
+                     "; the file was left as it was");
+  }
+  committed_ = true;
+}
+
+void WriteFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
+  AtomicFile file(path);
+  file.Stream() << bytes;
+  file.Commit();
+}
+
+void CheckStandardOutput(bool flush) {
+  // A failed write of stdio leaves its errno behind; no later call on the stream repeats it.
+  const int earlier = errno;
+  errno = 0;
+  if (flush) std::cout.flush();
+  if ((!flush || std::fflush(stdout) == 0) && std::cout && !std::ferror(stdout)) {
+    errno = earlier;
+    return;
+  }
+  const int error = errno != 0 ? errno : earlier;
+  throw InputError("cannot write standard output: " + Reason(error));
 }
 
 std::string CsvField(const std::string& text) {

@@ -46,10 +46,10 @@ Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
 template <typename Row>
 void WriteCsv(const std::filesystem::path& file, const std::string& header, std::size_t rows,
               Row row, std::vector<std::filesystem::path>& written) {
-  std::ofstream out = OpenForWriting(file);
-  out << header << '\n';
-  for (std::size_t i = 0; i < rows; ++i) row(out, i);
-  CloseWritten(out, file);
+  AtomicFile out(file);
+  out.Stream() << header << '\n';
+  for (std::size_t i = 0; i < rows; ++i) row(out.Stream(), i);
+  out.Commit();
   written.push_back(file);
 }
 
@@ -101,7 +101,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
     }
     WriteCsv(
         dir / "displacements.csv", header, r.displacement_m[0].values.size(),
-        [&](std::ofstream& out, std::size_t i) {
+        [&](std::ostream& out, std::size_t i) {
           out << r.displacement_m[0].TimeAt(i);
           for (std::size_t p = 0; p < r.displacement_m.size(); ++p)
             out << ',' << r.displacement_m[p].values[i] << ',' << r.velocity_m_s[p].values[i];
@@ -114,7 +114,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
     for (int z : run.recorded_zones) header += "," + CsvField(scene.zones[z].name + "_n");
     WriteCsv(
         dir / "contact_forces.csv", header, r.contact_force_n[0].values.size(),
-        [&](std::ofstream& out, std::size_t i) {
+        [&](std::ostream& out, std::size_t i) {
           out << r.contact_force_n[0].TimeAt(i);
           for (const auto& f : r.contact_force_n) out << ',' << f.values[i];
           out << '\n';
@@ -126,7 +126,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
     WriteCsv(
         dir / "energies.csv", "t_s,kinetic_j,strain_j,contact_j,dissipated_j,external_work_j",
         e.kinetic_j.values.size(),
-        [&](std::ofstream& out, std::size_t i) {
+        [&](std::ostream& out, std::size_t i) {
           out << e.kinetic_j.TimeAt(i) << ',' << e.kinetic_j.values[i] << ','
               << e.strain_j.values[i] << ',' << e.contact_j.values[i] << ','
               << e.dissipated_j.values[i] << ',' << e.external_work_j.values[i] << '\n';
@@ -137,7 +137,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
     WriteCsv(
         dir / "max_contact_force.csv", "zone,beam,against,height_m,y_m,z_m,max_force_n",
         scene.zones.size(),
-        [&](std::ofstream& out, std::size_t i) {
+        [&](std::ostream& out, std::size_t i) {
           const SceneZone& z = scene.zones[i];
           out << CsvField(z.name) << ',' << CsvField(BeamName(scene, z.beam_a)) << ','
               << CsvField(BeamName(scene, z.beam_b)) << ',' << z.height_m << ',' << z.y_m << ','
@@ -154,7 +154,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
         dir / "shocks.csv",
         "zone,start_s,end_s,duration_s,peak_force_n,peak_time_s,impulse_n_s,rebounds,truncated",
         rows.size(),
-        [&](std::ofstream& out, std::size_t i) {
+        [&](std::ostream& out, std::size_t i) {
           const Shock& s = *rows[i].second;
           out << CsvField(scene.zones[rows[i].first].name) << ',' << s.start_s << ',' << s.end_s
               << ',' << s.Duration() << ',' << s.peak_force_n << ',' << s.peak_time_s << ','
@@ -163,9 +163,7 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
         written);
   }
   const auto summary = dir / "summary.json";
-  std::ofstream out = OpenForWriting(summary);
-  out << SceneRunToJson(scene, run).dump(2) << '\n';
-  CloseWritten(out, summary);
+  WriteFileAtomically(summary, SceneRunToJson(scene, run).dump(2) + '\n');
   written.push_back(summary);
   return written;
 }

@@ -17,27 +17,29 @@ std::filesystem::path PlotComparison(const ComparisonResult& result,
                  : result.status;
   const std::string script = fmt::format(
       R"(set terminal pngcairo size 1200,900 font "DejaVu Sans,11"
-set output '{png}'
+set output {png}
 set datafile separator ','
-set multiplot layout 2,1 title "Tip of the beam, R_k = {rk:g}, R_{{ftrunc}} = {rft:g} ({modes} modes, {scheme}, dt = {dt:.3g} s) - {scores}"
+set multiplot layout 2,1 title {title}
 set grid
 set key top right
 set xrange [0:{window}]
 set ylabel 'tip displacement (mm)'
-plot '{dir}/reference.csv' using 1:($2*1000) skip 1 with lines lw 2 lc rgb '#1f77b4' title 'reference (R_{{fref}} = {rfref:g})', \
-     '{dir}/numerical.csv' using 1:($2*1000) skip 1 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'numerical'
+plot 'reference.csv' using 1:($2*1000) skip 1 with lines lw 2 lc rgb '#1f77b4' title 'reference (R_{{fref}} = {rfref:g})', \
+     'numerical.csv' using 1:($2*1000) skip 1 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'numerical'
 set xlabel 'time (s)'
 set ylabel 'contact force (kN)'
-plot '{dir}/reference.csv' using 1:($3/1000) skip 1 with lines lw 2 lc rgb '#1f77b4' title 'reference', \
-     '{dir}/numerical.csv' using 1:($4/1000) skip 1 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'numerical'
+plot 'reference.csv' using 1:($3/1000) skip 1 with lines lw 2 lc rgb '#1f77b4' title 'reference', \
+     'numerical.csv' using 1:($4/1000) skip 1 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'numerical'
 unset multiplot
 )",
-      fmt::arg("png", png.string()), fmt::arg("rk", problem.r_k), fmt::arg("rft", options.r_ftrunc),
-      fmt::arg("modes", result.n_modes), fmt::arg("scheme", ToString(options.scheme)),
-      fmt::arg("dt", result.numerical.dt_used_s), fmt::arg("scores", scores),
-      fmt::arg("window", options.window_s), fmt::arg("dir", dir.string()),
-      fmt::arg("rfref", options.reference.r_fref));
-  RunGnuplot(script, dir / "fig3.gp");
+      fmt::arg("png", GnuplotFileName(png)),
+      fmt::arg("title", GnuplotQuoted(fmt::format(
+                            "Tip of the beam, R_k = {:g}, R_{{ftrunc}} = {:g} ({} modes, {}, dt = "
+                            "{:.3g} s) - {}",
+                            problem.r_k, options.r_ftrunc, result.n_modes, ToString(options.scheme),
+                            result.numerical.dt_used_s, scores))),
+      fmt::arg("window", options.window_s), fmt::arg("rfref", options.reference.r_fref));
+  RunGnuplot(script, dir / "fig3.gp", png);
   return png;
 }
 

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 
 #include "core/input_error.h"
+#include "formats/output_file.h"
 #include "views/gnuplot.h"
 
 namespace shockmap {
@@ -89,22 +89,24 @@ std::string CostSummary(const std::vector<CostTable>& tables) {
 
 void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file) {
   if (table.rows.empty()) throw InputError("nothing to draw: no scored point at this R_k");
-  std::error_code ec;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  TerminalFor(file, 1000, 700);  // Throws for a bad extension before any file is written.
+  if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
   {
-    std::ofstream data(data_file);
+    AtomicFile data_out(data_file);
+    std::ostream& data = data_out.Stream();
     data << "# wall_s err srf implicit pareto r_ftrunc dt_ratio\n";
     for (const auto& r : table.rows) {
       data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.wall_s, *r.point.err,
                           r.point.srf.value_or(NAN), r.scheme == "implicit-full" ? 1 : 0,
                           r.pareto ? 1 : 0, r.point.r_ftrunc, r.point.DtRatio());
     }
+    data_out.Commit();
   }
   const std::string script = fmt::format(
       R"gp(set terminal {terminal}
-set output '{out}'
-set title "{study}: what accuracy costs at R_k = {rk:.4g}" noenhanced
+set output {out}
+set title {title} noenhanced
 set logscale x
 set logscale y
 set format x '10^{{%L}}'
@@ -115,13 +117,15 @@ set grid
 set key top right
 set palette defined (1 '#fee08b', 2 '#66bd63', 3 '#1a9850', 4 '#006837')
 set cblabel 'log_{{10}} R_{{ftrunc}}'
-plot '{data}' using 1:($4 == 0 ? $2 : 1/0):(log10($6)) with points pt 7 ps 1.5 lc palette title 'explicit modal', \
+plot {data} using 1:($4 == 0 ? $2 : 1/0):(log10($6)) with points pt 7 ps 1.5 lc palette title 'explicit modal', \
      '' using 1:($4 == 1 ? $2 : 1/0) with points pt 9 ps 2 lc rgb '#000000' title 'implicit full model', \
      '' using 1:($5 == 1 ? $2 : 1/0) with linespoints lw 2 pt 6 ps 2.2 lc rgb '#d73027' title 'Pareto front'
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", file.string()),
-      fmt::arg("study", study), fmt::arg("rk", table.r_k), fmt::arg("data", data_file.string()));
-  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"));
+      fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("title", GnuplotQuoted(fmt::format("{}: what accuracy costs at R_k = {:.4g}", study,
+                                                  table.r_k))),
+      fmt::arg("data", GnuplotFileName(data_file)));
+  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 
 }  // namespace shockmap

@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 
 #include "core/input_error.h"
+#include "formats/output_file.h"
 #include "views/gnuplot.h"
 
 namespace shockmap {
@@ -38,10 +38,11 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
   AddCurves(explicit_points, "explicit", curves);
   AddCurves(implicit_points, "implicit", curves);
   if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");
-  std::error_code ec;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
+  TerminalFor(file, 1400, 600);  // Throws for a bad extension before any file is written.
+  if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
-  std::ofstream data(data_file);
+  AtomicFile data_out(data_file);
+  std::ostream& data = data_out.Stream();
   std::string err_plot, srf_plot;
   int index = 0;
   for (const auto& [key, curve] : curves) {
@@ -52,20 +53,19 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
     data << "\n\n";
     const bool is_implicit = key.first == "implicit";
     auto clause = [&, &title = curve.title](int column) {
-      return fmt::format(
-          "'{}' index {} using 1:{} with linespoints lw 2 pt {} ps 1.3 {} title '{}'",
-          data_file.string(), index, column, is_implicit ? 8 : 7,
-          is_implicit ? "dt 2 lc rgb '#000000'" : "", title);
+      return fmt::format("{} index {} using 1:{} with linespoints lw 2 pt {} ps 1.3 {} title {}",
+                         GnuplotFileName(data_file), index, column, is_implicit ? 8 : 7,
+                         is_implicit ? "dt 2 lc rgb '#000000'" : "", GnuplotQuoted(title));
     };
     err_plot += (err_plot.empty() ? "" : ", ") + clause(2);
     srf_plot += (srf_plot.empty() ? "" : ", ") + clause(3);
     ++index;
   }
-  data.close();
+  data_out.Commit();
   const std::string script = fmt::format(
       R"gp(set terminal {terminal}
-set output '{out}'
-set multiplot layout 1,2 title "{study}: the paper's Fig. 4 (finest time step per point)" noenhanced
+set output {out}
+set multiplot layout 1,2 title {title} noenhanced
 set logscale x
 set format x '10^{{%L}}'
 set xlabel 'R_k = k_s / K_{{bend}}'
@@ -80,10 +80,11 @@ set key bottom left font ',10'
 plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'
 unset multiplot
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1400, 600)), fmt::arg("out", file.string()),
-      fmt::arg("study", study), fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
+      fmt::arg("terminal", TerminalFor(file, 1400, 600)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("title", GnuplotQuoted(study + ": the paper's Fig. 4 (finest time step per point)")),
+      fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
       fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min));
-  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"));
+  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 
 }  // namespace shockmap

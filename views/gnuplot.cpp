@@ -1,14 +1,131 @@
 #include "views/gnuplot.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
-#include <cstdlib>
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "formats/output_file.h"
+
+extern char** environ;
 
 namespace shockmap {
+namespace {
+
+// How much of gnuplot's output a failure message quotes (its last bytes, where errors are).
+constexpr std::size_t kExcerptBytes = 600;
+
+struct ChildOutcome {
+  int status = 0;      // As waitpid reports it.
+  std::string output;  // stdout and stderr, the last kExcerptBytes * 4 bytes.
+};
+
+// What `fd` gives until its end, the last `keep` bytes of it.
+std::string ReadTail(int fd, std::size_t keep) {
+  std::string text;
+  char buffer[4096];
+  for (ssize_t n; (n = ::read(fd, buffer, sizeof buffer)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+    if (text.size() > keep) text.erase(0, text.size() - keep);
+  }
+  return text;
+}
+
+// Runs `gnuplot ./NAME` in the script's folder with stdin from /dev/null and its output piped
+// back. Throws PlotError when gnuplot cannot be started.
+ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
+                          const std::filesystem::path& image) {
+  int pipe_fds[2];
+  if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
+    throw PlotError("pipe: " + std::string(std::strerror(errno)));
+  const std::string dir =
+      script_file.has_parent_path() ? script_file.parent_path().string() : std::string(".");
+  // "./" keeps a name such as "-m.gp" from being read as an option.
+  std::string arg0 = "gnuplot", arg1 = "./" + script_file.filename().string();
+  char* argv[] = {arg0.data(), arg1.data(), nullptr};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 2);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(pipe_fds[1]);
+  if (rc != 0) {
+    ::close(pipe_fds[0]);
+    throw PlotError(rc == ENOENT ? "gnuplot was not found on the PATH; install gnuplot to draw " +
+                                       image.string() + " (script " + script_file.string() + ")"
+                                 : "cannot start gnuplot for " + script_file.string() + ": " +
+                                       std::strerror(rc));
+  }
+  ChildOutcome outcome;
+  outcome.output = ReadTail(pipe_fds[0], 4 * kExcerptBytes);
+  ::close(pipe_fds[0]);
+  while (::waitpid(pid, &outcome.status, 0) < 0 && errno == EINTR) {
+  }
+  return outcome;
+}
+
+std::string Excerpt(const std::string& output) {
+  if (output.empty()) return "it printed nothing";
+  const std::size_t from = output.size() > kExcerptBytes ? output.size() - kExcerptBytes : 0;
+  return "it printed: " + output.substr(from);
+}
+
+// True when `image` ends as a whole PNG (its IEND chunk) or SVG (its closing tag) does: gnuplot
+// exits 0 even when the disk took only part of the image.
+bool IsCompleteImage(const std::filesystem::path& image) {
+  std::ifstream in(image, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 12) return false;
+  const std::streamoff tail = std::min<std::streamoff>(size, 64);
+  std::string end(static_cast<std::size_t>(tail), '\0');
+  in.seekg(size - tail);
+  in.read(end.data(), tail);
+  if (image.extension() == ".svg") return end.find("</svg>") != std::string::npos;
+  return end.ends_with(std::string("IEND\xae\x42\x60\x82", 8));
+}
+
+// Why the run failed, or "" when it drew `image`; `partial` tells the image was cut short.
+std::string Failure(bool& partial, const ChildOutcome& child,
+                    const std::filesystem::path& script_file, const std::filesystem::path& image) {
+  if (WIFSIGNALED(child.status)) {
+    return fmt::format("gnuplot was killed by signal {} ({}) on {}; {}", WTERMSIG(child.status),
+                       strsignal(WTERMSIG(child.status)), script_file.string(),
+                       Excerpt(child.output));
+  }
+  if (WEXITSTATUS(child.status) != 0) {
+    return fmt::format("gnuplot exited with status {} on {}; {}", WEXITSTATUS(child.status),
+                       script_file.string(), Excerpt(child.output));
+  }
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(image, ec)) {
+    return fmt::format("gnuplot ended without writing {} (script {}); {}", image.string(),
+                       script_file.string(), Excerpt(child.output));
+  }
+  if (!IsCompleteImage(image)) {
+    partial = true;
+    return fmt::format("gnuplot wrote only part of {} ({} bytes; is the disk full?), script {}; {}",
+                       image.string(), std::filesystem::file_size(image, ec), script_file.string(),
+                       Excerpt(child.output));
+  }
+  return "";
+}
+
+}  // namespace
 
 std::string TerminalFor(const std::filesystem::path& file, int width, int height) {
   if (file.extension() == ".svg") {
@@ -21,18 +138,55 @@ std::string TerminalFor(const std::filesystem::path& file, int width, int height
   throw InputError(file.string() + ": the plot file must end in .png or .svg");
 }
 
-void RunGnuplot(const std::string& script, const std::filesystem::path& script_file) {
-  {
-    std::ofstream out(script_file);
-    out << script;
-    if (!out) throw std::runtime_error("cannot write " + script_file.string());
+std::string GnuplotQuoted(std::string_view text) {
+  std::string quoted = "'";
+  for (char c : text) {
+    if (c == '\'') {
+      quoted += "''";
+    } else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      quoted += ' ';
+    } else {
+      quoted += c;
+    }
   }
-  const std::string command = "gnuplot '" + script_file.string() + "' 2>&1";
-  const int status = std::system(command.c_str());
-  if (status != 0) {
-    throw std::runtime_error("gnuplot failed on " + script_file.string() + " (status " +
-                             std::to_string(status) + "); is gnuplot installed?");
+  return quoted + "'";
+}
+
+std::string GnuplotFileName(const std::filesystem::path& file) {
+  const std::string name = file.filename().string();
+  for (char c : name) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      throw InputError(file.string() +
+                       ": a plot file name may not hold line breaks or other control characters");
+    }
   }
+  // "./" keeps gnuplot from reading a leading '|' (output) or '<' (data) as a command to run.
+  return GnuplotQuoted("./" + name);
+}
+
+void RunGnuplot(const std::string& script, const std::filesystem::path& script_file,
+                const std::filesystem::path& image) {
+  WriteFileAtomically(script_file, script);
+  std::error_code ec;
+  const auto dir = image.has_parent_path() ? image.parent_path() : std::filesystem::path(".");
+  const auto previous = UnusedTemporaryName(dir);
+  const bool had_image = std::filesystem::exists(image, ec);
+  if (had_image) std::filesystem::rename(image, previous);
+  std::string failure;
+  bool partial = false;
+  try {
+    failure = Failure(partial, SpawnGnuplot(script_file, image), script_file, image);
+  } catch (const PlotError& e) {
+    failure = e.what();
+  }
+  if (failure.empty()) {
+    if (had_image) std::filesystem::remove(previous, ec);
+    return;
+  }
+  std::filesystem::remove(image, ec);
+  if (had_image) std::filesystem::rename(previous, image, ec);
+  if (partial) throw InputError(failure + "; " + image.string() + " was left as it was");
+  throw PlotError(failure);
 }
 
 }  // namespace shockmap

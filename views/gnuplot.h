@@ -1,17 +1,41 @@
 #pragma once
-// Runs gnuplot on a script; every plot of the project goes through here.
+// Runs gnuplot on a script; every plot of the project goes through here, and every piece of text
+// that enters a script (titles, labels, file names) goes through GnuplotQuoted.
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace shockmap {
 
-// Writes `script` to script_file and runs `gnuplot script_file`. Throws std::runtime_error
-// with gnuplot's exit status when it fails or is not installed.
+// gnuplot is missing, failed or was killed: not the user's input, exit code 1.
+class PlotError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // "pngcairo size W,H ..." or "svg size W,H ...": the gnuplot terminal for a file's extension.
 // Throws InputError for any other extension.
 std::string TerminalFor(const std::filesystem::path& file, int width, int height);
 
-void RunGnuplot(const std::string& script, const std::filesystem::path& script_file);
+// `text` as a gnuplot string literal that stays data: single-quoted (where gnuplot expands
+// nothing), each ' doubled, and line breaks and other control characters, which such a string
+// cannot hold, replaced by spaces.
+std::string GnuplotQuoted(std::string_view text);
+
+// The literal naming `file` in a script run from file's own folder (see RunGnuplot): "./" and
+// its name, quoted, so that no name reads as a command ('|cmd', '<cmd'). Throws InputError when the
+// name holds a control character, which no gnuplot string can carry.
+std::string GnuplotFileName(const std::filesystem::path& file);
+
+// Writes `script` to script_file (in full or not at all) and runs gnuplot on it from the
+// script's folder, without a shell: its file names are relative to that folder. `image` is the
+// file the script draws; an image already there is kept until the new one is complete.
+// Throws PlotError when gnuplot is not found, ends with a non-zero status or a signal (quoting
+// what it printed), or ends without writing `image`; InputError when it wrote only part of the
+// image (gnuplot exits 0 on a full disk), as for any output file that could not be written.
+void RunGnuplot(const std::string& script, const std::filesystem::path& script_file,
+                const std::filesystem::path& image);
 
 }  // namespace shockmap

@@ -4,10 +4,10 @@
 
 #include <fstream>
 #include <sstream>
-#include <variant>
 
 #include "core/input_error.h"
-#include "db/read_only_query.h"
+#include "db/report_queries.h"
+#include "formats/output_file.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
@@ -79,64 +79,41 @@ std::string Table(const QueryResult& r) {
   return "<pre>" + Escaped(text.str()) + "</pre>\n";
 }
 
-}  // namespace
-
-std::filesystem::path WriteHtmlReport(const std::string& database_path, const std::string& study,
-                                      const CriteriaOptions& thresholds,
-                                      const std::filesystem::path& dir) {
-  const auto explicit_points = LoadScoredPoints(database_path, study, "explicit-modal");
-  const auto implicit_points = LoadScoredPoints(database_path, study, "implicit-full");
-  if (explicit_points.empty()) {
-    throw InputError("study \"" + study + "\" has no stored explicit-modal point to report on");
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create " + dir.string() + ": " + ec.message());
-  const ValidityCriteria criteria = DeriveCriteria(explicit_points, thresholds);
-
+// The validity maps over R_ftrunc for each metric, then the outcome over dt, as figures.
+std::string MapFigures(const std::string& study, const std::vector<ScoredPoint>& points,
+                       const ValidityCriteria& criteria, const std::filesystem::path& dir) {
   std::string figures;
   for (auto metric : {MapMetric::kErr, MapMetric::kSrf, MapMetric::kStatus, MapMetric::kCost}) {
     const auto png = dir / ("map_" + ToString(metric) + ".png");
-    DrawValidityMap(study, explicit_points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
+    DrawValidityMap(study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
     figures += Figure(png, "Validity map: " + ToString(metric) + " over R_k and R_ftrunc");
   }
   const auto dt_png = dir / "map_status_dt.png";
-  DrawValidityMap(study, explicit_points, criteria, {MapMetric::kStatus, MapAxis::kDt, {}}, dt_png);
-  figures += Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation");
+  DrawValidityMap(study, points, criteria, {MapMetric::kStatus, MapAxis::kDt, {}}, dt_png);
+  return figures + Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation");
+}
 
-  const auto fig4_png = dir / "fig4.png";
-  DrawFig4(study, explicit_points, implicit_points, thresholds, fig4_png);
-
-  // The paper's Fig. 3 case when studied, else the nearest R_k.
+// The cost front of the paper's Fig. 3 case when studied, else of the nearest R_k, with its
+// table; "" when no point is scored.
+std::string CostSection(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
+                        const std::vector<ScoredPoint>& implicit_points,
+                        const std::filesystem::path& dir) {
   const auto tables = BuildCostTables(explicit_points, implicit_points, 3000.0);
-  std::string cost_html;
-  if (!tables.empty()) {
-    const auto cost_png = dir / "cost.png";
-    DrawCost(study, tables.front(), cost_png);
-    cost_html =
-        Figure(cost_png, fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k)) +
-        "<pre>" + Escaped(CostSummary(tables)) + "</pre>\n";
-  }
+  if (tables.empty()) return "";
+  const auto cost_png = dir / "cost.png";
+  DrawCost(study, tables.front(), cost_png);
+  return Figure(cost_png,
+                fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k)) +
+         "<pre>" + Escaped(CostSummary(tables)) + "</pre>\n";
+}
 
-  const QueryResult provenance = RunReadOnlyQuery(
-      database_path,
-      "SELECT ru.run_id, ru.code_version, ru.compiler, ru.build_type, ru.host, ru.jobs, "
-      "ru.started_utc, ru.ended_utc, ru.points_done FROM runs ru JOIN studies st USING "
-      "(study_id) WHERE st.name = ?1 ORDER BY ru.run_id",
-      {study});
-  const QueryResult spec =
-      RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = ?1", {study});
-  const QueryResult outcomes =
-      RunReadOnlyQuery(database_path,
-                       "SELECT scheme, status, count(*) AS points FROM results WHERE study = ?1 "
-                       "GROUP BY scheme, status ORDER BY scheme, status",
-                       {study});
-  const std::string spec_json =
-      spec.rows.empty() ? "" : std::get<std::string>(spec.rows.front().front());
+// The parts of the page, already HTML.
+struct ReportParts {
+  std::string study, outcomes, criteria, figures, fig4, cost, provenance, spec;
+};
 
-  const auto page = dir / "report.html";
-  std::ofstream html(page);
-  html << fmt::format(
+std::string Page(const ReportParts& p, const CriteriaOptions& thresholds) {
+  return fmt::format(
       R"html(<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>shockmap report: {study}</title>
 <style>
@@ -172,14 +149,38 @@ Thresholds: Err &le; {err_max:g}, SRf &ge; {srf_min:g}.</p>
 <pre>{spec}</pre>
 </body></html>
 )html",
-      fmt::arg("study", Escaped(study)), fmt::arg("err_max", thresholds.err_max),
-      fmt::arg("srf_min", thresholds.srf_min), fmt::arg("outcomes", Table(outcomes)),
-      fmt::arg("criteria", Escaped(CriteriaSummary(study, criteria, explicit_points))),
-      fmt::arg("figures", figures),
-      fmt::arg("fig4", Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4")),
-      fmt::arg("cost", cost_html), fmt::arg("provenance", Table(provenance)),
-      fmt::arg("spec", Escaped(spec_json)));
-  if (!html) throw InputError("cannot write " + page.string());
+      fmt::arg("study", p.study), fmt::arg("err_max", thresholds.err_max),
+      fmt::arg("srf_min", thresholds.srf_min), fmt::arg("outcomes", p.outcomes),
+      fmt::arg("criteria", p.criteria), fmt::arg("figures", p.figures), fmt::arg("fig4", p.fig4),
+      fmt::arg("cost", p.cost), fmt::arg("provenance", p.provenance), fmt::arg("spec", p.spec));
+}
+
+}  // namespace
+
+std::filesystem::path WriteHtmlReport(const std::string& database_path, const std::string& study,
+                                      const CriteriaOptions& thresholds,
+                                      const std::filesystem::path& dir) {
+  const auto explicit_points = LoadScoredPoints(database_path, study, "explicit-modal");
+  const auto implicit_points = LoadScoredPoints(database_path, study, "implicit-full");
+  if (explicit_points.empty()) {
+    throw InputError("study \"" + study + "\" has no stored explicit-modal point to report on");
+  }
+  CreateOutputDirectory(dir);
+  const ValidityCriteria criteria = DeriveCriteria(explicit_points, thresholds);
+  ReportParts parts;
+  parts.study = Escaped(study);
+  parts.figures = MapFigures(study, explicit_points, criteria, dir);
+  const auto fig4_png = dir / "fig4.png";
+  DrawFig4(study, explicit_points, implicit_points, thresholds, fig4_png);
+  parts.fig4 = Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4");
+  parts.cost = CostSection(study, explicit_points, implicit_points, dir);
+  const ReportTables tables = LoadReportTables(database_path, study);
+  parts.outcomes = Table(tables.outcomes);
+  parts.provenance = Table(tables.provenance);
+  parts.spec = Escaped(tables.spec_json);
+  parts.criteria = Escaped(CriteriaSummary(study, criteria, explicit_points));
+  const auto page = dir / "report.html";
+  WriteFileAtomically(page, Page(parts, thresholds));
   return page;
 }
 

@@ -5,6 +5,8 @@
 #include <sstream>
 #include <vector>
 
+#include "formats/output_file.h"
+
 namespace shockmap {
 
 std::string ToString(QueryFormat f) {
@@ -53,52 +55,78 @@ nlohmann::json Json(const QueryCell& c) {
   return std::visit(visitor, c);
 }
 
-std::string CsvField(const std::string& s) {
-  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
+std::string Indented(const std::string& text) {
+  std::string out = "  ";
+  for (char c : text) out += c == '\n' ? std::string("\n  ") : std::string(1, c);
+  return out;
 }
 
 }  // namespace
 
+void QueryWriter::Columns(const std::vector<std::string>& names) {
+  columns_ = names;
+  if (format_ == QueryFormat::kCsv) {
+    for (std::size_t i = 0; i < names.size(); ++i) out_ << (i ? "," : "") << CsvField(names[i]);
+    out_ << '\n';
+  }
+  for (const auto& name : names) width_.push_back(name.size());
+}
+
+void QueryWriter::Row(const std::vector<QueryCell>& row) {
+  const std::size_t n = columns_.size();
+  if (format_ == QueryFormat::kJson) {
+    nlohmann::json o = nlohmann::json::object();
+    for (std::size_t i = 0; i < n; ++i) o[columns_[i]] = Json(row[i]);
+    out_ << (rows_ == 0 ? "[\n" : ",\n") << Indented(o.dump(2));
+  } else if (format_ == QueryFormat::kCsv) {
+    for (std::size_t i = 0; i < n; ++i) out_ << (i ? "," : "") << CsvField(Text(row[i]));
+    out_ << '\n';
+  } else {
+    std::vector<std::string> cells;
+    for (std::size_t i = 0; i < n; ++i) cells.push_back(Text(row[i]));
+    if (widths_fixed_) {
+      TableLine(cells);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) width_[i] = std::max(width_[i], cells[i].size());
+      held_.push_back(std::move(cells));
+      if (held_.size() == kTableLookAhead) FlushLookAhead();
+    }
+  }
+  ++rows_;
+}
+
+void QueryWriter::TableLine(const std::vector<std::string>& cells) {
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    out_ << (i ? "  " : "") << cells[i]
+         << std::string(width_[i] - std::min(width_[i], cells[i].size()), ' ');
+  }
+  out_ << '\n';
+}
+
+void QueryWriter::FlushLookAhead() {
+  TableLine(columns_);
+  std::vector<std::string> rule;
+  for (std::size_t w : width_) rule.emplace_back(w, '-');
+  TableLine(rule);
+  for (const auto& cells : held_) TableLine(cells);
+  held_.clear();
+  widths_fixed_ = true;
+}
+
+void QueryWriter::Finish() {
+  if (format_ == QueryFormat::kJson) {
+    out_ << (rows_ == 0 ? "[]\n" : "\n]\n");
+  } else if (format_ == QueryFormat::kTable) {
+    if (!widths_fixed_) FlushLookAhead();
+    out_ << "(" << rows_ << " row" << (rows_ == 1 ? "" : "s") << ")\n";
+  }
+}
+
 void WriteQueryResult(const QueryResult& result, QueryFormat format, std::ostream& out) {
-  const std::size_t n = result.columns.size();
-  if (format == QueryFormat::kJson) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (const auto& row : result.rows) {
-      nlohmann::json o = nlohmann::json::object();
-      for (std::size_t i = 0; i < n; ++i) o[result.columns[i]] = Json(row[i]);
-      rows.push_back(std::move(o));
-    }
-    out << rows.dump(2) << '\n';
-    return;
-  }
-  if (format == QueryFormat::kCsv) {
-    for (std::size_t i = 0; i < n; ++i) out << (i ? "," : "") << CsvField(result.columns[i]);
-    out << '\n';
-    for (const auto& row : result.rows) {
-      for (std::size_t i = 0; i < n; ++i) out << (i ? "," : "") << CsvField(Text(row[i]));
-      out << '\n';
-    }
-    return;
-  }
-  std::vector<std::size_t> width(n);
-  for (std::size_t i = 0; i < n; ++i) width[i] = result.columns[i].size();
-  for (const auto& row : result.rows) {
-    for (std::size_t i = 0; i < n; ++i) width[i] = std::max(width[i], Text(row[i]).size());
-  }
-  auto line = [&](auto cell) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::string s = cell(i);
-      out << (i ? "  " : "") << s << std::string(width[i] - s.size(), ' ');
-    }
-    out << '\n';
-  };
-  line([&](std::size_t i) { return result.columns[i]; });
-  line([&](std::size_t i) { return std::string(width[i], '-'); });
-  for (const auto& row : result.rows) line([&](std::size_t i) { return Text(row[i]); });
-  out << "(" << result.rows.size() << " row" << (result.rows.size() == 1 ? "" : "s") << ")\n";
+  QueryWriter writer(format, out);
+  writer.Columns(result.columns);
+  for (const auto& row : result.rows) writer.Row(row);
+  writer.Finish();
 }
 
 }  // namespace shockmap

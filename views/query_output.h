@@ -1,6 +1,8 @@
 #pragma once
-// Query results as an aligned table, CSV (RFC 4180) or a JSON array of objects.
+// Query results as an aligned table, CSV (RFC 4180) or a JSON array of objects, written row by
+// row as they come.
 
+#include <cstddef>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -13,6 +15,32 @@ namespace shockmap {
 enum class QueryFormat { kTable, kCsv, kJson };
 std::string ToString(QueryFormat f);
 std::optional<QueryFormat> QueryFormatFromString(std::string_view s);
+
+// Rows held back by the table format to size its columns.
+constexpr std::size_t kTableLookAhead = 1000;
+
+// Writes each row as it arrives, holding none but the table format's look-ahead: its column
+// widths come from the header and the first kTableLookAhead rows; a longer value after them
+// widens its own cell only. Finish() ends the output (the table's row count, JSON's bracket).
+class QueryWriter : public QueryRowSink {
+ public:
+  QueryWriter(QueryFormat format, std::ostream& out) : format_(format), out_(out) {}
+  void Columns(const std::vector<std::string>& names) override;
+  void Row(const std::vector<QueryCell>& row) override;
+  void Finish();
+
+ private:
+  void TableLine(const std::vector<std::string>& cells);
+  void FlushLookAhead();
+
+  QueryFormat format_;
+  std::ostream& out_;
+  std::vector<std::string> columns_;
+  std::vector<std::size_t> width_;
+  std::vector<std::vector<std::string>> held_;
+  bool widths_fixed_ = false;
+  std::size_t rows_ = 0;
+};
 
 void WriteQueryResult(const QueryResult& result, QueryFormat format, std::ostream& out);
 
