@@ -45,9 +45,11 @@ void CheckPlotPath(const std::string& out) {
 
 }  // namespace
 
-void AddViewCommands(CLI::App& app) {
-  auto flags = std::make_shared<ViewFlags>();
+namespace {
 
+using Flags = std::shared_ptr<ViewFlags>;
+
+void AddPlotCommand(CLI::App& app, const Flags& flags) {
   CLI::App* plot = app.add_subcommand("plot", "Plots of a stored study");
   plot->require_subcommand(1);
   CLI::App* fig4 = plot->add_subcommand(
@@ -63,7 +65,9 @@ void AddViewCommands(CLI::App& app) {
              out);
     std::cout << "Fig. 4 written to " << out << '\n';
   });
+}
 
+void AddCostCommand(CLI::App& app, const Flags& flags) {
   CLI::App* cost = app.add_subcommand(
       "cost",
       "Err against wall time for every point, Pareto front, implicit/explicit time "
@@ -88,7 +92,9 @@ void AddViewCommands(CLI::App& app) {
       std::cout << "plot written to " << out << '\n';
     }
   });
+}
 
+void AddAdviseCommand(CLI::App& app, const Flags& flags) {
   CLI::App* advise = app.add_subcommand(
       "advise",
       "Recommended R_ftrunc and dt for a new R_k from the derived criteria, with the "
@@ -104,7 +110,9 @@ void AddViewCommands(CLI::App& app) {
                             DeriveCriteria(points, flags->thresholds), points, flags->r_k);
     std::cout << AdviceSummary(a);
   });
+}
 
+void AddReportCommand(CLI::App& app, const Flags& flags) {
   CLI::App* report = app.add_subcommand(
       "report", "One self-contained HTML page: maps, Fig. 4, criteria, cost front, provenance");
   AddCommon(report, *flags, true);
@@ -115,6 +123,16 @@ void AddViewCommands(CLI::App& app) {
     const auto page = WriteHtmlReport(flags->database_path, study, flags->thresholds, flags->out);
     std::cout << "report written to " << page.string() << '\n';
   });
+}
+
+}  // namespace
+
+void AddViewCommands(CLI::App& app) {
+  const auto flags = std::make_shared<ViewFlags>();
+  AddPlotCommand(app, flags);
+  AddCostCommand(app, flags);
+  AddAdviseCommand(app, flags);
+  AddReportCommand(app, flags);
 }
 
 }  // namespace shockmap
