@@ -6,6 +6,7 @@
 
 #include "app/flag_checks.h"
 #include "db/study_database.h"
+#include "formats/json_reader.h"
 #include "views/advice.h"
 #include "views/cost_front.h"
 #include "views/fig4_plot.h"
@@ -32,7 +33,8 @@ void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
 StudySpec StoredSpec(const std::string& database_path, const std::string& study) {
   StudyDatabase db(database_path);
   const auto json = db.StoredSpec(study);
-  return ParseStudySpec(nlohmann::json::parse(*json), database_path);
+  return ParseStudySpec(ParseJsonText(*json, database_path + ": stored study " + study),
+                        database_path);
 }
 
 }  // namespace

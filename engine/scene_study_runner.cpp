@@ -11,6 +11,7 @@
 #include "engine/progress_reporter.h"
 #include "engine/provenance.h"
 #include "engine/worker_pool.h"
+#include "formats/json_reader.h"
 #include "validation/impulse_ratio.h"
 #include "validation/spectral_error.h"
 
@@ -111,7 +112,8 @@ PointOutcome ScorePoint(const SceneStudySpec& spec, const PointTask& task,
 void CheckSettingsUnchanged(StudyDatabase& db, const SceneStudySpec& spec) {
   const auto stored = db.StoredSpec(spec.name);
   if (!stored) return;
-  const nlohmann::json previous = nlohmann::json::parse(*stored);
+  const nlohmann::json previous =
+      ParseJsonText(*stored, db.Raw().Path() + ": stored study " + spec.name);
   if (!IsSceneStudy(previous)) {
     throw InputError(spec.file + ": study \"" + spec.name + "\" already exists in " +
                      db.Raw().Path() +

@@ -13,6 +13,7 @@
 #include "engine/reference_store.h"
 #include "engine/worker_pool.h"
 #include "formats/comparison_json.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -73,11 +74,13 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
 void CheckSettingsUnchanged(StudyDatabase& db, const StudySpec& spec) {
   const auto stored = db.StoredSpec(spec.name);
   if (!stored) return;
-  if (nlohmann::json::parse(*stored).contains("scene")) {
+  const nlohmann::json json =
+      ParseJsonText(*stored, db.Raw().Path() + ": stored study " + spec.name);
+  if (json.contains("scene")) {
     throw InputError(spec.file + ": study \"" + spec.name + "\" already exists in " +
                      db.Raw().Path() + " as a scene study; give this one a new name");
   }
-  const StudySpec previous = ParseStudySpec(nlohmann::json::parse(*stored), db.Raw().Path());
+  const StudySpec previous = ParseStudySpec(json, db.Raw().Path());
   if (SettingsKey(previous) != SettingsKey(spec)) {
     throw InputError(spec.file + ": study \"" + spec.name + "\" already exists in " +
                      db.Raw().Path() +

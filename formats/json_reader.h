@@ -12,8 +12,24 @@
 
 namespace shockmap {
 
-// Parses `path` as JSON; throws InputError naming the file (missing, unreadable, not JSON).
+// Objects and arrays nested deeper than this are refused while parsing: no scene or study
+// comes near it, and deeper documents would exhaust the stack of the recursive code that walks,
+// copies and prints them.
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses `path` as JSON (see ParseJsonText); throws InputError naming the file (missing,
+// unreadable, not a regular file, over 64 MiB).
 nlohmann::json ReadJsonFile(const std::string& path);
+
+// Parses `text`, read from `file` (named in messages), as JSON. Throws InputError naming the
+// file and the key path for nesting deeper than kMaxJsonDepth and for a key given twice in one
+// object; for a syntax error, naming the line, column and byte with an Excerpt() of the text
+// there, never more of it.
+nlohmann::json ParseJsonText(const std::string& text, const std::string& file);
+
+// At most 40 bytes of `text` from `offset`, for messages: bytes outside printable ASCII (and the
+// backslash) written as \xNN, "..." appended when more follows.
+std::string Excerpt(const std::string& text, std::size_t offset = 0);
 
 // One JSON object being read. Call Finish() once every known key has been read: it rejects the
 // keys nobody asked for.
