@@ -6,8 +6,11 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
+#include <tuple>
 
+#include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/acceleration_csv.h"
 #include "formats/json_reader.h"
@@ -20,7 +23,23 @@ using Json = nlohmann::json;
 // Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
-constexpr int kMaxElements = 10000;
+// Beyond the eigenproblem budget of core/modal_basis.h when the distinct beam models of `beams`
+// are solved (twice each: the first elastic frequency, then the basis), the estimate; else "".
+std::string BasesExcess(const std::vector<SceneBeam>& beams) {
+  std::set<std::tuple<double, double, double, int, EndCondition, EndCondition, double, double,
+                      std::optional<double>, std::optional<double>>>
+      distinct;
+  std::vector<int> unknowns;
+  for (const SceneBeam& b : beams) {
+    if (distinct
+            .insert({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m, b.n_elements, b.at_zero, b.at_length,
+                     b.spring_at_zero_n_per_m, b.spring_at_length_n_per_m, b.f_trunc_hz,
+                     b.r_ftrunc})
+            .second)
+      unknowns.push_back(BeamUnknowns(b.n_elements));
+  }
+  return EigenBudgetExcess(unknowns, 2);
+}
 
 double Positive(JsonObjectReader& r, const std::string& key, double hi = 1e15) {
   const double v = r.RequiredNumber(key);
@@ -84,10 +103,10 @@ SceneBeam ParseBeamProperties(JsonObjectReader& r) {
   b.ei_n_m2 = Positive(r, "ei_n_m2");
   b.rho_a_kg_per_m = Positive(r, "rho_a_kg_per_m", 1e6);
   b.n_elements = r.Integer("elements", b.n_elements);
-  if (b.n_elements < 1 || b.n_elements > kMaxElements) {
-    r.Fail("elements", "value " + std::to_string(b.n_elements) + " must lie in [1, " +
-                           std::to_string(kMaxElements) + "]");
-  }
+  if (b.n_elements < 1)
+    r.Fail("elements", "value " + std::to_string(b.n_elements) + " must be >= 1");
+  if (const std::string excess = BasesExcess({b}); !excess.empty())
+    r.Fail("elements", "value " + std::to_string(b.n_elements) + ": " + excess);
   std::tie(b.at_zero, b.at_length) = Ends(r);
   const auto springs = Vector2(r, "end_springs_n_per_m", {0.0, 0.0}, false);
   if (springs.first < 0 || springs.second < 0)
@@ -422,6 +441,8 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
     r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
   if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
     r.Fail("beams", "more than " + std::to_string(kMaxBeams) + " beams");
+  if (const std::string excess = BasesExcess(scene.beams); !excess.empty())
+    r.Fail("beams", "the scene's distinct beams: " + excess);
 }
 
 SceneZone ParseZone(JsonObjectReader& z, const Scene& scene) {

@@ -5,6 +5,7 @@
 #include <functional>
 #include <set>
 
+#include "core/modal_basis.h"
 #include "formats/json_reader.h"
 
 namespace shockmap {
@@ -139,7 +140,7 @@ const Range kRk{0.0, true, 1e12};
 const Range kRftrunc{1.0, false, 1e5};
 const Range kWindow{0.0, true, 100.0};
 const Range kDamping{0.0, false, 1e6};
-const Range kElements{0.0, false, 100000.0};
+const Range kElements{0.0, false, 1e9};  // Then the eigenproblem budget.
 
 AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) {
   const std::string& file = r.File();
@@ -162,7 +163,10 @@ AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) 
   a.mass_damping_per_s = optional("mass_damping_per_s", kDamping, 0.0);
   for (double e : optional("n_elements", kElements, 0.0)) {
     if (e != std::floor(e)) r.Fail("n_elements", "expected integers, got " + Shown(Json(e)));
-    a.n_elements.push_back(static_cast<int>(e));
+    const int elements = static_cast<int>(e);
+    if (const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1); !excess.empty())
+      r.Fail("n_elements", "value " + std::to_string(elements) + ": " + excess);
+    a.n_elements.push_back(elements);
   }
   const Json* dt = r.Get("dt");
   a.dt = dt == nullptr ? std::vector<TimeStepRequest>{TimeStepRequest{}}
