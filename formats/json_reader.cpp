@@ -83,6 +83,11 @@ class JsonPathTracker {
   std::vector<Frame> frames_;
 };
 
+bool IsControl(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return u < 0x20 || u == 0x7f;
+}
+
 // The library's message without its tag and without the text it quotes ("last read: '...'",
 // "number overflow parsing '...'").
 std::string SyntaxReason(const std::string& what) {
@@ -147,6 +152,16 @@ std::string Shown(const nlohmann::json& value) {
   return s;
 }
 
+const std::string& CheckedName(const std::string& name, const std::string& file,
+                               const std::string& path) {
+  if (std::any_of(name.begin(), name.end(), IsControl)) {
+    FailAt(file, path,
+           "name \"" + Excerpt(name) +
+               "\" holds a control character (U+0000 to U+001F or U+007F); names may not");
+  }
+  return name;
+}
+
 void FailAt(const std::string& file, const std::string& path, const std::string& message) {
   throw InputError(file + ": " + (path.empty() ? "(top level)" : path) + ": " + message);
 }
@@ -206,6 +221,19 @@ std::string JsonObjectReader::String(const std::string& key, const std::string& 
 std::string JsonObjectReader::RequiredString(const std::string& key) {
   if (!Has(key)) Fail(key, "required string is missing");
   return String(key, "");
+}
+
+std::string JsonObjectReader::RequiredName(const std::string& key) {
+  return CheckedName(RequiredString(key), file_, PathOf(key));
+}
+
+std::string JsonObjectReader::Text(const std::string& key, const std::string& fallback) {
+  const std::string text = String(key, fallback);
+  for (const char c : text) {
+    if (IsControl(c) && c != '\t' && c != '\n' && c != '\r')
+      Fail(key, "\"" + Excerpt(text) + "\" holds a control character other than tab or newline");
+  }
+  return text;
 }
 
 void JsonObjectReader::Finish() const {

@@ -48,6 +48,11 @@ class JsonObjectReader {
   int Integer(const std::string& key, int fallback);
   std::string String(const std::string& key, const std::string& fallback);
   std::string RequiredString(const std::string& key);
+  // A required name without control characters (U+0000-U+001F, U+007F): names become
+  // database keys, CSV columns and lines of output.
+  std::string RequiredName(const std::string& key);
+  // Free text: any characters but the control characters other than tab, CR and LF.
+  std::string Text(const std::string& key, const std::string& fallback);
   void Finish() const;
 
   // Throws InputError "<file>: <path>: <message>".
@@ -68,5 +73,8 @@ class JsonObjectReader {
 double NumberAt(const nlohmann::json& value, const std::string& file, const std::string& path);
 // The value as it appears in the file, shortened, for messages.
 std::string Shown(const nlohmann::json& value);
+// `name` when it holds no control character (U+0000-U+001F, U+007F), else InputError at `path`.
+const std::string& CheckedName(const std::string& name, const std::string& file,
+                               const std::string& path);
 
 }  // namespace shockmap

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <tuple>
+#include <unordered_set>
 
 #include "core/modal_basis.h"
 #include "core/transient_run.h"
@@ -23,6 +24,7 @@ using Json = nlohmann::json;
 // Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
+
 // Beyond the eigenproblem budget of core/modal_basis.h when the distinct beam models of `beams`
 // are solved (twice each: the first elastic frequency, then the basis), the estimate; else "".
 std::string BasesExcess(const std::vector<SceneBeam>& beams) {
@@ -188,6 +190,13 @@ std::vector<double> Heights(const Json& v, const std::string& file, const std::s
       h.push_back(n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1));
   }
   if (h.empty()) FailAt(file, path, "give at least one height");
+  std::vector<double> sorted = h;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end()) {
+    FailAt(file, path,
+           "height " + Shown(Json(*twice)) +
+               " m is given twice; heights must differ, since they name the zones");
+  }
   return h;
 }
 
@@ -416,27 +425,40 @@ void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
   }
 }
 
+// A name read at `key`, refused when `names` already holds it (names label CSV columns).
+std::string UniqueName(JsonObjectReader& r, const std::string& key, const char* what,
+                       std::unordered_set<std::string>& names) {
+  std::string name = r.RequiredName(key);
+  if (!names.insert(name).second)
+    r.Fail(key, std::string(what) + " \"" + name + "\" is defined twice; names must be unique");
+  return name;
+}
+
 void ParseHeader(JsonObjectReader& r, Scene& scene) {
-  scene.name = r.RequiredString("name");
-  scene.description = r.String("description", "");
+  scene.name = r.RequiredName("name");
+  scene.description = r.Text("description", "");
   const std::string planes = r.String("bending", "planar");
   if (planes != "planar" && planes != "both")
     r.Fail("bending", "\"" + planes + "\" must be \"planar\" or \"both\"");
   scene.planes = planes == "both" ? BendingPlanes::kBoth : BendingPlanes::kPlanar;
 }
 
-// beams[], then the bundle's beams and zones.
+// beams[], then the bundle's beams and zones: every beam name once.
 void ParseBeams(JsonObjectReader& r, Scene& scene) {
+  std::unordered_set<std::string> names;
   EachItem(r, "beams", [&](JsonObjectReader& b) {
     SceneBeam beam = ParseBeamProperties(b);
-    beam.name = b.RequiredString("name");
-    for (const auto& other : scene.beams) {
-      if (other.name == beam.name) b.Fail("name", "beam \"" + beam.name + "\" is defined twice");
-    }
+    beam.name = UniqueName(b, "name", "beam", names);
     std::tie(beam.y_m, beam.z_m) = Vector2(b, "position_m", {0.0, 0.0}, false);
     scene.beams.push_back(beam);
   });
+  const std::size_t listed = scene.beams.size();
   if (const Json* bundle = r.Get("bundle")) ExpandBundle(*bundle, r.File(), scene);
+  for (std::size_t i = listed; i < scene.beams.size(); ++i) {
+    if (names.contains(scene.beams[i].name))
+      r.Fail("bundle", "generates a beam named \"" + scene.beams[i].name +
+                           "\", as one in \"beams\" is named; beam names must be unique");
+  }
   if (scene.beams.empty())
     r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
   if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
@@ -445,9 +467,10 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
     r.Fail("beams", "the scene's distinct beams: " + excess);
 }
 
-SceneZone ParseZone(JsonObjectReader& z, const Scene& scene) {
+SceneZone ParseZone(JsonObjectReader& z, const Scene& scene,
+                    std::unordered_set<std::string>& names) {
   SceneZone zone;
-  zone.name = z.RequiredString("name");
+  zone.name = UniqueName(z, "name", "zone", names);
   zone.beam_a = BeamIndex(scene, z, "beam");
   const std::string against = z.String("against", "stop");
   if (against != "stop") {
@@ -475,9 +498,12 @@ SceneZone ParseZone(JsonObjectReader& z, const Scene& scene) {
   return zone;
 }
 
-// zones[], after the bundle's.
+// zones[], after the bundle's: every zone name once.
 void ParseZones(JsonObjectReader& r, Scene& scene) {
-  EachItem(r, "zones", [&](JsonObjectReader& z) { scene.zones.push_back(ParseZone(z, scene)); });
+  std::unordered_set<std::string> names;
+  for (const SceneZone& z : scene.zones) names.insert(z.name);
+  EachItem(r, "zones",
+           [&](JsonObjectReader& z) { scene.zones.push_back(ParseZone(z, scene, names)); });
   if (scene.zones.size() > static_cast<std::size_t>(kMaxZones))
     r.Fail("zones", "more than " + std::to_string(kMaxZones) + " zones");
 }
@@ -598,9 +624,10 @@ void ParseSolver(JsonObjectReader& r, Scene& scene) {
   s.Finish();
 }
 
-ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene) {
+ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene,
+                                std::unordered_set<std::string>& names) {
   ObservedPoint p;
-  p.name = d.RequiredString("name");
+  p.name = UniqueName(d, "name", "output", names);
   p.beam = BeamIndex(scene, d, "beam");
   p.height_m = Height(scene, d, p.beam);
   p.direction = Direction(d, "direction");
@@ -609,9 +636,10 @@ ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene) {
   return p;
 }
 
-// outputs.contact_forces as a list of zone names: only their histories.
+// outputs.contact_forces as a list of zone names: only their histories, each zone once.
 void ParseContactForceZones(const Json& list, JsonObjectReader& o, Scene& scene) {
   scene.outputs.contact_forces = true;
+  std::unordered_set<std::string> listed;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
     if (!list[i].is_string()) FailAt(o.File(), at, "expected a zone name, got " + Shown(list[i]));
@@ -619,14 +647,17 @@ void ParseContactForceZones(const Json& list, JsonObjectReader& o, Scene& scene)
     const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
                                    [&](const SceneZone& z) { return z.name == name; });
     if (zone == scene.zones.end()) FailAt(o.File(), at, "no zone named \"" + name + "\"");
+    if (!listed.insert(name).second)
+      FailAt(o.File(), at, "zone \"" + name + "\" is listed twice; list each zone once");
     scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
   }
 }
 
 void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
   JsonObjectReader o(outputs, path, "outputs");
+  std::unordered_set<std::string> names;
   EachItem(o, "displacements", [&](JsonObjectReader& d) {
-    scene.outputs.displacements.push_back(ParseDisplacement(d, scene));
+    scene.outputs.displacements.push_back(ParseDisplacement(d, scene, names));
   });
   auto flag = [&](const char* key) {
     const Json* v = o.Get(key);

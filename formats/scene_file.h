@@ -11,7 +11,8 @@ namespace shockmap {
 
 // Parses and validates a scene file. Throws InputError naming the file, the JSON path, the value
 // and what is allowed: unknown keys, wrong types, references to beams that do not exist, gaps or
-// stiffnesses out of range, a bad CSV load history (named with its line).
+// stiffnesses out of range, names given twice or holding control characters, a bad CSV load
+// history (named with its line).
 Scene LoadScene(const std::string& path);
 
 // The same for a scene already read; `path` names it in messages and locates its CSV files.

@@ -82,9 +82,9 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
   SceneStudySpec spec;
   spec.file = file;
   JsonObjectReader r(json, file, "");
-  spec.name = r.RequiredString("name");
+  spec.name = r.RequiredName("name");
   if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
-  spec.description = r.String("description", "");
+  spec.description = r.Text("description", "");
   spec.scene_file =
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);

@@ -292,9 +292,9 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   StudySpec spec;
   spec.file = file;
   JsonObjectReader r(json, file, "");
-  spec.name = r.RequiredString("name");
+  spec.name = r.RequiredName("name");
   if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
-  spec.description = r.String("description", "");
+  spec.description = r.Text("description", "");
   if (const Json* p = r.Get("problem")) ParseProblem(*p, file, spec.problem);
   if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.scoring);
   const Json* grids = r.Get("grids");
