@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/flag_checks.h"
 #include "core/input_error.h"
 #include "formats/scene_file.h"
 #include "formats/scene_outputs.h"
@@ -18,6 +19,7 @@ struct SimulateFlags {
   std::string scene_file;
   std::string out_dir;
   bool json = false;
+  SceneFileAccess access;
 };
 
 void PrintHuman(const Scene& scene, const SceneRun& run) {
@@ -60,7 +62,7 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
 }
 
 void Run(const SimulateFlags& f) {
-  const Scene scene = LoadScene(f.scene_file);
+  const Scene scene = LoadScene(f.scene_file, f.access);
   SceneRun run;
   try {
     run = RunScene(scene);
@@ -99,6 +101,7 @@ void AddSimulateCommand(CLI::App& app) {
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");
   cmd->add_flag("--json", flags->json, "print the summary as one JSON object");
+  AddAllowPathFlag(cmd, flags->access);
   cmd->callback([flags] { Run(*flags); });
 }
 

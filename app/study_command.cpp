@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/flag_checks.h"
 #include "db/read_only_query.h"
 #include "db/study_database.h"
 #include "engine/scene_study_runner.h"
@@ -22,6 +23,7 @@ struct StudyFlags {
   bool quiet = false;
   std::string sql;
   std::string format = "table";
+  SceneFileAccess access;
 };
 
 void Run(const StudyFlags& f) {
@@ -32,7 +34,7 @@ void Run(const StudyFlags& f) {
   std::string name;
   StudyRunSummary s;
   if (IsSceneStudy(json)) {
-    const SceneStudySpec spec = ParseSceneStudySpec(json, f.spec_path);
+    const SceneStudySpec spec = ParseSceneStudySpec(json, f.spec_path, f.access);
     name = spec.name;
     s = RunSceneStudy(spec, options);
   } else {
@@ -96,6 +98,7 @@ void AddStudyCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   run->add_flag("--retry-failed", flags->run.retry_failed, "compute failed points again");
   run->add_flag("--quiet", flags->quiet, "no progress on stderr");
+  AddAllowPathFlag(run, flags->access);
   run->callback([flags] { Run(*flags); });
 
   CLI::App* status = study->add_subcommand("status", "Progress and outcomes of the studies");

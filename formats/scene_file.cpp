@@ -385,13 +385,40 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   AddBundleZones(GenerateBundleZones(lattice, parts, index, wrapper, scene), parts, file, scene);
 }
 
-void LoadAccelerationCsv(const std::filesystem::path& csv, const std::string& where,
+// True when `file` lies in `folder` or below it (both canonical).
+bool Inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+  const auto [f, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+  return f == folder.end();
+}
+
+// The data file named at `key` of the scene being read: resolved against the scene's folder,
+// symbolic links followed, and accepted only inside that folder or an allowed one.
+std::filesystem::path DataFile(JsonObjectReader& r, const std::string& key,
+                               const SceneFileAccess& access) {
+  namespace fs = std::filesystem;
+  const std::string name = r.RequiredString(key);
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(r.File()).parent_path(), ec);
+  const fs::path file = fs::weakly_canonical(folder / name, ec);
+  if (!ec && Inside(file, folder)) return file;
+  for (const auto& allowed : access.allowed_folders) {
+    std::error_code allowed_ec;
+    const fs::path root = fs::weakly_canonical(fs::absolute(allowed), allowed_ec);
+    if (!ec && !allowed_ec && Inside(file, root)) return file;
+  }
+  r.Fail(key, "\"" + Excerpt(name) + "\" lies outside the scene's folder " + folder.string() +
+                  ": a scene's data files must lie in its folder or below it, or in a folder "
+                  "given on the command line with --allow-path DIR");
+}
+
+void LoadAccelerationCsv(JsonObjectReader& r, const SceneFileAccess& access,
                          BaseMotionEffect& base) {
+  const std::filesystem::path csv = DataFile(r, "csv", access);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(csv, ec))
-    FailAt(where, "effects.base_motion.csv", csv.string() + " is not a regular file");
+    r.Fail("csv", csv.string() + " is not a regular file");
   std::ifstream in(csv);
-  if (!in) FailAt(where, "effects.base_motion.csv", "cannot open " + csv.string());
+  if (!in) r.Fail("csv", "cannot open " + csv.string());
   ParseAccelerationCsv(in, csv.string(), base);
 }
 
@@ -524,7 +551,7 @@ ModalDampingEffect ParseModalDamping(JsonObjectReader& m) {
   return d;
 }
 
-BaseMotionEffect ParseBaseMotion(JsonObjectReader& b) {
+BaseMotionEffect ParseBaseMotion(JsonObjectReader& b, const SceneFileAccess& access) {
   BaseMotionEffect base;
   std::tie(base.dir_y, base.dir_z) = Vector2(b, "direction", {1.0, 0.0}, true);
   if (const Json* hs = b.Get("half_sine")) {
@@ -534,9 +561,7 @@ BaseMotionEffect ParseBaseMotion(JsonObjectReader& b) {
     base.start_s = InRange(h, "start_s", 0.0, 0.0, 1e4);
     h.Finish();
   } else if (b.Has("csv")) {
-    const std::filesystem::path csv =
-        std::filesystem::path(b.File()).parent_path() / b.String("csv", "");
-    LoadAccelerationCsv(csv, b.File(), base);
+    LoadAccelerationCsv(b, access, base);
   } else {
     b.Fail("", "give \"half_sine\": {...} or \"csv\": \"file.csv\"");
   }
@@ -567,7 +592,8 @@ InitialStateEffect ParseInitialState(JsonObjectReader& s, const Scene& scene) {
   return init;
 }
 
-void ParseEffects(const Json& effects, const std::string& path, Scene& scene) {
+void ParseEffects(const Json& effects, const std::string& path, const SceneFileAccess& access,
+                  Scene& scene) {
   JsonObjectReader e(effects, path, "effects");
   if (const Json* md = e.Get("modal_damping")) {
     JsonObjectReader m(*md, path, e.PathOf("modal_damping"));
@@ -576,7 +602,7 @@ void ParseEffects(const Json& effects, const std::string& path, Scene& scene) {
   }
   if (const Json* bm = e.Get("base_motion")) {
     JsonObjectReader b(*bm, path, e.PathOf("base_motion"));
-    scene.base_motion = ParseBaseMotion(b);
+    scene.base_motion = ParseBaseMotion(b, access);
     b.Finish();
   }
   EachItem(e, "static_forces",
@@ -687,15 +713,18 @@ void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
 
 }  // namespace
 
-Scene LoadScene(const std::string& path) { return ParseScene(ReadJsonFile(path), path); }
+Scene LoadScene(const std::string& path, const SceneFileAccess& access) {
+  return ParseScene(ReadJsonFile(path), path, access);
+}
 
-Scene ParseScene(const nlohmann::json& json, const std::string& path) {
+Scene ParseScene(const nlohmann::json& json, const std::string& path,
+                 const SceneFileAccess& access) {
   Scene scene;
   JsonObjectReader r(json, path, "");
   ParseHeader(r, scene);
   ParseBeams(r, scene);
   ParseZones(r, scene);
-  if (const Json* effects = r.Get("effects")) ParseEffects(*effects, path, scene);
+  if (const Json* effects = r.Get("effects")) ParseEffects(*effects, path, access, scene);
   ParseSolver(r, scene);
   if (const Json* outputs = r.Get("outputs")) ParseOutputs(*outputs, path, scene);
   r.Finish();

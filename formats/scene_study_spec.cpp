@@ -78,9 +78,11 @@ SceneParameters ParseParameters(const Json& value, const Json& scene, const std:
 
 bool IsSceneStudy(const Json& study) { return study.is_object() && study.contains("scene"); }
 
-SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
+SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
+                                   const SceneFileAccess& access) {
   SceneStudySpec spec;
   spec.file = file;
+  spec.access = access;
   JsonObjectReader r(json, file, "");
   spec.name = r.RequiredName("name");
   if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
@@ -88,7 +90,7 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
   spec.scene_file =
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);
-  const Scene base = ParseScene(spec.scene, spec.scene_file);
+  const Scene base = ParseScene(spec.scene, spec.scene_file, access);
 
   const Json* sweep = r.Get("sweep");
   if (sweep == nullptr || !sweep->is_object() || sweep->empty()) {
@@ -175,7 +177,7 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
 }
 
 Scene ScoredScene(const SceneStudySpec& spec, const SceneParameters& parameters) {
-  Scene scene = ParseScene(Applied(spec.scene, parameters), spec.scene_file);
+  Scene scene = ParseScene(Applied(spec.scene, parameters), spec.scene_file, spec.access);
   const auto point =
       std::find_if(scene.outputs.displacements.begin(), scene.outputs.displacements.end(),
                    [&](const ObservedPoint& o) { return o.name == spec.scoring.displacement; });
