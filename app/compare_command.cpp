@@ -7,6 +7,7 @@
 
 #include "app/flag_checks.h"
 #include "compare/comparison.h"
+#include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/comparison_json.h"
 #include "formats/history_csv.h"
@@ -70,6 +71,16 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              ref.wall_s, r.numerical.wall_s, r.numerical.cpu_s);
 }
 
+// Refuses a mesh (given, or the default for --rftrunc) whose eigenproblem exceeds the budget.
+void CheckMeshCost(const ComparisonOptions& o) {
+  const int elements = o.n_elements > 0 ? o.n_elements : DefaultElementCount(o.r_ftrunc);
+  const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1);
+  if (excess.empty()) return;
+  if (o.n_elements > 0) throw InputError(fmt::format("--elements: {}: {}", elements, excess));
+  throw InputError(fmt::format("--rftrunc: {:g} needs {} elements by default: {}", o.r_ftrunc,
+                               elements, excess));
+}
+
 void Run(const CompareFlags& flags) {
   CompareFlags f = flags;
   if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
@@ -86,6 +97,7 @@ void Run(const CompareFlags& flags) {
                     max_steps));
   }
 
+  CheckMeshCost(f.options);
   // The outputs are checked before the run and written before anything is reported.
   if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
   const ComparisonResult result = RunComparison(f.problem, f.options);
@@ -141,9 +153,10 @@ void AddCompareCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(FiniteAbove(1.0, false));
   cmd->add_option("--elements", flags->options.n_elements,
-                  "finite elements of the beam (0: enough for every retained mode)")
+                  "finite elements of the beam (0: enough for every retained mode; at most " +
+                      std::to_string(kEigenBudgetElements) + ")")
       ->capture_default_str()
-      ->check(CLI::Range(0, 100000));
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out", flags->out_dir, "directory for the CSV histories (and the plot)");
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,

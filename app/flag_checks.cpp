@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "formats/scene_file.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
@@ -14,6 +15,14 @@ void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds) {
   command->add_option("--srf-min", thresholds.srf_min, "smallest acceptable SRf")
       ->capture_default_str()
       ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+}
+
+void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {
+  command
+      ->add_option("--allow-path", access.allowed_folders,
+                   "folder a scene's data files (base-motion CSV) may also be read from; by "
+                   "default only the scene's own folder and below (repeatable)")
+      ->check(CLI::ExistingDirectory);
 }
 
 CLI::Validator FiniteAbove(double lo, bool strict) {

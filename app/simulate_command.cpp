@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/flag_checks.h"
 #include "core/input_error.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
@@ -19,6 +20,7 @@ struct SimulateFlags {
   std::string scene_file;
   std::string out_dir;
   bool json = false;
+  SceneFileAccess access;
 };
 
 void PrintHuman(const Scene& scene, const SceneRun& run) {
@@ -78,7 +80,7 @@ std::vector<std::filesystem::path> WriteOutputs(const SimulateFlags& f, const Sc
 // The outputs are checked before the run and written before anything is reported, so that
 // success is printed only for files that exist.
 void Run(const SimulateFlags& f) {
-  const Scene scene = LoadScene(f.scene_file);
+  const Scene scene = LoadScene(f.scene_file, f.access);
   if (!f.out_dir.empty()) {
     PrepareOutputDirectory(f.out_dir, "--out");
     CheckPathLength(std::filesystem::path(f.out_dir) / kLongestOutput,
@@ -115,6 +117,7 @@ void AddSimulateCommand(CLI::App& app) {
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");
   cmd->add_flag("--json", flags->json, "print the summary as one JSON object");
+  AddAllowPathFlag(cmd, flags->access);
   cmd->callback([flags] { Run(*flags); });
 }
 

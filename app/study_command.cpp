@@ -45,6 +45,7 @@ struct StudyFlags {
   std::string sql;
   std::string format = "table";
   QueryLimits limits{kDefaultMaxRows, kDefaultTimeout_s};
+  SceneFileAccess access;
 };
 
 void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
@@ -75,7 +76,7 @@ void Run(const StudyFlags& f) {
   StudyRunOptions options = f.run;
   options.progress = !f.quiet;
   // The whole file, and every point's scene, is checked before the database is touched.
-  const StudyFile study = ReadStudyFile(f.spec_path);
+  const StudyFile study = ReadStudyFile(f.spec_path, f.access);
   InstallStopHandlers();
   const StudyRunSummary s = RunStudy(study, options);
   PrintSummary(s, options.database_path);
@@ -134,6 +135,7 @@ void AddStudyCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   run->add_flag("--retry-failed", flags->run.retry_failed, "compute failed points again");
   run->add_flag("--quiet", flags->quiet, "no progress on stderr");
+  AddAllowPathFlag(run, flags->access);
   run->callback([flags] { Run(*flags); });
 
   CLI::App* status = study->add_subcommand("status", "Progress and outcomes of the studies");

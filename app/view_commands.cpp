@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "db/study_database.h"
+#include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "views/advice.h"
 #include "views/cost_front.h"
@@ -35,7 +36,8 @@ void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
 StudySpec StoredSpec(const std::string& database_path, const std::string& study) {
   const auto json = StoredStudySpec(database_path, study);
   if (!json) throw InputError("no study named \"" + study + "\" in " + database_path);
-  return ParseStudySpec(nlohmann::json::parse(*json), database_path);
+  return ParseStudySpec(ParseJsonText(*json, database_path + ": stored study " + study),
+                        database_path);
 }
 
 // Throws InputError naming --out when the plot or the files beside it could not be named.

@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace shockmap {
@@ -40,6 +41,28 @@ ModalBasis FirstColumns(ModalBasis all, int n) {
 
 double ModalBasis::HighestFrequencyHz() const {
   return NumModes() == 0 ? 0.0 : omega_rad_s[NumModes() - 1] / (2.0 * std::numbers::pi);
+}
+
+EigenCost DenseEigenCost(int unknowns) {
+  const double n = unknowns;
+  return {4.0 * n * n * sizeof(double), 10.0 * n * n * n};
+}
+
+std::string EigenBudgetExcess(const std::vector<int>& unknowns, int solves_each) {
+  const double budget = DenseEigenCost(BeamUnknowns(kEigenBudgetElements)).flops;
+  EigenCost total;
+  for (int n : unknowns) {
+    const EigenCost one = DenseEigenCost(n);
+    total.bytes = std::max(total.bytes, one.bytes);  // Solved one after the other.
+    total.flops += solves_each * one.flops;
+  }
+  if (total.flops <= budget) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "the modal bases would need about %.2g GB and %.2g flops; at most %.2g flops "
+                "(one eigenproblem of a %d-element beam) are allowed",
+                total.bytes / 1e9, total.flops, budget, kEigenBudgetElements);
+  return text;
 }
 
 ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz) {

@@ -4,6 +4,7 @@
 
 #include "engine/reference_store.h"
 #include "formats/comparison_json.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -60,7 +61,8 @@ CanonicalStudy::CanonicalStudy(StudySpec spec)
 
 void CanonicalStudy::CheckStoredSpec(const std::string& stored_json,
                                      const std::string& database_path) const {
-  const nlohmann::json stored = nlohmann::json::parse(stored_json);
+  const nlohmann::json stored =
+      ParseJsonText(stored_json, database_path + ": stored study " + spec_.name);
   if (StudyKindOf(stored, database_path) != StudyFileKind::kCanonical) {
     throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
                      database_path + " as a study of another kind; give this one a new name");

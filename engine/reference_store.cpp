@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/comparison_json.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -47,7 +48,7 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row) {
   ReferenceRun run;
   run.tip_m = {0.0, row.output_dt_s, row.tip_m};
   run.force_n = {0.0, row.output_dt_s, row.force_n};
-  for (const auto& s : nlohmann::json::parse(row.shocks_json))
+  for (const auto& s : ParseJsonText(row.shocks_json, "stored reference shocks"))
     run.shocks.push_back(ShockFromJson(s));
   run.summary.n_modes_free = row.n_modes_free;
   run.summary.n_modes_contact = row.n_modes_contact;

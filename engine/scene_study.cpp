@@ -5,6 +5,7 @@
 
 #include "compare/scene_run.h"
 #include "core/input_error.h"
+#include "formats/json_reader.h"
 #include "validation/impulse_ratio.h"
 #include "validation/spectral_error.h"
 
@@ -15,7 +16,8 @@ SceneStudy::SceneStudy(SceneStudySpec spec)
 
 void SceneStudy::CheckStoredSpec(const std::string& stored_json,
                                  const std::string& database_path) const {
-  const nlohmann::json previous = nlohmann::json::parse(stored_json);
+  const nlohmann::json previous =
+      ParseJsonText(stored_json, database_path + ": stored study " + spec_.name);
   if (StudyKindOf(previous, database_path) != StudyFileKind::kSceneSweep) {
     throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
                      database_path + " as a study of another kind; give this one a new name");

@@ -16,8 +16,7 @@ void ParseAccelerationCsv(std::istream& in, const std::string& name, BaseMotionE
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (number == 1) {
       if (line != "t_s,a_m_s2")
-        FailAt(name, "line 1",
-               "expected the header \"t_s,a_m_s2\", got \"" + line.substr(0, 60) + "\"");
+        FailAt(name, "line 1", "expected the header \"t_s,a_m_s2\", got \"" + Excerpt(line) + "\"");
       continue;
     }
     if (line.empty()) continue;
@@ -26,7 +25,7 @@ void ParseAccelerationCsv(std::istream& in, const std::string& name, BaseMotionE
     if (!std::getline(fields, t_text, ',') || !std::getline(fields, a_text, ',') ||
         std::getline(fields, extra, ',')) {
       FailAt(name, "line " + std::to_string(number),
-             "expected two values \"t,a\", got \"" + line.substr(0, 60) + "\"");
+             "expected two values \"t,a\", got \"" + Excerpt(line) + "\"");
     }
     double t = 0, a = 0;
     try {
@@ -36,8 +35,7 @@ void ParseAccelerationCsv(std::istream& in, const std::string& name, BaseMotionE
       if (used_t != t_text.size() || used_a != a_text.size())
         throw std::invalid_argument("trailing");
     } catch (const std::exception&) {
-      FailAt(name, "line " + std::to_string(number),
-             "not two numbers: \"" + line.substr(0, 60) + "\"");
+      FailAt(name, "line " + std::to_string(number), "not two numbers: \"" + Excerpt(line) + "\"");
     }
     if (!std::isfinite(t) || !std::isfinite(a))
       FailAt(name, "line " + std::to_string(number), "values must be finite");

@@ -1,11 +1,130 @@
 #include "formats/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <unordered_set>
 
 namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+// Where the parser is: one frame per open object or array, with the position in it.
+class JsonPathTracker {
+ public:
+  explicit JsonPathTracker(std::string file) : file_(std::move(file)) {}
+
+  // The parser's callback: throws InputError on too deep a nesting or a repeated key, keeps
+  // every value otherwise.
+  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
+    using Event = Json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        Open(event == Event::object_start);
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        break;
+      case Event::key:
+        Key(parsed.get<std::string>());
+        break;
+      case Event::value:
+        NextItem();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool object = false;
+    std::string key;       // The key being read (objects).
+    long long index = -1;  // The item being read (arrays).
+    std::unordered_set<std::string> keys;
+  };
+
+  void NextItem() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  }
+
+  void Open(bool object) {
+    NextItem();
+    if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth)) {
+      FailAt(file_, Path(),
+             "objects and arrays nested " + std::to_string(kMaxJsonDepth + 1) +
+                 " levels deep; at most " + std::to_string(kMaxJsonDepth) + " levels are allowed");
+    }
+    frames_.push_back({object, {}, -1, {}});
+  }
+
+  void Key(const std::string& key) {
+    Frame& f = frames_.back();
+    f.key = key;
+    if (!f.keys.insert(key).second)
+      FailAt(file_, Path(), "key given twice in one object; each key may appear once");
+  }
+
+  // The path of the current position, e.g. zones[3].name, shortened for messages.
+  std::string Path() const {
+    std::string path;
+    for (const Frame& f : frames_) {
+      if (!f.object && f.index >= 0) path += "[" + std::to_string(f.index) + "]";
+      if (f.object && !f.key.empty()) path += (path.empty() ? "" : ".") + Excerpt(f.key);
+    }
+    return path.size() > 80 ? path.substr(0, 77) + "..." : path;
+  }
+
+  std::string file_;
+  std::vector<Frame> frames_;
+};
+
+bool IsControl(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  return u < 0x20 || u == 0x7f;
+}
+
+// The library's message without its tag and without the text it quotes ("last read: '...'",
+// "number overflow parsing '...'").
+std::string SyntaxReason(const std::string& what) {
+  const std::string reason = what.substr(what.find(']') + 2);
+  return reason.substr(0, std::min(reason.find("; last read"), reason.find(" '")));
+}
+
+}  // namespace
+
+std::string Excerpt(const std::string& text, std::size_t offset) {
+  constexpr std::size_t kMaxBytes = 40;
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  const std::size_t end = std::min(text.size(), offset + kMaxBytes);
+  for (std::size_t i = offset; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      out += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+    }
+  }
+  if (end < text.size()) out += "...";
+  return out;
+}
+
+nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
+  try {
+    return Json::parse(text, JsonPathTracker(file));
+  } catch (const Json::parse_error& e) {
+    const std::size_t at = e.byte > 0 ? std::min<std::size_t>(e.byte - 1, text.size()) : 0;
+    throw InputError(file + ": not valid JSON (" + SyntaxReason(e.what()) + ", at byte " +
+                     std::to_string(e.byte) + ": \"" + Excerpt(text, at) + "\")");
+  } catch (const Json::exception& e) {  // Out-of-range numbers.
+    throw InputError(file + ": not valid JSON (" + SyntaxReason(e.what()) + ")");
+  }
+}
 
 nlohmann::json ReadJsonFile(const std::string& path) {
   std::error_code ec;
@@ -24,17 +143,23 @@ nlohmann::json ReadJsonFile(const std::string& path) {
   if (text.str().find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError(path + ": the file is empty; expected a JSON object");
   }
-  try {
-    return nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {  // Syntax errors and out-of-range numbers.
-    throw InputError(path + ": not valid JSON (" + e.what() + ")");
-  }
+  return ParseJsonText(text.str(), path);
 }
 
 std::string Shown(const nlohmann::json& value) {
   std::string s = value.dump();
   if (s.size() > 60) s = s.substr(0, 57) + "...";
   return s;
+}
+
+const std::string& CheckedName(const std::string& name, const std::string& file,
+                               const std::string& path) {
+  if (std::any_of(name.begin(), name.end(), IsControl)) {
+    FailAt(file, path,
+           "name \"" + Excerpt(name) +
+               "\" holds a control character (U+0000 to U+001F or U+007F); names may not");
+  }
+  return name;
 }
 
 void FailAt(const std::string& file, const std::string& path, const std::string& message) {
@@ -96,6 +221,19 @@ std::string JsonObjectReader::String(const std::string& key, const std::string& 
 std::string JsonObjectReader::RequiredString(const std::string& key) {
   if (!Has(key)) Fail(key, "required string is missing");
   return String(key, "");
+}
+
+std::string JsonObjectReader::RequiredName(const std::string& key) {
+  return CheckedName(RequiredString(key), file_, PathOf(key));
+}
+
+std::string JsonObjectReader::Text(const std::string& key, const std::string& fallback) {
+  const std::string text = String(key, fallback);
+  for (const char c : text) {
+    if (IsControl(c) && c != '\t' && c != '\n' && c != '\r')
+      Fail(key, "\"" + Excerpt(text) + "\" holds a control character other than tab or newline");
+  }
+  return text;
 }
 
 void JsonObjectReader::Finish() const {

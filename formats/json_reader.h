@@ -12,8 +12,24 @@
 
 namespace shockmap {
 
-// Parses `path` as JSON; throws InputError naming the file (missing, unreadable, not JSON).
+// Objects and arrays nested deeper than this are refused while parsing: no scene or study
+// comes near it, and deeper documents would exhaust the stack of the recursive code that walks,
+// copies and prints them.
+inline constexpr int kMaxJsonDepth = 64;
+
+// Parses `path` as JSON (see ParseJsonText); throws InputError naming the file (missing,
+// unreadable, not a regular file, over 64 MiB).
 nlohmann::json ReadJsonFile(const std::string& path);
+
+// Parses `text`, read from `file` (named in messages), as JSON. Throws InputError naming the
+// file and the key path for nesting deeper than kMaxJsonDepth and for a key given twice in one
+// object; for a syntax error, naming the line, column and byte with an Excerpt() of the text
+// there, never more of it.
+nlohmann::json ParseJsonText(const std::string& text, const std::string& file);
+
+// At most 40 bytes of `text` from `offset`, for messages: bytes outside printable ASCII (and the
+// backslash) written as \xNN, "..." appended when more follows.
+std::string Excerpt(const std::string& text, std::size_t offset = 0);
 
 // One JSON object being read. Call Finish() once every known key has been read: it rejects the
 // keys nobody asked for.
@@ -32,6 +48,11 @@ class JsonObjectReader {
   int Integer(const std::string& key, int fallback);
   std::string String(const std::string& key, const std::string& fallback);
   std::string RequiredString(const std::string& key);
+  // A required name without control characters (U+0000-U+001F, U+007F): names become
+  // database keys, CSV columns and lines of output.
+  std::string RequiredName(const std::string& key);
+  // Free text: any characters but the control characters other than tab, CR and LF.
+  std::string Text(const std::string& key, const std::string& fallback);
   void Finish() const;
 
   // Throws InputError "<file>: <path>: <message>".
@@ -52,5 +73,8 @@ class JsonObjectReader {
 double NumberAt(const nlohmann::json& value, const std::string& file, const std::string& path);
 // The value as it appears in the file, shortened, for messages.
 std::string Shown(const nlohmann::json& value);
+// `name` when it holds no control character (U+0000-U+001F, U+007F), else InputError at `path`.
+const std::string& CheckedName(const std::string& name, const std::string& file,
+                               const std::string& path);
 
 }  // namespace shockmap

@@ -6,8 +6,12 @@
 #include <fstream>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
+#include <tuple>
+#include <unordered_set>
 
+#include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/acceleration_csv.h"
 #include "formats/json_reader.h"
@@ -20,7 +24,24 @@ using Json = nlohmann::json;
 // Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
-constexpr int kMaxElements = 10000;
+
+// Beyond the eigenproblem budget of core/modal_basis.h when the distinct beam models of `beams`
+// are solved (twice each: the first elastic frequency, then the basis), the estimate; else "".
+std::string BasesExcess(const std::vector<SceneBeam>& beams) {
+  std::set<std::tuple<double, double, double, int, EndCondition, EndCondition, double, double,
+                      std::optional<double>, std::optional<double>>>
+      distinct;
+  std::vector<int> unknowns;
+  for (const SceneBeam& b : beams) {
+    if (distinct
+            .insert({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m, b.n_elements, b.at_zero, b.at_length,
+                     b.spring_at_zero_n_per_m, b.spring_at_length_n_per_m, b.f_trunc_hz,
+                     b.r_ftrunc})
+            .second)
+      unknowns.push_back(BeamUnknowns(b.n_elements));
+  }
+  return EigenBudgetExcess(unknowns, 2);
+}
 
 double Positive(JsonObjectReader& r, const std::string& key, double hi = 1e15) {
   const double v = r.RequiredNumber(key);
@@ -84,10 +105,10 @@ SceneBeam ParseBeamProperties(JsonObjectReader& r) {
   b.ei_n_m2 = Positive(r, "ei_n_m2");
   b.rho_a_kg_per_m = Positive(r, "rho_a_kg_per_m", 1e6);
   b.n_elements = r.Integer("elements", b.n_elements);
-  if (b.n_elements < 1 || b.n_elements > kMaxElements) {
-    r.Fail("elements", "value " + std::to_string(b.n_elements) + " must lie in [1, " +
-                           std::to_string(kMaxElements) + "]");
-  }
+  if (b.n_elements < 1)
+    r.Fail("elements", "value " + std::to_string(b.n_elements) + " must be >= 1");
+  if (const std::string excess = BasesExcess({b}); !excess.empty())
+    r.Fail("elements", "value " + std::to_string(b.n_elements) + ": " + excess);
   std::tie(b.at_zero, b.at_length) = Ends(r);
   const auto springs = Vector2(r, "end_springs_n_per_m", {0.0, 0.0}, false);
   if (springs.first < 0 || springs.second < 0)
@@ -169,7 +190,183 @@ std::vector<double> Heights(const Json& v, const std::string& file, const std::s
       h.push_back(n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1));
   }
   if (h.empty()) FailAt(file, path, "give at least one height");
+  std::vector<double> sorted = h;
+  std::sort(sorted.begin(), sorted.end());
+  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end()) {
+    FailAt(file, path,
+           "height " + Shown(Json(*twice)) +
+               " m is given twice; heights must differ, since they name the zones");
+  }
   return h;
+}
+
+// Pin positions in the cross-section and the lattice cell of each.
+struct Lattice {
+  bool row = true;
+  double pitch_m = 0.0;
+  std::vector<std::pair<double, double>> positions;
+  std::vector<std::array<int, 2>> cells;
+};
+
+// layout "row": `pins` pins along y; "hex": `rings` rings around a centre pin.
+Lattice ParseLattice(JsonObjectReader& r) {
+  Lattice l;
+  const std::string layout = r.String("layout", "row");
+  if (layout != "row" && layout != "hex")
+    r.Fail("layout", "\"" + layout + "\" is not a layout: use \"row\" or \"hex\"");
+  l.row = layout == "row";
+  l.pitch_m = Positive(r, "pin_pitch_m", 1.0);
+  if (l.row) {
+    const int pins = r.Integer("pins", 0);
+    if (pins < 1 || pins > kMaxBeams)
+      r.Fail("pins", "value " + std::to_string(pins) + " must lie in [1, " +
+                         std::to_string(kMaxBeams) + "]");
+    for (int i = 0; i < pins; ++i)
+      l.positions.push_back({(i - (pins - 1) / 2.0) * l.pitch_m, 0.0}), l.cells.push_back({i, 0});
+    return l;
+  }
+  const int rings = r.Integer("rings", 0);
+  if (rings < 0 || rings > 50)
+    r.Fail("rings", "value " + std::to_string(rings) + " must lie in [0, 50]");
+  for (int q = -rings; q <= rings; ++q) {
+    for (int s = -rings; s <= rings; ++s) {
+      if (std::abs(q + s) > rings) continue;
+      l.positions.push_back({l.pitch_m * (q + s / 2.0), l.pitch_m * s * std::sqrt(3.0) / 2.0});
+      l.cells.push_back({q, s});
+    }
+  }
+  return l;
+}
+
+const Json& RequiredObject(JsonObjectReader& r, const std::string& key) {
+  const Json* v = r.Get(key);
+  if (v == nullptr) r.Fail(key, "required object is missing");
+  return *v;
+}
+
+// The bundle's pin and wrapper beams and its wires, with the gap laws still to be drawn.
+struct BundleParts {
+  SceneBeam pin, wrapper;
+  std::vector<double> heights;
+  double stiffness_n_per_m = 0.0, damping_n_s_per_m = 0.0;
+  const Json* pin_gap = nullptr;
+  const Json* wrapper_gap = nullptr;  // nullptr: the first pin gap.
+  std::string heights_path, pin_gap_path, wrapper_gap_path;
+};
+
+void ParseWire(JsonObjectReader& wire, BundleParts& p) {
+  const Json* heights = wire.Get("heights_m");
+  if (heights == nullptr) wire.Fail("heights_m", "required");
+  p.heights_path = wire.PathOf("heights_m");
+  p.heights = Heights(*heights, wire.File(), p.heights_path);
+  p.stiffness_n_per_m = Positive(wire, "stiffness_n_per_m");
+  p.damping_n_s_per_m = InRange(wire, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  p.pin_gap = wire.Get("gap_m");
+  if (p.pin_gap == nullptr) wire.Fail("gap_m", "required");
+  p.pin_gap_path = wire.PathOf("gap_m");
+  wire.Finish();
+}
+
+BundleParts ParseBundleParts(JsonObjectReader& r) {
+  BundleParts p;
+  JsonObjectReader pin(RequiredObject(r, "pin"), r.File(), r.PathOf("pin"));
+  p.pin = ParseBeamProperties(pin);
+  pin.Finish();
+  JsonObjectReader wrap(RequiredObject(r, "wrapper"), r.File(), r.PathOf("wrapper"));
+  p.wrapper = ParseBeamProperties(wrap);
+  p.wrapper_gap = wrap.Get("gap_m");
+  p.wrapper_gap_path = wrap.PathOf("gap_m");
+  wrap.Finish();
+  JsonObjectReader wire(RequiredObject(r, "wire"), r.File(), r.PathOf("wire"));
+  ParseWire(wire, p);
+  return p;
+}
+
+// Wires on both beams, and a size refused before anything is generated: at most 6 zones per
+// pin and height.
+void CheckBundle(const Lattice& l, const BundleParts& p, const std::string& file) {
+  for (double h : p.heights) {
+    if (h < 0 || h > p.pin.length_m || h > p.wrapper.length_m) {
+      FailAt(file, p.heights_path,
+             "height " + Shown(Json(h)) + " m lies outside the pins or the wrapper");
+    }
+  }
+  const double zones = 6.0 * static_cast<double>(l.positions.size()) * p.heights.size();
+  if (zones > kMaxZones) {
+    FailAt(file, "bundle",
+           std::to_string(l.positions.size()) + " pins with " + std::to_string(p.heights.size()) +
+               " wire heights would make up to " + Shown(Json(zones)) + " zones: at most " +
+               std::to_string(kMaxZones) + " are allowed");
+  }
+}
+
+// Appends the wrapper and the pins; returns the beam index of each lattice cell.
+std::map<std::array<int, 2>, int> AddBundleBeams(const Lattice& l, const BundleParts& p,
+                                                 Scene& scene) {
+  SceneBeam wrapper = p.wrapper;
+  wrapper.name = "wrapper";
+  scene.beams.push_back(wrapper);
+  std::map<std::array<int, 2>, int> index;
+  for (std::size_t i = 0; i < l.positions.size(); ++i) {
+    SceneBeam b = p.pin;
+    b.name = "pin_" + std::to_string(i);
+    std::tie(b.y_m, b.z_m) = l.positions[i];
+    index[l.cells[i]] = static_cast<int>(scene.beams.size());
+    scene.beams.push_back(b);
+  }
+  return index;
+}
+
+struct BundleZones {
+  std::vector<SceneZone> pairs, walls;
+};
+
+// Zones at every wire height between neighbouring pins (each pair once) and, where a neighbour
+// is missing, between the pin and the wrapper (beam `wrapper`); gaps are drawn afterwards.
+BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
+                                const std::map<std::array<int, 2>, int>& index, int wrapper,
+                                const Scene& scene) {
+  const std::vector<std::array<int, 2>> steps =
+      l.row ? std::vector<std::array<int, 2>>{{1, 0}, {-1, 0}}
+            : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
+  BundleZones zones;
+  for (const auto& [cell, a] : index) {
+    for (const auto& s : steps) {
+      const double ny = l.row ? s[0] : s[0] + s[1] / 2.0;
+      const double nz = l.row ? 0.0 : s[1] * std::sqrt(3.0) / 2.0;
+      const auto it = index.find({cell[0] + s[0], cell[1] + s[1]});
+      if (it != index.end() && it->second < a) continue;  // Each pair once.
+      for (double h : p.heights) {
+        SceneZone z;
+        z.beam_a = a;
+        z.height_m = h;
+        z.normal_y = ny, z.normal_z = nz;
+        z.stiffness_n_per_m = p.stiffness_n_per_m;
+        z.damping_n_s_per_m = p.damping_n_s_per_m;
+        z.y_m = l.positions[a - wrapper - 1].first + 0.5 * l.pitch_m * ny;
+        z.z_m = l.positions[a - wrapper - 1].second + 0.5 * l.pitch_m * nz;
+        z.beam_b = it != index.end() ? it->second : wrapper;
+        z.name = scene.beams[a].name + "-" + scene.beams[z.beam_b].name + "@" + Shown(Json(h));
+        (it != index.end() ? zones.pairs : zones.walls).push_back(z);
+      }
+    }
+  }
+  return zones;
+}
+
+// Draws the gaps (pairs first, then walls, so that a seed gives the same gaps as before) and
+// appends the zones, pairs first.
+void AddBundleZones(BundleZones zones, const BundleParts& p, const std::string& file,
+                    Scene& scene) {
+  const auto pair_gaps = Gaps(*p.pin_gap, file, p.pin_gap_path, zones.pairs.size());
+  const auto wall_gaps =
+      p.wrapper_gap != nullptr ? Gaps(*p.wrapper_gap, file, p.wrapper_gap_path, zones.walls.size())
+      : pair_gaps.empty()      ? std::vector<double>(zones.walls.size(), 0.0)
+                               : std::vector<double>(zones.walls.size(), pair_gaps.front());
+  for (std::size_t i = 0; i < zones.pairs.size(); ++i) zones.pairs[i].gap_m = pair_gaps[i];
+  for (std::size_t i = 0; i < zones.walls.size(); ++i) zones.walls[i].gap_m = wall_gaps[i];
+  scene.zones.insert(scene.zones.end(), zones.pairs.begin(), zones.pairs.end());
+  scene.zones.insert(scene.zones.end(), zones.walls.begin(), zones.walls.end());
 }
 
 // Expands {"bundle": {...}}: a wrapper beam named "wrapper" and pins "pin_0", "pin_1", ... in a
@@ -178,146 +375,50 @@ std::vector<double> Heights(const Json& v, const std::string& file, const std::s
 // neighbouring pins and between the outer pins and the wrapper.
 void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   JsonObjectReader r(v, file, "bundle");
-  const std::string layout = r.String("layout", "row");
-  if (layout != "row" && layout != "hex")
-    r.Fail("layout", "\"" + layout + "\" is not a layout: use \"row\" or \"hex\"");
-  const double pitch = Positive(r, "pin_pitch_m", 1.0);
-  std::vector<std::pair<double, double>> positions;
-  std::vector<std::array<int, 2>> axial;
-  if (layout == "row") {
-    const int pins = r.Integer("pins", 0);
-    if (pins < 1 || pins > kMaxBeams)
-      r.Fail("pins", "value " + std::to_string(pins) + " must lie in [1, " +
-                         std::to_string(kMaxBeams) + "]");
-    for (int i = 0; i < pins; ++i)
-      positions.push_back({(i - (pins - 1) / 2.0) * pitch, 0.0}), axial.push_back({i, 0});
-  } else {
-    const int rings = r.Integer("rings", 0);
-    if (rings < 0 || rings > 50)
-      r.Fail("rings", "value " + std::to_string(rings) + " must lie in [0, 50]");
-    for (int q = -rings; q <= rings; ++q) {
-      for (int s = -rings; s <= rings; ++s) {
-        if (std::abs(q + s) > rings) continue;
-        positions.push_back({pitch * (q + s / 2.0), pitch * s * std::sqrt(3.0) / 2.0});
-        axial.push_back({q, s});
-      }
-    }
-    scene.planes = BendingPlanes::kBoth;
-  }
-  JsonObjectReader pin(
-      *[&] {
-        const Json* p = r.Get("pin");
-        if (!p) r.Fail("pin", "required object is missing");
-        return p;
-      }(),
-      file, r.PathOf("pin"));
-  const SceneBeam pin_beam = ParseBeamProperties(pin);
-  pin.Finish();
-  JsonObjectReader wrap(
-      *[&] {
-        const Json* w = r.Get("wrapper");
-        if (!w) r.Fail("wrapper", "required object is missing");
-        return w;
-      }(),
-      file, r.PathOf("wrapper"));
-  SceneBeam wrapper = ParseBeamProperties(wrap);
-  const Json* wrapper_gap = wrap.Get("gap_m");
-  wrap.Finish();
-  JsonObjectReader wire(
-      *[&] {
-        const Json* w = r.Get("wire");
-        if (!w) r.Fail("wire", "required object is missing");
-        return w;
-      }(),
-      file, r.PathOf("wire"));
-  const Json* heights_json = wire.Get("heights_m");
-  if (heights_json == nullptr) wire.Fail("heights_m", "required");
-  const std::vector<double> heights = Heights(*heights_json, file, wire.PathOf("heights_m"));
-  const double k = Positive(wire, "stiffness_n_per_m");
-  const double c = InRange(wire, "damping_n_s_per_m", 0.0, 0.0, 1e9);
-  const Json* pin_gap = wire.Get("gap_m");
-  if (pin_gap == nullptr) wire.Fail("gap_m", "required");
-  wire.Finish();
+  const Lattice lattice = ParseLattice(r);
+  if (!lattice.row) scene.planes = BendingPlanes::kBoth;
+  const BundleParts parts = ParseBundleParts(r);
   r.Finish();
-  for (double h : heights) {
-    if (h < 0 || h > pin_beam.length_m || h > wrapper.length_m) {
-      FailAt(file, wire.PathOf("heights_m"),
-             "height " + Shown(Json(h)) + " m lies outside the pins or the wrapper");
-    }
-  }
-
-  // Refused before anything is generated: at most 6 zones per pin and height.
-  const double zones = 6.0 * static_cast<double>(positions.size()) * heights.size();
-  if (zones > kMaxZones) {
-    FailAt(file, "bundle",
-           std::to_string(positions.size()) + " pins with " + std::to_string(heights.size()) +
-               " wire heights would make up to " + Shown(Json(zones)) + " zones: at most " +
-               std::to_string(kMaxZones) + " are allowed");
-  }
-  const int first = static_cast<int>(scene.beams.size());
-  wrapper.name = "wrapper";
-  scene.beams.push_back(wrapper);
-  std::map<std::array<int, 2>, int> index;
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    SceneBeam b = pin_beam;
-    b.name = "pin_" + std::to_string(i);
-    b.y_m = positions[i].first;
-    b.z_m = positions[i].second;
-    index[axial[i]] = static_cast<int>(scene.beams.size());
-    scene.beams.push_back(b);
-  }
-  // Neighbour pairs (each once) and outer faces against the wrapper.
-  const std::vector<std::array<int, 2>> steps =
-      layout == "row"
-          ? std::vector<std::array<int, 2>>{{1, 0}, {-1, 0}}
-          : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
-  std::vector<SceneZone> pair_zones, wall_zones;
-  for (const auto& [cell, a] : index) {
-    for (const auto& s : steps) {
-      const std::array<int, 2> next{cell[0] + s[0], cell[1] + s[1]};
-      const double ny = layout == "row" ? s[0] : s[0] + s[1] / 2.0;
-      const double nz = layout == "row" ? 0.0 : s[1] * std::sqrt(3.0) / 2.0;
-      const auto it = index.find(next);
-      for (double h : heights) {
-        SceneZone z;
-        z.beam_a = a;
-        z.height_m = h;
-        z.normal_y = ny, z.normal_z = nz;
-        z.stiffness_n_per_m = k;
-        z.damping_n_s_per_m = c;
-        z.y_m = positions[a - first - 1].first + 0.5 * pitch * ny;
-        z.z_m = positions[a - first - 1].second + 0.5 * pitch * nz;
-        if (it != index.end()) {
-          if (it->second < a) continue;  // Each pair once.
-          z.beam_b = it->second;
-          z.name = scene.beams[a].name + "-" + scene.beams[it->second].name + "@" + Shown(Json(h));
-          pair_zones.push_back(z);
-        } else {
-          z.beam_b = first;
-          z.name = scene.beams[a].name + "-wrapper@" + Shown(Json(h));
-          wall_zones.push_back(z);
-        }
-      }
-    }
-  }
-  const auto pair_gaps = Gaps(*pin_gap, file, wire.PathOf("gap_m"), pair_zones.size());
-  const auto wall_gaps =
-      wrapper_gap != nullptr ? Gaps(*wrapper_gap, file, wrap.PathOf("gap_m"), wall_zones.size())
-      : pair_gaps.empty()    ? std::vector<double>(wall_zones.size(), 0.0)
-                             : std::vector<double>(wall_zones.size(), pair_gaps.front());
-  for (std::size_t i = 0; i < pair_zones.size(); ++i) pair_zones[i].gap_m = pair_gaps[i];
-  for (std::size_t i = 0; i < wall_zones.size(); ++i) wall_zones[i].gap_m = wall_gaps[i];
-  scene.zones.insert(scene.zones.end(), pair_zones.begin(), pair_zones.end());
-  scene.zones.insert(scene.zones.end(), wall_zones.begin(), wall_zones.end());
+  CheckBundle(lattice, parts, file);
+  const int wrapper = static_cast<int>(scene.beams.size());
+  const auto index = AddBundleBeams(lattice, parts, scene);
+  AddBundleZones(GenerateBundleZones(lattice, parts, index, wrapper, scene), parts, file, scene);
 }
 
-void LoadAccelerationCsv(const std::filesystem::path& csv, const std::string& where,
+// True when `file` lies in `folder` or below it (both canonical).
+bool Inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+  const auto [f, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+  return f == folder.end();
+}
+
+// The data file named at `key` of the scene being read: resolved against the scene's folder,
+// symbolic links followed, and accepted only inside that folder or an allowed one.
+std::filesystem::path DataFile(JsonObjectReader& r, const std::string& key,
+                               const SceneFileAccess& access) {
+  namespace fs = std::filesystem;
+  const std::string name = r.RequiredString(key);
+  std::error_code ec;
+  const fs::path folder = fs::weakly_canonical(fs::absolute(r.File()).parent_path(), ec);
+  const fs::path file = fs::weakly_canonical(folder / name, ec);
+  if (!ec && Inside(file, folder)) return file;
+  for (const auto& allowed : access.allowed_folders) {
+    std::error_code allowed_ec;
+    const fs::path root = fs::weakly_canonical(fs::absolute(allowed), allowed_ec);
+    if (!ec && !allowed_ec && Inside(file, root)) return file;
+  }
+  r.Fail(key, "\"" + Excerpt(name) + "\" lies outside the scene's folder " + folder.string() +
+                  ": a scene's data files must lie in its folder or below it, or in a folder "
+                  "given on the command line with --allow-path DIR");
+}
+
+void LoadAccelerationCsv(JsonObjectReader& r, const SceneFileAccess& access,
                          BaseMotionEffect& base) {
+  const std::filesystem::path csv = DataFile(r, "csv", access);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(csv, ec))
-    FailAt(where, "effects.base_motion.csv", csv.string() + " is not a regular file");
+    r.Fail("csv", csv.string() + " is not a regular file");
   std::ifstream in(csv);
-  if (!in) FailAt(where, "effects.base_motion.csv", "cannot open " + csv.string());
+  if (!in) r.Fail("csv", "cannot open " + csv.string());
   ParseAccelerationCsv(in, csv.string(), base);
 }
 
@@ -351,214 +452,281 @@ void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
   }
 }
 
-}  // namespace
+// A name read at `key`, refused when `names` already holds it (names label CSV columns).
+std::string UniqueName(JsonObjectReader& r, const std::string& key, const char* what,
+                       std::unordered_set<std::string>& names) {
+  std::string name = r.RequiredName(key);
+  if (!names.insert(name).second)
+    r.Fail(key, std::string(what) + " \"" + name + "\" is defined twice; names must be unique");
+  return name;
+}
 
-Scene LoadScene(const std::string& path) { return ParseScene(ReadJsonFile(path), path); }
-
-Scene ParseScene(const nlohmann::json& json, const std::string& path) {
-  Scene scene;
-  JsonObjectReader r(json, path, "");
-  scene.name = r.RequiredString("name");
-  scene.description = r.String("description", "");
+void ParseHeader(JsonObjectReader& r, Scene& scene) {
+  scene.name = r.RequiredName("name");
+  scene.description = r.Text("description", "");
   const std::string planes = r.String("bending", "planar");
   if (planes != "planar" && planes != "both")
     r.Fail("bending", "\"" + planes + "\" must be \"planar\" or \"both\"");
   scene.planes = planes == "both" ? BendingPlanes::kBoth : BendingPlanes::kPlanar;
+}
 
+// beams[], then the bundle's beams and zones: every beam name once.
+void ParseBeams(JsonObjectReader& r, Scene& scene) {
+  std::unordered_set<std::string> names;
   EachItem(r, "beams", [&](JsonObjectReader& b) {
     SceneBeam beam = ParseBeamProperties(b);
-    beam.name = b.RequiredString("name");
-    for (const auto& other : scene.beams) {
-      if (other.name == beam.name) b.Fail("name", "beam \"" + beam.name + "\" is defined twice");
-    }
+    beam.name = UniqueName(b, "name", "beam", names);
     std::tie(beam.y_m, beam.z_m) = Vector2(b, "position_m", {0.0, 0.0}, false);
     scene.beams.push_back(beam);
   });
-  if (const Json* bundle = r.Get("bundle")) ExpandBundle(*bundle, path, scene);
+  const std::size_t listed = scene.beams.size();
+  if (const Json* bundle = r.Get("bundle")) ExpandBundle(*bundle, r.File(), scene);
+  for (std::size_t i = listed; i < scene.beams.size(); ++i) {
+    if (names.contains(scene.beams[i].name))
+      r.Fail("bundle", "generates a beam named \"" + scene.beams[i].name +
+                           "\", as one in \"beams\" is named; beam names must be unique");
+  }
   if (scene.beams.empty())
     r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
   if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
     r.Fail("beams", "more than " + std::to_string(kMaxBeams) + " beams");
+  if (const std::string excess = BasesExcess(scene.beams); !excess.empty())
+    r.Fail("beams", "the scene's distinct beams: " + excess);
+}
 
-  EachItem(r, "zones", [&](JsonObjectReader& z) {
-    SceneZone zone;
-    zone.name = z.RequiredString("name");
-    zone.beam_a = BeamIndex(scene, z, "beam");
-    const std::string against = z.String("against", "stop");
-    if (against != "stop") {
-      zone.beam_b = -1;
-      for (std::size_t i = 0; i < scene.beams.size(); ++i) {
-        if (scene.beams[i].name == against) zone.beam_b = static_cast<int>(i);
-      }
-      if (zone.beam_b < 0) z.Fail("against", "no beam named \"" + against + "\" (or use \"stop\")");
-      if (zone.beam_b == zone.beam_a) z.Fail("against", "a beam cannot hit itself");
+SceneZone ParseZone(JsonObjectReader& z, const Scene& scene,
+                    std::unordered_set<std::string>& names) {
+  SceneZone zone;
+  zone.name = UniqueName(z, "name", "zone", names);
+  zone.beam_a = BeamIndex(scene, z, "beam");
+  const std::string against = z.String("against", "stop");
+  if (against != "stop") {
+    zone.beam_b = -1;
+    for (std::size_t i = 0; i < scene.beams.size(); ++i) {
+      if (scene.beams[i].name == against) zone.beam_b = static_cast<int>(i);
     }
-    zone.height_m = Height(scene, z, zone.beam_a);
-    if (zone.beam_b >= 0 && zone.height_m > scene.beams[zone.beam_b].length_m) {
-      z.Fail("height_m", "lies beyond the end of \"" + against + "\"");
-    }
-    std::tie(zone.normal_y, zone.normal_z) = Vector2(z, "normal", {1.0, 0.0}, true);
-    const SceneBeam& a = scene.beams[zone.beam_a];
-    const SceneBeam* b = zone.beam_b >= 0 ? &scene.beams[zone.beam_b] : nullptr;
-    std::tie(zone.y_m, zone.z_m) = Vector2(
-        z, "position_m",
-        b ? std::pair{0.5 * (a.y_m + b->y_m), 0.5 * (a.z_m + b->z_m)} : std::pair{a.y_m, a.z_m},
-        false);
-    zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
-    zone.stiffness_n_per_m = Positive(z, "stiffness_n_per_m");
-    zone.damping_n_s_per_m = InRange(z, "damping_n_s_per_m", 0.0, 0.0, 1e9);
-    scene.zones.push_back(zone);
-  });
+    if (zone.beam_b < 0) z.Fail("against", "no beam named \"" + against + "\" (or use \"stop\")");
+    if (zone.beam_b == zone.beam_a) z.Fail("against", "a beam cannot hit itself");
+  }
+  zone.height_m = Height(scene, z, zone.beam_a);
+  if (zone.beam_b >= 0 && zone.height_m > scene.beams[zone.beam_b].length_m) {
+    z.Fail("height_m", "lies beyond the end of \"" + against + "\"");
+  }
+  std::tie(zone.normal_y, zone.normal_z) = Vector2(z, "normal", {1.0, 0.0}, true);
+  const SceneBeam& a = scene.beams[zone.beam_a];
+  const SceneBeam* b = zone.beam_b >= 0 ? &scene.beams[zone.beam_b] : nullptr;
+  std::tie(zone.y_m, zone.z_m) = Vector2(
+      z, "position_m",
+      b ? std::pair{0.5 * (a.y_m + b->y_m), 0.5 * (a.z_m + b->z_m)} : std::pair{a.y_m, a.z_m},
+      false);
+  zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
+  zone.stiffness_n_per_m = Positive(z, "stiffness_n_per_m");
+  zone.damping_n_s_per_m = InRange(z, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  return zone;
+}
+
+// zones[], after the bundle's: every zone name once.
+void ParseZones(JsonObjectReader& r, Scene& scene) {
+  std::unordered_set<std::string> names;
+  for (const SceneZone& z : scene.zones) names.insert(z.name);
+  EachItem(r, "zones",
+           [&](JsonObjectReader& z) { scene.zones.push_back(ParseZone(z, scene, names)); });
   if (scene.zones.size() > static_cast<std::size_t>(kMaxZones))
     r.Fail("zones", "more than " + std::to_string(kMaxZones) + " zones");
+}
 
-  if (const Json* effects = r.Get("effects")) {
-    JsonObjectReader e(*effects, path, "effects");
-    if (const Json* md = e.Get("modal_damping")) {
-      JsonObjectReader m(*md, path, e.PathOf("modal_damping"));
-      ModalDampingEffect d;
-      if (const Json* ratios = m.Get("ratios")) {
-        if (!ratios->is_array() || ratios->empty())
-          m.Fail("ratios", "expected a non-empty list of damping ratios");
-        for (std::size_t i = 0; i < ratios->size(); ++i) {
-          const double xi =
-              NumberAt((*ratios)[i], path, m.PathOf("ratios") + "[" + std::to_string(i) + "]");
-          if (xi < 0 || xi > 10)
-            FailAt(path, m.PathOf("ratios") + "[" + std::to_string(i) + "]",
-                   "ratio must lie in [0, 10]");
-          d.ratios.push_back(xi);
-        }
-      }
-      d.mass_proportional_per_s = InRange(m, "mass_proportional_per_s", 0.0, 0.0, 1e6);
-      m.Finish();
-      scene.modal_damping = d;
+ModalDampingEffect ParseModalDamping(JsonObjectReader& m) {
+  ModalDampingEffect d;
+  if (const Json* ratios = m.Get("ratios")) {
+    if (!ratios->is_array() || ratios->empty())
+      m.Fail("ratios", "expected a non-empty list of damping ratios");
+    for (std::size_t i = 0; i < ratios->size(); ++i) {
+      const std::string at = m.PathOf("ratios") + "[" + std::to_string(i) + "]";
+      const double xi = NumberAt((*ratios)[i], m.File(), at);
+      if (xi < 0 || xi > 10) FailAt(m.File(), at, "ratio must lie in [0, 10]");
+      d.ratios.push_back(xi);
     }
-    if (const Json* bm = e.Get("base_motion")) {
-      JsonObjectReader b(*bm, path, e.PathOf("base_motion"));
-      BaseMotionEffect base;
-      std::tie(base.dir_y, base.dir_z) = Vector2(b, "direction", {1.0, 0.0}, true);
-      if (const Json* hs = b.Get("half_sine")) {
-        JsonObjectReader h(*hs, path, b.PathOf("half_sine"));
-        base.amplitude_m_s2 = InRange(h, "amplitude_m_s2", 0.0, -1e7, 1e7);
-        base.duration_s = Positive(h, "duration_s", 100.0);
-        base.start_s = InRange(h, "start_s", 0.0, 0.0, 1e4);
-        h.Finish();
-      } else if (b.Has("csv")) {
-        const std::filesystem::path csv =
-            std::filesystem::path(path).parent_path() / b.String("csv", "");
-        LoadAccelerationCsv(csv, path, base);
-      } else {
-        b.Fail("", "give \"half_sine\": {...} or \"csv\": \"file.csv\"");
-      }
-      b.Finish();
-      scene.base_motion = base;
-    }
-    EachItem(e, "static_forces", [&](JsonObjectReader& f) {
-      StaticForceEffect force;
-      force.beam = BeamIndex(scene, f, "beam");
-      force.height_m = Height(scene, f, force.beam);
-      std::tie(force.dir_y, force.dir_z) = Vector2(f, "direction", {1.0, 0.0}, true);
-      force.force_n = InRange(f, "force_n", 0.0, -1e9, 1e9);
-      force.start_s = InRange(f, "start_s", 0.0, 0.0, 1e4);
-      force.ramp_s = InRange(f, "ramp_s", 0.0, 0.0, 1e4);
-      scene.static_forces.push_back(force);
-    });
-    EachItem(e, "initial_state", [&](JsonObjectReader& s) {
-      InitialStateEffect init;
-      init.beam = BeamIndex(scene, s, "beam");
-      init.direction = Direction(s, "direction");
-      init.mode = s.Integer("mode", 1);
-      if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
-      init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
-      init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
-      init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
-      if (init.static_force_n != 0.0) init.height_m = Height(scene, s, init.beam);
-      scene.initial_state.push_back(init);
-    });
-    e.Finish();
   }
+  d.mass_proportional_per_s = InRange(m, "mass_proportional_per_s", 0.0, 0.0, 1e6);
+  return d;
+}
 
-  const Json* solver = r.Get("solver");
-  if (solver == nullptr) r.Fail("solver", "required object is missing");
-  JsonObjectReader s(*solver, path, "solver");
+BaseMotionEffect ParseBaseMotion(JsonObjectReader& b, const SceneFileAccess& access) {
+  BaseMotionEffect base;
+  std::tie(base.dir_y, base.dir_z) = Vector2(b, "direction", {1.0, 0.0}, true);
+  if (const Json* hs = b.Get("half_sine")) {
+    JsonObjectReader h(*hs, b.File(), b.PathOf("half_sine"));
+    base.amplitude_m_s2 = InRange(h, "amplitude_m_s2", 0.0, -1e7, 1e7);
+    base.duration_s = Positive(h, "duration_s", 100.0);
+    base.start_s = InRange(h, "start_s", 0.0, 0.0, 1e4);
+    h.Finish();
+  } else if (b.Has("csv")) {
+    LoadAccelerationCsv(b, access, base);
+  } else {
+    b.Fail("", "give \"half_sine\": {...} or \"csv\": \"file.csv\"");
+  }
+  return base;
+}
+
+StaticForceEffect ParseStaticForce(JsonObjectReader& f, const Scene& scene) {
+  StaticForceEffect force;
+  force.beam = BeamIndex(scene, f, "beam");
+  force.height_m = Height(scene, f, force.beam);
+  std::tie(force.dir_y, force.dir_z) = Vector2(f, "direction", {1.0, 0.0}, true);
+  force.force_n = InRange(f, "force_n", 0.0, -1e9, 1e9);
+  force.start_s = InRange(f, "start_s", 0.0, 0.0, 1e4);
+  force.ramp_s = InRange(f, "ramp_s", 0.0, 0.0, 1e4);
+  return force;
+}
+
+InitialStateEffect ParseInitialState(JsonObjectReader& s, const Scene& scene) {
+  InitialStateEffect init;
+  init.beam = BeamIndex(scene, s, "beam");
+  init.direction = Direction(s, "direction");
+  init.mode = s.Integer("mode", 1);
+  if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
+  init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
+  init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
+  init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+  if (init.static_force_n != 0.0) init.height_m = Height(scene, s, init.beam);
+  return init;
+}
+
+void ParseEffects(const Json& effects, const std::string& path, const SceneFileAccess& access,
+                  Scene& scene) {
+  JsonObjectReader e(effects, path, "effects");
+  if (const Json* md = e.Get("modal_damping")) {
+    JsonObjectReader m(*md, path, e.PathOf("modal_damping"));
+    scene.modal_damping = ParseModalDamping(m);
+    m.Finish();
+  }
+  if (const Json* bm = e.Get("base_motion")) {
+    JsonObjectReader b(*bm, path, e.PathOf("base_motion"));
+    scene.base_motion = ParseBaseMotion(b, access);
+    b.Finish();
+  }
+  EachItem(e, "static_forces",
+           [&](JsonObjectReader& f) { scene.static_forces.push_back(ParseStaticForce(f, scene)); });
+  EachItem(e, "initial_state", [&](JsonObjectReader& s) {
+    scene.initial_state.push_back(ParseInitialState(s, scene));
+  });
+  e.Finish();
+}
+
+void ParseDt(JsonObjectReader& d, TimeStepRequest& dt) {
+  if (d.Has("seconds")) {
+    dt.dt_s = Positive(d, "seconds", 1.0);
+  } else {
+    const std::string rule = d.String("rule", "sharp");
+    const auto parsed = DtRuleFromString(rule);
+    if (!parsed) d.Fail("rule", "\"" + rule + "\" is not a rule: use \"paper\" or \"sharp\"");
+    dt.rule = *parsed;
+    dt.factor = InRange(d, "factor", dt.factor, 1e-6, 100.0);
+  }
+}
+
+void ParseSolver(JsonObjectReader& r, Scene& scene) {
+  JsonObjectReader s(RequiredObject(r, "solver"), r.File(), "solver");
+  SceneSolver& solver = scene.solver;
   if (s.Has("r_ftrunc") && s.Has("f_trunc_hz"))
     s.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
-  scene.solver.r_ftrunc = InRange(s, "r_ftrunc", scene.solver.r_ftrunc, 1.0, 1e5);
-  if (s.Has("f_trunc_hz")) scene.solver.f_trunc_hz = Positive(s, "f_trunc_hz", 1e7);
+  solver.r_ftrunc = InRange(s, "r_ftrunc", solver.r_ftrunc, 1.0, 1e5);
+  if (s.Has("f_trunc_hz")) solver.f_trunc_hz = Positive(s, "f_trunc_hz", 1e7);
   if (const Json* v = s.Get("static_correction")) {
     if (!v->is_boolean()) s.Fail("static_correction", "expected true or false, got " + Shown(*v));
-    scene.solver.static_correction = v->get<bool>();
+    solver.static_correction = v->get<bool>();
   }
-  scene.solver.end_time_s = Positive(s, "end_time_s", 1e4);
+  solver.end_time_s = Positive(s, "end_time_s", 1e4);
   if (const Json* dt = s.Get("dt")) {
-    JsonObjectReader d(*dt, path, s.PathOf("dt"));
-    if (d.Has("seconds")) {
-      scene.solver.dt.dt_s = Positive(d, "seconds", 1.0);
-    } else {
-      const std::string rule = d.String("rule", "sharp");
-      const auto parsed = DtRuleFromString(rule);
-      if (!parsed) d.Fail("rule", "\"" + rule + "\" is not a rule: use \"paper\" or \"sharp\"");
-      scene.solver.dt.rule = *parsed;
-      scene.solver.dt.factor = InRange(d, "factor", scene.solver.dt.factor, 1e-6, 100.0);
-    }
+    JsonObjectReader d(*dt, r.File(), s.PathOf("dt"));
+    ParseDt(d, solver.dt);
     d.Finish();
   }
   const auto max_steps = TransientOptions{}.max_steps;
-  if (scene.solver.dt.dt_s &&
-      scene.solver.end_time_s / *scene.solver.dt.dt_s > static_cast<double>(max_steps)) {
-    s.Fail("dt",
-           "end_time_s / dt = " + Shown(Json(scene.solver.end_time_s / *scene.solver.dt.dt_s)) +
-               " steps: at most " + std::to_string(max_steps) + " are allowed");
+  if (solver.dt.dt_s && solver.end_time_s / *solver.dt.dt_s > static_cast<double>(max_steps)) {
+    s.Fail("dt", "end_time_s / dt = " + Shown(Json(solver.end_time_s / *solver.dt.dt_s)) +
+                     " steps: at most " + std::to_string(max_steps) + " are allowed");
   }
   s.Finish();
+}
 
-  if (const Json* outputs = r.Get("outputs")) {
-    JsonObjectReader o(*outputs, path, "outputs");
-    EachItem(o, "displacements", [&](JsonObjectReader& d) {
-      ObservedPoint p;
-      p.name = d.RequiredString("name");
-      p.beam = BeamIndex(scene, d, "beam");
-      p.height_m = Height(scene, d, p.beam);
-      p.direction = Direction(d, "direction");
-      if (p.direction == 1 && scene.planes == BendingPlanes::kPlanar)
-        d.Fail("direction", "a planar scene bends in y only");
-      scene.outputs.displacements.push_back(p);
-    });
-    auto flag = [&](const char* key) {
-      const Json* v = o.Get(key);
-      if (v != nullptr && !v->is_boolean()) o.Fail(key, "expected true or false, got " + Shown(*v));
-      return v != nullptr && v->get<bool>();
-    };
-    if (const Json* v = o.Get("contact_forces"); v != nullptr && v->is_array()) {
-      // Zone names: only their histories.
-      scene.outputs.contact_forces = true;
-      for (std::size_t i = 0; i < v->size(); ++i) {
-        const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
-        if (!(*v)[i].is_string()) FailAt(path, at, "expected a zone name, got " + Shown((*v)[i]));
-        const std::string name = (*v)[i].get<std::string>();
-        const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
-                                       [&](const SceneZone& z) { return z.name == name; });
-        if (zone == scene.zones.end()) FailAt(path, at, "no zone named \"" + name + "\"");
-        scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
-      }
-    } else if (v != nullptr && !v->is_boolean()) {
-      o.Fail("contact_forces", "expected true, false or a list of zone names, got " + Shown(*v));
-    } else {
-      scene.outputs.contact_forces = flag("contact_forces");
-    }
-    scene.outputs.energies = flag("energies");
-    scene.outputs.max_contact_force = flag("max_contact_force");
-    if (const Json* shocks = o.Get("shocks")) {
-      JsonObjectReader sh(*shocks, path, o.PathOf("shocks"));
-      scene.outputs.shocks = true;
-      scene.outputs.rest_duration_s = Positive(sh, "rest_duration_s", 100.0);
-      sh.Finish();
-    }
-    scene.outputs.record_stride = o.Integer("record_stride", 1);
-    if (scene.outputs.record_stride < 1 || scene.outputs.record_stride > 1'000'000)
-      o.Fail("record_stride", "must lie in [1, 1e6]");
-    o.Finish();
+ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene,
+                                std::unordered_set<std::string>& names) {
+  ObservedPoint p;
+  p.name = UniqueName(d, "name", "output", names);
+  p.beam = BeamIndex(scene, d, "beam");
+  p.height_m = Height(scene, d, p.beam);
+  p.direction = Direction(d, "direction");
+  if (p.direction == 1 && scene.planes == BendingPlanes::kPlanar)
+    d.Fail("direction", "a planar scene bends in y only");
+  return p;
+}
+
+// outputs.contact_forces as a list of zone names: only their histories, each zone once.
+void ParseContactForceZones(const Json& list, JsonObjectReader& o, Scene& scene) {
+  scene.outputs.contact_forces = true;
+  std::unordered_set<std::string> listed;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
+    if (!list[i].is_string()) FailAt(o.File(), at, "expected a zone name, got " + Shown(list[i]));
+    const std::string name = list[i].get<std::string>();
+    const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
+                                   [&](const SceneZone& z) { return z.name == name; });
+    if (zone == scene.zones.end()) FailAt(o.File(), at, "no zone named \"" + name + "\"");
+    if (!listed.insert(name).second)
+      FailAt(o.File(), at, "zone \"" + name + "\" is listed twice; list each zone once");
+    scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
   }
+}
+
+void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
+  JsonObjectReader o(outputs, path, "outputs");
+  std::unordered_set<std::string> names;
+  EachItem(o, "displacements", [&](JsonObjectReader& d) {
+    scene.outputs.displacements.push_back(ParseDisplacement(d, scene, names));
+  });
+  auto flag = [&](const char* key) {
+    const Json* v = o.Get(key);
+    if (v != nullptr && !v->is_boolean()) o.Fail(key, "expected true or false, got " + Shown(*v));
+    return v != nullptr && v->get<bool>();
+  };
+  if (const Json* v = o.Get("contact_forces"); v != nullptr && v->is_array()) {
+    ParseContactForceZones(*v, o, scene);
+  } else if (v != nullptr && !v->is_boolean()) {
+    o.Fail("contact_forces", "expected true, false or a list of zone names, got " + Shown(*v));
+  } else {
+    scene.outputs.contact_forces = flag("contact_forces");
+  }
+  scene.outputs.energies = flag("energies");
+  scene.outputs.max_contact_force = flag("max_contact_force");
+  if (const Json* shocks = o.Get("shocks")) {
+    JsonObjectReader sh(*shocks, path, o.PathOf("shocks"));
+    scene.outputs.shocks = true;
+    scene.outputs.rest_duration_s = Positive(sh, "rest_duration_s", 100.0);
+    sh.Finish();
+  }
+  scene.outputs.record_stride = o.Integer("record_stride", 1);
+  if (scene.outputs.record_stride < 1 || scene.outputs.record_stride > 1'000'000)
+    o.Fail("record_stride", "must lie in [1, 1e6]");
+  o.Finish();
+}
+
+}  // namespace
+
+Scene LoadScene(const std::string& path, const SceneFileAccess& access) {
+  return ParseScene(ReadJsonFile(path), path, access);
+}
+
+Scene ParseScene(const nlohmann::json& json, const std::string& path,
+                 const SceneFileAccess& access) {
+  Scene scene;
+  JsonObjectReader r(json, path, "");
+  ParseHeader(r, scene);
+  ParseBeams(r, scene);
+  ParseZones(r, scene);
+  if (const Json* effects = r.Get("effects")) ParseEffects(*effects, path, access, scene);
+  ParseSolver(r, scene);
+  if (const Json* outputs = r.Get("outputs")) ParseOutputs(*outputs, path, scene);
   r.Finish();
   return scene;
 }

@@ -76,20 +76,17 @@ SceneParameters ParseParameters(const Json& value, const Json& scene, const std:
 
 }  // namespace
 
-SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
+SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
+                                   const SceneFileAccess& access) {
   SceneStudySpec spec;
   spec.file = file;
+  spec.access = access;
   JsonObjectReader r(json, file, "");
-  spec.name = r.RequiredString("name");
-  if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
-  spec.description = r.String("description", "");
-  if (r.String("kind", "scene_sweep") != "scene_sweep") {
-    r.Fail("kind", "this reader takes \"scene_sweep\" studies (formats/study_file.h dispatches)");
-  }
+  std::tie(spec.name, spec.description) = ReadStudyTitle(r, "scene_sweep");
   spec.scene_file =
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);
-  const Scene base = ParseScene(spec.scene, spec.scene_file);
+  const Scene base = ParseScene(spec.scene, spec.scene_file, access);
 
   const Json* sweep = r.Get("sweep");
   if (sweep == nullptr || !sweep->is_object() || sweep->empty()) {
@@ -176,7 +173,7 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file) {
 }
 
 Scene ScoredScene(const SceneStudySpec& spec, const SceneParameters& parameters) {
-  Scene scene = ParseScene(Applied(spec.scene, parameters), spec.scene_file);
+  Scene scene = ParseScene(Applied(spec.scene, parameters), spec.scene_file, spec.access);
   const auto point =
       std::find_if(scene.outputs.displacements.begin(), scene.outputs.displacements.end(),
                    [&](const ObservedPoint& o) { return o.name == spec.scoring.displacement; });

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "formats/scene_file.h"
 
 namespace shockmap {
 
@@ -24,8 +25,11 @@ struct SceneScoring {
 
 struct SceneStudySpec {
   std::string file, name, description;
-  std::string scene_file;  // Resolved against the study file's folder.
-  nlohmann::json scene;    // The scene file's JSON.
+  // Resolved against the study file's folder; it may lie anywhere, as the study's author chose
+  // (the scene's own data files are confined by `access`).
+  std::string scene_file;
+  nlohmann::json scene;  // The scene file's JSON.
+  SceneFileAccess access;
   SceneParameters reference;
   SceneScoring scoring;
   std::vector<SceneParameters> points;  // The sweep's full product.
@@ -34,8 +38,9 @@ struct SceneStudySpec {
 
 // Parses the study, reads its scene and checks every point's scene (so that a bad sweep value
 // is refused before anything runs). Throws InputError naming the file, the key path or the
-// point, the value and what is allowed.
-SceneStudySpec ParseSceneStudySpec(const nlohmann::json& json, const std::string& file);
+// point, the value and what is allowed. The scene's data files are read as `access` allows.
+SceneStudySpec ParseSceneStudySpec(const nlohmann::json& json, const std::string& file,
+                                   const SceneFileAccess& access = {});
 
 // The scene of a point, set up for scoring: the parameters applied, the end time at the window,
 // and only the scored displacement and zone recorded. Throws InputError.

@@ -27,15 +27,16 @@ StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file) 
   return StudyFileKindFromString(kind->get<std::string>(), file);
 }
 
-StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file) {
+StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file,
+                         const SceneFileAccess& access) {
   if (StudyKindOf(json, file) == StudyFileKind::kSceneSweep) {
-    return ParseSceneStudySpec(json, file);
+    return ParseSceneStudySpec(json, file, access);
   }
   return ParseStudySpec(json, file);
 }
 
-StudyFile ReadStudyFile(const std::string& path) {
-  return ParseStudyFile(ReadJsonFile(path), path);
+StudyFile ReadStudyFile(const std::string& path, const SceneFileAccess& access) {
+  return ParseStudyFile(ReadJsonFile(path), path, access);
 }
 
 }  // namespace shockmap

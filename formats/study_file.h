@@ -34,7 +34,9 @@ using StudyFile = std::variant<StudySpec, SceneStudySpec>;
 // Reads, dispatches and parses a study file; the whole file, and every point's scene, is
 // checked before anything runs. Throws InputError naming the file, the key path, the value and
 // what is allowed.
-StudyFile ReadStudyFile(const std::string& path);
-StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file);
+// `access`: the folders a scene's data files may come from beyond its own (formats/scene_file.h).
+StudyFile ReadStudyFile(const std::string& path, const SceneFileAccess& access = {});
+StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file,
+                         const SceneFileAccess& access = {});
 
 }  // namespace shockmap

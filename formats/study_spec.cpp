@@ -5,9 +5,21 @@
 #include <functional>
 #include <set>
 
+#include "core/modal_basis.h"
 #include "formats/json_reader.h"
 
 namespace shockmap {
+
+std::pair<std::string, std::string> ReadStudyTitle(JsonObjectReader& r, std::string_view kind) {
+  std::string name = r.RequiredName("name");
+  if (name.empty() || name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
+  std::string description = r.Text("description", "");
+  if (const std::string given = r.String("kind", std::string(kind)); given != kind) {
+    r.Fail("kind", "this reader takes \"" + std::string(kind) + "\" studies, got \"" + given +
+                       "\" (formats/study_file.h dispatches)");
+  }
+  return {std::move(name), std::move(description)};
+}
 
 double ReferencePolicy::RFref(double r_k) const {
   return std::max(r_fref_min, r_fref_per_sqrt_rk * std::sqrt(r_k));
@@ -139,7 +151,7 @@ const Range kRk{0.0, true, 1e12};
 const Range kRftrunc{1.0, false, 1e5};
 const Range kWindow{0.0, true, 100.0};
 const Range kDamping{0.0, false, 1e6};
-const Range kElements{0.0, false, 100000.0};
+const Range kElements{0.0, false, 1e9};  // Then the eigenproblem budget.
 
 AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) {
   const std::string& file = r.File();
@@ -162,7 +174,10 @@ AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) 
   a.mass_damping_per_s = optional("mass_damping_per_s", kDamping, 0.0);
   for (double e : optional("n_elements", kElements, 0.0)) {
     if (e != std::floor(e)) r.Fail("n_elements", "expected integers, got " + Shown(Json(e)));
-    a.n_elements.push_back(static_cast<int>(e));
+    const int elements = static_cast<int>(e);
+    if (const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1); !excess.empty())
+      r.Fail("n_elements", "value " + std::to_string(elements) + ": " + excess);
+    a.n_elements.push_back(elements);
   }
   const Json* dt = r.Get("dt");
   a.dt = dt == nullptr ? std::vector<TimeStepRequest>{TimeStepRequest{}}
@@ -288,12 +303,7 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   StudySpec spec;
   spec.file = file;
   JsonObjectReader r(json, file, "");
-  spec.name = r.RequiredString("name");
-  if (spec.name.empty() || spec.name.size() > 200) r.Fail("name", "must be 1 to 200 characters");
-  spec.description = r.String("description", "");
-  if (r.String("kind", "canonical") != "canonical") {
-    r.Fail("kind", "this reader takes \"canonical\" studies (formats/study_file.h dispatches)");
-  }
+  std::tie(spec.name, spec.description) = ReadStudyTitle(r, "canonical");
   if (const Json* p = r.Get("problem")) ParseProblem(*p, file, spec.problem);
   if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.scoring);
   const Json* grids = r.Get("grids");

@@ -9,6 +9,7 @@
 
 #include "compare/comparison.h"
 #include "core/cantilever_impact.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 
@@ -56,6 +57,10 @@ struct StudySpec {
   std::vector<StudyPoint> points;  // Union of the grids and the listed points, without repeats.
   std::string spec_json;           // The file's JSON, compact, as stored with the study.
 };
+
+// The name and description every study file begins with (a name of 1 to 200 characters
+// without control characters), and its "kind", which when given must be `kind`.
+std::pair<std::string, std::string> ReadStudyTitle(JsonObjectReader& r, std::string_view kind);
 
 // Parses and validates a study file. Throws InputError naming the file, the key path, the value
 // and what is allowed: unknown keys, wrong types, empty axes, out-of-range values.

@@ -15,6 +15,7 @@
 
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
+#include "views/gnuplot.h"
 
 namespace shockmap {
 namespace {
@@ -90,8 +91,19 @@ const std::string kSimulateSummary = "shockmap simulate:";
 
 class GnuplotScripts : public TempDirTest {};
 
+// Strings reach a script only as single-quoted gnuplot strings: a quote doubled, a line break
+// or other control character (which would end the command) turned into a space.
+TEST(GnuplotQuoting, QuotesAreDoubledAndLineBreaksCannotEndTheCommand) {
+  EXPECT_EQ(GnuplotQuoted("plain"), "'plain'");
+  EXPECT_EQ(GnuplotQuoted("a'; system('x'); '"), "'a''; system(''x''); '''");
+  EXPECT_EQ(GnuplotQuoted("one\ntwo\r\tthree"), "'one two  three'");
+  EXPECT_EQ(GnuplotQuoted("\"double\" \\n"), "'\"double\" \\n'");
+}
+
+// Names may not hold line breaks (refused when read, security_input_test); quotes and gnuplot's
+// command separators are what remains to be escaped.
 TEST_F(GnuplotScripts, SceneAndZoneNamesCannotRunCommands) {
-  WriteScene(Path("scene.json"), kInjection + "\nsecond line", kSingleInjection);
+  WriteScene(Path("scene.json"), kInjection + " second part", kSingleInjection);
   const Outcome o =
       Shell("cd " + Sh(dir_.string()) + " && " + kBin + " simulate scene.json --out out");
   ASSERT_EQ(o.exit_code, 0) << o.output;
@@ -100,7 +112,7 @@ TEST_F(GnuplotScripts, SceneAndZoneNamesCannotRunCommands) {
 }
 
 TEST_F(GnuplotScripts, StudyNamesCannotRunCommandsInMapsAndFig4) {
-  RunTinyStudy(Path("study.json"), Path("s.db"), kInjection + "\n" + kSingleInjection);
+  RunTinyStudy(Path("study.json"), Path("s.db"), kInjection + " " + kSingleInjection);
   const std::string cd = "cd " + Sh(dir_.string()) + " && " + kBin;
   const Outcome map = Shell(cd + " map --db s.db --out maps/m.png");
   ASSERT_EQ(map.exit_code, 0) << map.output;

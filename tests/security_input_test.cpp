@@ -1,0 +1,267 @@
+// Security and faults (issue 12): files a scene names stay in its folder, JSON nesting and
+// repeated keys are refused while parsing, names hold no control characters and are unique,
+// meshes beyond the eigenproblem budget are refused before anything is allocated, and messages
+// quote at most a short escaped excerpt of any file. Each class: exit code 2, a message naming
+// the file and key path (or flag), and nothing written.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/input_error.h"
+#include "formats/json_reader.h"
+#include "formats/scene_file.h"
+#include "formats/scene_study_spec.h"
+#include "tests/run_command.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+using testing::Outcome;
+using testing::WriteText;
+
+const std::string kSource = SHOCKMAP_SOURCE_DIR;
+
+// The binary run as RunShockmap does, but stopped after `seconds` (exit code 124), so that a
+// refusal that does not come is a failure rather than a hung test.
+Outcome RunWithin(int seconds, const std::string& args) {
+  const std::string command =
+      "timeout " + std::to_string(seconds) + " " + SHOCKMAP_BIN + " " + args + " 2>&1";
+  Outcome o;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return o;
+  std::array<char, 4096> buffer{};
+  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) o.output += buffer.data();
+  const int status = pclose(pipe);
+  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+Json CanonicalScene() {
+  std::ifstream in(kSource + "/scenes/cantilever_spring.json");
+  return Json::parse(in);
+}
+
+class Security : public testing::TempDirTest {
+ protected:
+  // Runs `args` (DIR: the test's directory) and checks the refusal: exit 2, every part of
+  // `named` in the message, and `secret` nowhere in it.
+  std::string Refused(const std::string& args, const std::vector<std::string>& named,
+                      const std::string& secret = "") {
+    std::string a = args;
+    for (auto at = a.find("DIR"); at != std::string::npos; at = a.find("DIR"))
+      a.replace(at, 3, dir_.string());
+    const Outcome r = RunWithin(30, a);
+    EXPECT_EQ(r.exit_code, 2) << "shockmap " << a << "\n" << r.output;
+    for (const auto& part : named)
+      EXPECT_NE(r.output.find(part), std::string::npos) << part << "\n" << r.output;
+    if (!secret.empty()) {
+      EXPECT_EQ(r.output.find(secret), std::string::npos) << r.output;
+    }
+    std::printf("[security] %s\n", r.output.substr(0, r.output.find('\n')).c_str());
+    return r.output;
+  }
+
+  // The canonical scene with one change, written to `name` in the test's directory.
+  std::string Scene(const std::string& name, const std::function<void(Json&)>& change) {
+    Json scene = CanonicalScene();
+    change(scene);
+    std::filesystem::create_directories((dir_ / name).parent_path());
+    WriteText(Path(name), scene.dump(2));
+    return Path(name);
+  }
+};
+
+// 1. Reading arbitrary files.
+
+TEST_F(Security, DataFilesOutsideTheScenesFolderAreRefused) {
+  const std::string secret = "TOPSECRET_first_line_of_a_private_file_0123456789";
+  WriteText(Path("private.csv"), secret + "\n0,1\n1,2\n");
+  std::filesystem::create_directories(dir_ / "scenes");
+  std::filesystem::create_symlink(dir_ / "private.csv", dir_ / "scenes" / "link.csv");
+  for (const std::string& csv : {std::string("../private.csv"), Path("private.csv"),
+                                 std::string("/proc/self/environ"), std::string("link.csv")}) {
+    const std::string scene = Scene("scenes/s.json", [&](Json& s) {
+      s["effects"]["base_motion"] = {{"csv", csv}};
+    });
+    Refused("simulate " + scene, {"s.json", "effects.base_motion.csv", "--allow-path"}, secret);
+  }
+  // Given explicitly on the command line, the folder is allowed: the file is read, and its bad
+  // header is quoted as a short excerpt only.
+  const std::string scene = Scene("scenes/s.json", [&](Json& s) {
+    s["effects"]["base_motion"] = {{"csv", "../private.csv"}};
+  });
+  Refused("simulate " + scene + " --allow-path DIR", {"line 1", "TOPSECRET_first_line"}, secret);
+}
+
+TEST_F(Security, CsvExcerptsAreShortAndEscaped) {
+  const std::string header = "t_s\x01" + std::string(100, 'A');
+  WriteText(Path("shock.csv"), header + "\n0,1\n1,2\n");
+  const std::string scene = Scene("s.json", [](Json& s) {
+    s["effects"]["base_motion"] = {{"csv", "shock.csv"}};
+  });
+  const std::string message = Refused("simulate " + scene, {"line 1", "t_s\\x01AAA"});
+  EXPECT_EQ(message.find(std::string(40, 'A')), std::string::npos) << message;
+  EXPECT_EQ(message.find('\x01'), std::string::npos);
+}
+
+TEST_F(Security, JsonSyntaxErrorsQuoteAShortExcerpt) {
+  const std::string secret = "PASSWORD=" + std::string(100, 'S');
+  WriteText(Path("secret.txt"), secret + "\n");
+  WriteText(Path("study.json"), R"({"name": "s", "scene": "secret.txt", "sweep": {}})");
+  Refused("study run DIR/study.json --db DIR/s.db", {"secret.txt", "not valid JSON", "byte"},
+          std::string(40, 'S'));
+  WriteText(Path("bad.json"), "{\"name\": \"" + std::string(100, 'S') + "\x01\"}");
+  Refused("simulate DIR/bad.json", {"bad.json", "not valid JSON", "byte"}, std::string(60, 'S'));
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+TEST_F(Security, AStudysScenePathLeavesTheStudysFolder) {
+  // The shipped study names "../scenes/bundle_row.json": a study's author picks its scene.
+  const std::string study = kSource + "/studies/bundle_row_truncation.json";
+  EXPECT_NO_THROW(ParseSceneStudySpec(ReadJsonFile(study), study));
+}
+
+// 2. Nesting depth.
+
+TEST_F(Security, DeepNestingIsRefusedWithItsPath) {
+  // Well formed: the parser accepts any depth, the code walking the result would not.
+  const std::string deep = std::string(70000, '[') + std::string(70000, ']');
+  WriteText(Path("deep.json"), deep);
+  WriteText(Path("deep_study.json"),
+            R"({"name": "d", "grids": [{"rk": )" + deep + R"(, "rftrunc": [300]}]})");
+  WriteText(Path("deep_scene.json"), R"({"name": "d", "solver": {"dt": )" + deep + "}}");
+  Refused("study run DIR/deep.json --db DIR/s.db", {"deep.json", "[0][0]", "at most 64"});
+  Refused("study run DIR/deep_study.json --db DIR/s.db", {"deep_study.json", "grids[0].rk[0]"});
+  Refused("simulate DIR/deep.json", {"deep.json", "at most 64"});
+  Refused("simulate DIR/deep_scene.json", {"deep_scene.json", "solver.dt[0][0]", "at most 64"});
+  Refused("criteria check --baseline DIR/deep.json --db DIR/s.db", {"deep.json", "at most 64"});
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+TEST_F(Security, NestingUpToTheLimitIsParsed) {
+  const int depth = kMaxJsonDepth;
+  EXPECT_NO_THROW(ParseJsonText(std::string(depth, '[') + std::string(depth, ']'), "ok.json"));
+  EXPECT_THROW(ParseJsonText(std::string(depth + 1, '[') + std::string(depth + 1, ']'), "no.json"),
+               InputError);
+}
+
+// 3. Repeated keys and names.
+
+TEST_F(Security, RepeatedKeysAreRefusedWithTheirPath) {
+  std::string scene = CanonicalScene().dump(2);
+  scene.replace(scene.find("\"r_ftrunc\""), 0, "\"r_ftrunc\": 10, ");
+  WriteText(Path("dup.json"), scene);
+  Refused("simulate DIR/dup.json", {"dup.json", "solver.r_ftrunc", "twice"});
+  WriteText(Path("dup_study.json"),
+            R"({"name": "a", "grids": [{"rk": 1, "rk": 2, "rftrunc": [300]}]})");
+  Refused("study run DIR/dup_study.json --db DIR/s.db", {"dup_study.json", "grids[0].rk", "twice"});
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+TEST_F(Security, RepeatedNamesAreRefusedWithTheirPath) {
+  const Json zone = CanonicalScene()["zones"][0];
+  Refused("simulate " + Scene("zones.json", [&](Json& s) { s["zones"].push_back(zone); }),
+          {"zones[1].name", "tip_spring", "twice"});
+  Refused("simulate " +
+              Scene("outputs.json",
+                    [](Json& s) {
+                      s["outputs"]["displacements"].push_back(s["outputs"]["displacements"][0]);
+                    }),
+          {"outputs.displacements[1].name", "tip", "twice"});
+  Refused("simulate " + Scene("listed.json",
+                              [](Json& s) {
+                                s["outputs"]["contact_forces"] = {"tip_spring", "tip_spring"};
+                              }),
+          {"outputs.contact_forces[1]", "twice"});
+  Json bundle;
+  std::ifstream(kSource + "/scenes/bundle_row.json") >> bundle;
+  Json heights = bundle;
+  heights["bundle"]["wire"]["heights_m"] = {0.5, 0.5};
+  WriteText(Path("heights.json"), heights.dump());
+  Refused("simulate DIR/heights.json", {"bundle.wire.heights_m", "twice"});
+  Json wrapper = bundle;
+  wrapper["beams"] = {CanonicalScene()["beams"][0]};
+  wrapper["beams"][0]["name"] = "wrapper";
+  WriteText(Path("wrapper.json"), wrapper.dump());
+  Refused("simulate DIR/wrapper.json", {"bundle", "\"wrapper\"", "unique"});
+}
+
+TEST_F(Security, ControlCharactersInNamesAreRefused) {
+  WriteText(Path("nul_study.json"),
+            R"({"name": "quick\u0000evil", "grids": [{"rk": 1, "rftrunc": [300]}]})");
+  Refused("study run DIR/nul_study.json --db DIR/s.db", {"nul_study.json", "name", "\\x00"});
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+  const std::vector<std::pair<std::function<void(Json&)>, std::string>> cases = {
+      {[](Json& s) { s["name"] = std::string("a\x07") + "b"; }, "name"},
+      {[](Json& s) { s["beams"][0]["name"] = "be\nam"; }, "beams[0].name"},
+      {[](Json& s) { s["zones"][0]["name"] = std::string("tip\0x", 5); }, "zones[0].name"},
+      {[](Json& s) { s["outputs"]["displacements"][0]["name"] = "t\x7fip"; },
+       "outputs.displacements[0].name"},
+      {[](Json& s) { s["description"] = std::string("a\0b", 3); }, "description"},
+  };
+  for (const auto& [change, path] : cases) {
+    const std::string scene = Scene("names.json", change);
+    Refused("simulate " + scene, {"names.json", path, "control character"});
+  }
+  // Descriptions may hold tabs and line breaks.
+  const std::string scene = Scene("text.json", [](Json& s) { s["description"] = "a\n\tb\r\n"; });
+  EXPECT_NO_THROW(LoadScene(scene));
+}
+
+// 4. Meshes beyond the eigenproblem budget.
+
+TEST_F(Security, MeshesBeyondTheBudgetAreRefusedAtOnce) {
+  for (const char* elements : {"3000", "10000", "1000000000"}) {
+    Refused(std::string("compare --rk 3000 --rftrunc 300 --elements ") + elements,
+            {"--elements", elements, "GB", "flops", "at most"});
+  }
+  Refused("compare --rk 3000 --rftrunc 1e8", {"--rftrunc", "elements", "flops", "at most"});
+  Refused("simulate " + Scene("mesh.json", [](Json& s) { s["beams"][0]["elements"] = 10000; }),
+          {"beams[0].elements", "10000", "flops", "at most"});
+  Refused("simulate " + Scene("many.json",
+                              [](Json& s) {
+                                for (int i = 1; i < 4; ++i) {
+                                  Json b = s["beams"][0];
+                                  b["name"] = "b" + std::to_string(i);
+                                  b["length_m"] = 1.0 + 0.1 * i;
+                                  b["elements"] = 1000;
+                                  s["beams"].push_back(b);
+                                }
+                              }),
+          {"many.json", "beams", "distinct beams", "flops"});
+  WriteText(Path("mesh_study.json"),
+            R"({"name": "m", "grids": [{"rk": 1, "rftrunc": [300], "n_elements": [55, 3000]}]})");
+  Refused("study run DIR/mesh_study.json --db DIR/s.db",
+          {"mesh_study.json", "grids[0].n_elements", "3000", "flops"});
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+// 5. The fuzzers' seeds reach the limits through the parse path the fuzz targets use.
+
+TEST_F(Security, FuzzSeedsHitTheLimits) {
+  for (const char* seed : {"scene/deep_nesting.json", "scene/duplicate_key.json",
+                           "study/deep_nesting.json", "study/duplicate_key.json"}) {
+    const std::string path = kSource + "/fuzz/corpus/" + seed;
+    ASSERT_TRUE(std::filesystem::is_regular_file(path)) << path;
+    try {
+      ParseJsonText(testing::ReadBytes(path), path);
+      ADD_FAILURE() << seed << " was parsed";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_TRUE(m.find("at most 64") != std::string::npos || m.find("twice") != std::string::npos)
+          << m;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shockmap
