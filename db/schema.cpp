@@ -214,10 +214,24 @@ int CheckedVersion(Connection& db) {
   return version;
 }
 
+// The checks' several reads in one read transaction, so that they see one state of the file
+// even while another process migrates it.
+int CheckedVersionAtOnce(Connection& db) {
+  db.Execute("BEGIN");
+  try {
+    const int version = CheckedVersion(db);
+    db.Execute("COMMIT");
+    return version;
+  } catch (...) {
+    db.Execute("ROLLBACK");
+    throw;
+  }
+}
+
 }  // namespace
 
 void CheckSchema(Connection& db) {
-  if (CheckedVersion(db) != kSchemaVersion) {
+  if (CheckedVersionAtOnce(db) != kSchemaVersion) {
     throw DbError(db.Path() +
                   ": schema is older than this build's; `shockmap study run STUDY_FILE --db " +
                   db.Path() + "` migrates it (it opens the database for writing)");
@@ -225,7 +239,7 @@ void CheckSchema(Connection& db) {
 }
 
 void MigrateToCurrent(Connection& db) {
-  if (CheckedVersion(db) == kSchemaVersion) return;
+  if (CheckedVersionAtOnce(db) == kSchemaVersion) return;
   // All pending migrations in one IMMEDIATE transaction: a process killed midway leaves the
   // file as it was, never at an intermediate version; two processes migrating at once are
   // serialized, and the second reads the version again under the lock and finds nothing to do.

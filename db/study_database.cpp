@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -27,10 +28,34 @@ std::string UtcNow() {
   return out;
 }
 
+namespace {
+
+// WAL is kept in the file, so it is set once, on a new database. Switching needs the file to
+// itself, and SQLite does not wait for that (a busy handler could deadlock there): while
+// another process opens the same new file, try again for up to the busy timeout.
+void UseWriteAheadLog(Connection& db) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  for (;;) {
+    {
+      Statement mode = db.Prepare("PRAGMA journal_mode");
+      if (mode.Step() && mode.GetText(0) == "wal") return;
+    }  // Finalized: a live statement would hold a read transaction.
+    try {
+      db.Execute("PRAGMA journal_mode = WAL");
+      return;
+    } catch (const DbError&) {
+      if (std::chrono::steady_clock::now() > deadline) throw;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
+}  // namespace
+
 StudyDatabase::StudyDatabase(const std::string& path)
     : db_(path, Connection::Mode::kReadWriteCreate) {
   MigrateToCurrent(db_);
-  db_.Execute("PRAGMA journal_mode = WAL");
+  UseWriteAheadLog(db_);
   // With WAL, NORMAL loses no committed transaction on a process kill, only on power loss.
   db_.Execute("PRAGMA synchronous = NORMAL");
   db_.Execute("PRAGMA foreign_keys = ON");
