@@ -275,18 +275,21 @@ std::vector<TimeLoad> TimeLoads(const Scene& scene, const Layout& layout) {
   return loads;
 }
 
-// The coordinate of `mode` (1-based) that gives its largest deflection node the value tip_m.
+// The coordinate of `mode` (1-based) that gives its largest deflection node the value tip_m, as
+// a displacement output at that node's height reads it.
 double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
-  Eigen::Index at = 0;
   const Eigen::VectorXd shape = m.basis.shapes.col(mode - 1);
+  int node = 0;
   double largest = 0.0;
   for (int i = 0; i < m.fe.Size(); ++i) {
     if (m.fe.global_dof[i] % 2 == 0 && std::abs(shape[i]) > largest) {
       largest = std::abs(shape[i]);
-      at = i;
+      node = m.fe.global_dof[i] / 2;
     }
   }
-  return tip_m / shape[at];
+  const double length = m.fe.beam.length_m;
+  const double height = node == m.fe.n_elements ? length : length * node / m.fe.n_elements;
+  return tip_m / m.At(height)[mode - 1];
 }
 
 void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model) {
