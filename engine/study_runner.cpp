@@ -212,7 +212,7 @@ StudyRunSummary RunStudy(const StudySpec& spec, const StudyRunOptions& options) 
         try {
           const ComparisonResult r =
               ScoreAgainstReference(ProblemOf(spec, point), OptionsOf(spec, point), ref.run);
-          out.status = r.status;
+          out.status = ToString(r.status);
           out.message = r.message;
           out.score = ToScoreRow(r, ref.id);
         } catch (const std::exception& e) {

@@ -835,6 +835,17 @@ TEST(SchemeAgreement, ExplicitModalMatchesImplicitFullOnTheSameElements) {
 // ---------------------------------------------------------------------------------------------
 // 9. Options.
 
+// The statuses are stored as text (database, JSON): every one reads back as itself.
+TEST(RunStatus, EveryStatusRoundTripsThroughItsText) {
+  for (RunStatus s : kAllRunStatuses) {
+    EXPECT_EQ(RunStatusFromString(ToString(s)), s) << ToString(s);
+  }
+  EXPECT_EQ(ToString(RunStatus::kReferenceUnconverged), "reference_unconverged");
+  EXPECT_FALSE(RunStatusFromString("unknown").has_value());
+  EXPECT_FALSE(RunStatusFromString("OK").has_value());
+  EXPECT_FALSE(RunStatusFromString("").has_value());
+}
+
 TEST(TransientOptions, AcceptsAReasonableRun) {
   TransientOptions options;
   options.end_time_s = 0.3;
