@@ -7,7 +7,6 @@
 #include "core/beam_fe.h"
 #include "core/full_fe_contact_system.h"
 #include "core/modal_basis.h"
-#include "core/modal_contact_system.h"
 #include "core/scene_model.h"
 #include "core/validity.h"
 
