@@ -25,6 +25,11 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz);
 // The first `n` modes regardless of frequency (all of them when n exceeds the model size).
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);
 
+// The same selections from a basis already solved for (one eigensolution serving several):
+// the modes with f <= f_trunc_hz, and the first n (all of them when n exceeds its size).
+ModalBasis ModesBelow(ModalBasis basis, double f_trunc_hz);
+ModalBasis FirstModes(ModalBasis basis, int n);
+
 // Static correction (code_aster's ENRI_STAT): adds to `basis` the static deflections K^-1 r
 // under a unit force along each of `force_rows` (e.g. DeflectionRow at the contact heights),
 // then diagonalizes again, so that the result is still mass-orthonormal and stiffness-orthogonal

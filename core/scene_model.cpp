@@ -68,12 +68,12 @@ void AddEndSpring(FeBeamModel& fe, int node, double k) {
 
 // The lowest frequency of a deforming mode: a beam free at both ends also has two rigid-body
 // modes at zero frequency (translation, rotation), which are kept but do not set the scale.
-double FirstElasticFrequencyHz(const FeBeamModel& fe) {
-  const ModalBasis lowest = ComputeLowestModes(fe, 3);
-  const double scale = lowest.omega_rad_s[lowest.NumModes() - 1];
-  for (int i = 0; i < lowest.NumModes(); ++i) {
-    if (lowest.omega_rad_s[i] > 1e-6 * scale)
-      return lowest.omega_rad_s[i] / (2.0 * std::numbers::pi);
+// `omega_rad_s`: every mode of the beam, ascending; the lowest three decide.
+double FirstElasticFrequencyHz(const Eigen::VectorXd& omega_rad_s) {
+  const int lowest = std::min<int>(3, static_cast<int>(omega_rad_s.size()));
+  const double scale = omega_rad_s[lowest - 1];
+  for (int i = 0; i < lowest; ++i) {
+    if (omega_rad_s[i] > 1e-6 * scale) return omega_rad_s[i] / (2.0 * std::numbers::pi);
   }
   return scale / (2.0 * std::numbers::pi);
 }
@@ -85,10 +85,12 @@ BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
   m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
   AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
   AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
-  const double f1 = FirstElasticFrequencyHz(m.fe);
+  // One eigensolution gives the first elastic frequency and the truncated basis.
+  const ModalBasis all = ComputeLowestModes(m.fe, m.fe.Size());
+  const double f1 = FirstElasticFrequencyHz(all.omega_rad_s);
   m.f_trunc_hz = truncation.Hz(f1);
-  m.basis = ComputeModalBasis(m.fe, m.f_trunc_hz);
-  if (m.basis.NumModes() == 0) m.basis = ComputeLowestModes(m.fe, 1);
+  m.basis = ModesBelow(all, m.f_trunc_hz);
+  if (m.basis.NumModes() == 0) m.basis = FirstModes(all, 1);
   if (!static_heights.empty()) {
     std::vector<Eigen::VectorXd> rows;
     for (double h : static_heights) rows.push_back(m.fe.DeflectionRow(h));
