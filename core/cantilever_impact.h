@@ -37,7 +37,7 @@ int DefaultElementCount(double r_ftrunc);
 
 // The canonical problem as a scene (paper §2.1 in the terms of §3): one clamped-free beam of
 // DefaultElementCount(r_ftrunc) elements (or n_elements), truncated at r_ftrunc times the
-// analytic f1 (absolute, so the kept modes are those of BuildImpactModel), a stop at the tip
+// analytic f1 (absolute, as the implicit model's bounds are computed), a stop at the tip
 // with the problem's gap, stiffness and damping, the first mode scaled to initial_tip_m, and
 // C = alpha M as modal damping (2 xi_i Omega_i = alpha for every mode). Outputs: the tip
 // displacement, the contact force, the energies. Time step and end time are left to the
@@ -53,7 +53,9 @@ struct ImpactModel {
   int n_modes = 0;          // Modes kept below f_trunc (the explicit model's size).
   int n_dofs = 0;           // Size of the integrated system.
   int n_elements = 0;
-  StabilityBounds bounds;  // Of the modal model truncated at f_trunc, whatever the scheme.
+  // Of the modal model truncated at f_trunc, whatever the scheme; dt_paper from the higher of
+  // f_trunc and the mode kept when none lies below it (r_ftrunc = 1), as for any scene.
+  StabilityBounds bounds;
 };
 
 // The explicit modal scheme integrates the scene model of CanonicalScene (the paper's eq. 7);
