@@ -48,7 +48,7 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
   const auto& ref = *r.reference;
   fmt::print("shockmap compare: R_k = {:g}, R_ftrunc = {:g}, {}, window [0, {:g}] s\n",
              f.problem.r_k, f.options.r_ftrunc, ToString(f.options.scheme), f.options.window_s);
-  fmt::print("  status            {}{}\n", r.status,
+  fmt::print("  status            {}{}\n", ToString(r.status),
              r.message.empty() ? "" : " (" + r.message + ")");
   fmt::print("  Err               {}  (eq. 8, PSD of the tip displacement)\n",
              Scored(r.err, "{:.4f}"));

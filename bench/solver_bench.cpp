@@ -1,5 +1,6 @@
 // Cost of one run of each solver on the paper's problem at R_k = 3000 over the default window.
-//   ExplicitModalRun/R_ftrunc/dt_tenths  the paper's method, dt = (dt_tenths / 10) * sharp bound;
+//   ExplicitModalRun/R_ftrunc/dt_tenths  the paper's method (the scene model of CanonicalScene),
+//                                        dt = (dt_tenths / 10) * sharp bound;
 //                                        s_per_unknown_step = time / (modes * steps)
 //   ImplicitFullRun/dt_tenths            the full FE model (R_ftrunc = 300 mesh) with average
 //                                        acceleration, dt = (dt_tenths / 10) * sharp bound

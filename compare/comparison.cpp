@@ -48,14 +48,14 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   std::string error;
   result.reference = std::move(reference);
   if (!run.IsValid(&error)) {
-    result.status = ToString(RunStatus::kFailed);
+    result.status = RunStatus::kFailed;
     result.message = error;
     return result;
   }
   result.histories =
       RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run);
   result.numerical = result.histories.summary;
-  result.status = ToString(result.numerical.status);
+  result.status = result.numerical.status;
   result.message = result.numerical.message;
   if (result.numerical.status != RunStatus::kOk) return result;
 
@@ -63,7 +63,7 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   result.shocks_numerical =
       SegmentShocks(result.histories.contact_force_n[0], shocks, options.window_s);
   if (result.reference->convergence.difference > options.reference_tolerance) {
-    result.status = "reference_unconverged";
+    result.status = RunStatus::kReferenceUnconverged;
     result.message = "the reference truncations differ by more than reference_tolerance";
     return result;
   }

@@ -40,11 +40,11 @@ struct ComparisonOptions {
 };
 
 struct ComparisonResult {
-  // "ok", "diverged", "failed" (the numerical run), or "reference_unconverged".
-  std::string status;
+  // The numerical run's status, or kReferenceUnconverged when it ran but nothing is scored.
+  RunStatus status = RunStatus::kOk;
   std::string message;
-  std::optional<double> err;  // Set only when status is "ok".
-  std::optional<double> srf;  // Set when status is "ok" and either side has a shock.
+  std::optional<double> err;  // Set only when status is kOk.
+  std::optional<double> srf;  // Set when status is kOk and either side has a shock.
   int n_modes = 0;
   int n_elements = 0;
   int n_dofs = 0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/beam_properties.h"
+#include "core/scene.h"
 #include "core/scheme.h"
 #include "core/second_order_system.h"
 #include "core/stability_bounds.h"
@@ -34,6 +35,16 @@ struct CantileverImpact {
 // analytic one (at least 20 elements).
 int DefaultElementCount(double r_ftrunc);
 
+// The canonical problem as a scene (paper §2.1 in the terms of §3): one clamped-free beam of
+// DefaultElementCount(r_ftrunc) elements (or n_elements), truncated at r_ftrunc times the
+// analytic f1 (absolute, as the implicit model's bounds are computed), a stop at the tip
+// with the problem's gap, stiffness and damping, the first mode scaled to initial_tip_m, and
+// C = alpha M as modal damping (2 xi_i Omega_i = alpha for every mode). Outputs: the tip
+// displacement, the contact force, the energies. Time step and end time are left to the
+// caller. The scene declares no load, so its model does not refer back to it.
+// Preconditions: problem.IsValid(), r_ftrunc >= 1, n_elements >= 0.
+Scene CanonicalScene(const CantileverImpact& problem, double r_ftrunc, int n_elements = 0);
+
 // A discretized problem ready to integrate.
 struct ImpactModel {
   std::unique_ptr<SecondOrderSystem> system;
@@ -42,9 +53,13 @@ struct ImpactModel {
   int n_modes = 0;          // Modes kept below f_trunc (the explicit model's size).
   int n_dofs = 0;           // Size of the integrated system.
   int n_elements = 0;
-  StabilityBounds bounds;  // Of the modal model truncated at f_trunc, whatever the scheme.
+  // Of the modal model truncated at f_trunc, whatever the scheme; dt_paper from the higher of
+  // f_trunc and the mode kept when none lies below it (r_ftrunc = 1), as for any scene.
+  StabilityBounds bounds;
 };
 
+// The explicit modal scheme integrates the scene model of CanonicalScene (the paper's eq. 7);
+// the implicit one the full FE model with the same mesh.
 // Preconditions: problem.IsValid(), r_ftrunc >= 1, n_elements >= 1 (or 0 for the default).
 ImpactModel BuildImpactModel(const CantileverImpact& problem, Scheme scheme, double r_ftrunc,
                              int n_elements = 0);

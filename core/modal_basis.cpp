@@ -31,12 +31,6 @@ ModalBasis AllModes(const FeBeamModel& model) {
   return basis;
 }
 
-ModalBasis FirstColumns(ModalBasis all, int n) {
-  all.omega_rad_s.conservativeResize(n);
-  all.shapes.conservativeResize(Eigen::NoChange, n);
-  return all;
-}
-
 }  // namespace
 
 double ModalBasis::HighestFrequencyHz() const {
@@ -66,17 +60,25 @@ std::string EigenBudgetExcess(const std::vector<int>& unknowns, int solves_each)
 }
 
 ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz) {
-  ModalBasis all = AllModes(model);
-  const double omega_trunc = 2.0 * std::numbers::pi * f_trunc_hz;
-  int n = 0;
-  while (n < all.NumModes() && all.omega_rad_s[n] <= omega_trunc) ++n;
-  return FirstColumns(std::move(all), n);
+  return ModesBelow(AllModes(model), f_trunc_hz);
 }
 
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n) {
-  ModalBasis all = AllModes(model);
-  const int kept = std::min(n, all.NumModes());
-  return FirstColumns(std::move(all), kept);
+  return FirstModes(AllModes(model), n);
+}
+
+ModalBasis ModesBelow(ModalBasis basis, double f_trunc_hz) {
+  const double omega_trunc = 2.0 * std::numbers::pi * f_trunc_hz;
+  int n = 0;
+  while (n < basis.NumModes() && basis.omega_rad_s[n] <= omega_trunc) ++n;
+  return FirstModes(std::move(basis), n);
+}
+
+ModalBasis FirstModes(ModalBasis basis, int n) {
+  const int kept = std::min(n, basis.NumModes());
+  basis.omega_rad_s.conservativeResize(kept);
+  basis.shapes.conservativeResize(Eigen::NoChange, kept);
+  return basis;
 }
 
 }  // namespace shockmap

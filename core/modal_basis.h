@@ -26,6 +26,11 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz);
 // The first `n` modes regardless of frequency (all of them when n exceeds the model size).
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);
 
+// The same selections from a basis already solved for (one eigensolution serving several):
+// the modes with f <= f_trunc_hz, and the first n (all of them when n exceeds its size).
+ModalBasis ModesBelow(ModalBasis basis, double f_trunc_hz);
+ModalBasis FirstModes(ModalBasis basis, int n);
+
 // What the dense generalized eigenproblem behind ComputeModalBasis and ComputeLowestModes costs
 // on a model of `unknowns` unknowns: about four unknowns^2 matrices of doubles held at once and
 // 10 unknowns^3 flops (measured on one core: 3000 unknowns, 250 MB and 30 s).

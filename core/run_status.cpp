@@ -10,12 +10,14 @@ std::string ToString(RunStatus s) {
       return "diverged";
     case RunStatus::kFailed:
       return "failed";
+    case RunStatus::kReferenceUnconverged:
+      return "reference_unconverged";
   }
   return "unknown";
 }
 
 std::optional<RunStatus> RunStatusFromString(std::string_view s) {
-  for (auto r : {RunStatus::kOk, RunStatus::kDiverged, RunStatus::kFailed}) {
+  for (auto r : kAllRunStatuses) {
     if (ToString(r) == s) return r;
   }
   return std::nullopt;

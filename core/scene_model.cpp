@@ -68,12 +68,12 @@ void AddEndSpring(FeBeamModel& fe, int node, double k) {
 
 // The lowest frequency of a deforming mode: a beam free at both ends also has two rigid-body
 // modes at zero frequency (translation, rotation), which are kept but do not set the scale.
-double FirstElasticFrequencyHz(const FeBeamModel& fe) {
-  const ModalBasis lowest = ComputeLowestModes(fe, 3);
-  const double scale = lowest.omega_rad_s[lowest.NumModes() - 1];
-  for (int i = 0; i < lowest.NumModes(); ++i) {
-    if (lowest.omega_rad_s[i] > 1e-6 * scale)
-      return lowest.omega_rad_s[i] / (2.0 * std::numbers::pi);
+// `omega_rad_s`: every mode of the beam, ascending; the lowest three decide.
+double FirstElasticFrequencyHz(const Eigen::VectorXd& omega_rad_s) {
+  const int lowest = std::min<int>(3, static_cast<int>(omega_rad_s.size()));
+  const double scale = omega_rad_s[lowest - 1];
+  for (int i = 0; i < lowest; ++i) {
+    if (omega_rad_s[i] > 1e-6 * scale) return omega_rad_s[i] / (2.0 * std::numbers::pi);
   }
   return scale / (2.0 * std::numbers::pi);
 }
@@ -85,10 +85,12 @@ BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
   m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
   AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
   AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
-  const double f1 = FirstElasticFrequencyHz(m.fe);
+  // One eigensolution gives the first elastic frequency and the truncated basis.
+  const ModalBasis all = ComputeLowestModes(m.fe, m.fe.Size());
+  const double f1 = FirstElasticFrequencyHz(all.omega_rad_s);
   m.f_trunc_hz = truncation.Hz(f1);
-  m.basis = ComputeModalBasis(m.fe, m.f_trunc_hz);
-  if (m.basis.NumModes() == 0) m.basis = ComputeLowestModes(m.fe, 1);
+  m.basis = ModesBelow(all, m.f_trunc_hz);
+  if (m.basis.NumModes() == 0) m.basis = FirstModes(all, 1);
   if (!static_heights.empty()) {
     std::vector<Eigen::VectorXd> rows;
     for (double h : static_heights) rows.push_back(m.fe.DeflectionRow(h));
@@ -142,14 +144,29 @@ double SharpOmegaSquared(const SceneModalSystem& system, const Eigen::VectorXd& 
   return eig.eigenvalues().maxCoeff();
 }
 
-}  // namespace
-
-SceneModel BuildSceneModel(const Scene& scene) {
-  SceneModel model;
-  const int dirs = scene.Directions();
-  std::map<std::string, std::shared_ptr<const BeamModes>> cache;
-  std::vector<std::shared_ptr<const BeamModes>> modes;
+// Where each beam's modes sit in the scene's coordinates: beam b's block in direction d (y, z)
+// starts at offset[b] + d * modes[b]->N().
+struct Layout {
+  int dirs = 1;
   int n = 0;
+  std::vector<std::shared_ptr<const BeamModes>> modes;
+  std::vector<int> offset;
+  int distinct_bases = 0;
+
+  // -1 when the direction is absent (planar scenes).
+  int Block(int beam, int direction) const {
+    return direction < dirs ? offset[beam] + direction * modes[beam]->N() : -1;
+  }
+  int Block(std::size_t beam, int direction) const {
+    return Block(static_cast<int>(beam), direction);
+  }
+};
+
+// One basis per distinct beam, shared by identical ones, and the blocks in beam order.
+Layout LayOut(const Scene& scene) {
+  Layout layout;
+  layout.dirs = scene.Directions();
+  std::map<std::string, std::shared_ptr<const BeamModes>> cache;
   const auto static_heights = StaticHeights(scene);
   for (std::size_t i = 0; i < scene.beams.size(); ++i) {
     const SceneBeam& b = scene.beams[i];
@@ -158,73 +175,88 @@ SceneModel BuildSceneModel(const Scene& scene) {
     if (!slot) {
       slot = std::make_shared<const BeamModes>(MakeModes(b, truncation, static_heights[i]));
     }
-    modes.push_back(slot);
-    model.beam_offset.push_back(n);
-    model.modes_per_beam.push_back(slot->N());
-    n += dirs * slot->N();
+    layout.modes.push_back(slot);
+    layout.offset.push_back(layout.n);
+    layout.n += layout.dirs * slot->N();
   }
-  model.distinct_bases = static_cast<int>(cache.size());
-  auto block = [&](int beam, int direction) {
-    return direction < dirs ? model.beam_offset[beam] + direction * modes[beam]->N() : -1;
-  };
+  layout.distinct_bases = static_cast<int>(cache.size());
+  return layout;
+}
 
-  Eigen::VectorXd omega(n);
-  double f_trunc_max = 0.0;
-  for (std::size_t b = 0; b < scene.beams.size(); ++b) {
-    for (int d = 0; d < dirs; ++d) {
-      omega.segment(block(static_cast<int>(b), d), modes[b]->N()) = modes[b]->basis.omega_rad_s;
+Eigen::VectorXd Frequencies(const Layout& layout) {
+  Eigen::VectorXd omega(layout.n);
+  for (std::size_t b = 0; b < layout.modes.size(); ++b) {
+    for (int d = 0; d < layout.dirs; ++d) {
+      omega.segment(layout.Block(b, d), layout.modes[b]->N()) = layout.modes[b]->basis.omega_rad_s;
     }
-    // Static correction modes may lie above the truncation.
-    f_trunc_max =
-        std::max({f_trunc_max, modes[b]->f_trunc_hz, modes[b]->basis.HighestFrequencyHz()});
   }
+  return omega;
+}
 
-  std::optional<Eigen::VectorXd> damping;
-  if (scene.modal_damping) {
-    const auto& md = *scene.modal_damping;
-    damping = Eigen::VectorXd::Constant(n, md.mass_proportional_per_s);
-    if (!md.ratios.empty()) {
-      for (std::size_t b = 0; b < scene.beams.size(); ++b) {
-        for (int d = 0; d < dirs; ++d) {
-          for (int i = 0; i < modes[b]->N(); ++i) {
-            const double xi = md.ratios[std::min<std::size_t>(i, md.ratios.size() - 1)];
-            const int k = block(static_cast<int>(b), d) + i;
-            (*damping)[k] = 2.0 * xi * omega[k];
-          }
-        }
+// The highest truncation, or the highest mode kept when static correction modes lie above it.
+double HighestTruncationHz(const Layout& layout) {
+  double f_trunc_max = 0.0;
+  for (const auto& m : layout.modes) {
+    f_trunc_max = std::max({f_trunc_max, m->f_trunc_hz, m->basis.HighestFrequencyHz()});
+  }
+  return f_trunc_max;
+}
+
+// 2 xi_i Omega_i per coordinate: alpha for mass-proportional damping (C = alpha M), or from
+// the ratios given per mode.
+std::optional<Eigen::VectorXd> ModalDamping(const Scene& scene, const Layout& layout,
+                                            const Eigen::VectorXd& omega) {
+  if (!scene.modal_damping) return std::nullopt;
+  const auto& md = *scene.modal_damping;
+  Eigen::VectorXd damping = Eigen::VectorXd::Constant(layout.n, md.mass_proportional_per_s);
+  if (md.ratios.empty()) return damping;
+  for (std::size_t b = 0; b < layout.modes.size(); ++b) {
+    for (int d = 0; d < layout.dirs; ++d) {
+      for (int i = 0; i < layout.modes[b]->N(); ++i) {
+        const double xi = md.ratios[std::min<std::size_t>(i, md.ratios.size() - 1)];
+        const int k = layout.Block(b, d) + i;
+        damping[k] = 2.0 * xi * omega[k];
       }
     }
   }
+  return damping;
+}
 
+std::vector<ZoneTerm> ZoneTerms(const Scene& scene, const Layout& layout) {
   std::vector<ZoneTerm> zones;
   for (const auto& z : scene.zones) {
     ZoneTerm t;
-    t.a_y = block(z.beam_a, 0);
-    t.a_z = block(z.beam_a, 1);
-    t.phi_a = modes[z.beam_a]->At(z.height_m);
+    t.a_y = layout.Block(z.beam_a, 0);
+    t.a_z = layout.Block(z.beam_a, 1);
+    t.phi_a = layout.modes[z.beam_a]->At(z.height_m);
     if (z.beam_b >= 0) {
-      t.b_y = block(z.beam_b, 0);
-      t.b_z = block(z.beam_b, 1);
-      t.phi_b = modes[z.beam_b]->At(z.height_m);
+      t.b_y = layout.Block(z.beam_b, 0);
+      t.b_z = layout.Block(z.beam_b, 1);
+      t.phi_b = layout.modes[z.beam_b]->At(z.height_m);
     }
     t.normal_y = z.normal_y;
-    t.normal_z = dirs == 2 ? z.normal_z : 0.0;
+    t.normal_z = layout.dirs == 2 ? z.normal_z : 0.0;
     t.gap_m = z.gap_m;
     t.stiffness_n_per_m = z.stiffness_n_per_m;
     t.damping_n_s_per_m = z.damping_n_s_per_m;
     zones.push_back(std::move(t));
   }
+  return zones;
+}
 
+// Base motion loads every beam through its participation; a point force through its modes at
+// the force's height.
+std::vector<TimeLoad> TimeLoads(const Scene& scene, const Layout& layout) {
   std::vector<TimeLoad> loads;
   if (scene.base_motion) {
     TimeLoad base;
     base.base = &*scene.base_motion;
-    base.shape = Eigen::VectorXd::Zero(n);
-    for (std::size_t b = 0; b < scene.beams.size(); ++b) {
-      const double dir[2] = {scene.base_motion->dir_y, scene.base_motion->dir_z};
-      for (int d = 0; d < dirs; ++d) {
-        base.shape.segment(block(static_cast<int>(b), d), modes[b]->N()) =
-            dir[d] * modes[b]->participation;
+    base.shape = Eigen::VectorXd::Zero(layout.n);
+    const double dir[2] = {scene.base_motion->dir_y, scene.base_motion->dir_z};
+    for (std::size_t b = 0; b < layout.modes.size(); ++b) {
+      for (int d = 0; d < layout.dirs; ++d) {
+        base.shape.segment(layout.Block(b, d), layout.modes[b]->N()) =
+            dir[d] * layout.modes[b]->participation;
       }
     }
     loads.push_back(std::move(base));
@@ -232,34 +264,44 @@ SceneModel BuildSceneModel(const Scene& scene) {
   for (const auto& f : scene.static_forces) {
     TimeLoad load;
     load.point_force = &f;
-    load.shape = Eigen::VectorXd::Zero(n);
-    const auto phi = modes[f.beam]->At(f.height_m);
+    load.shape = Eigen::VectorXd::Zero(layout.n);
+    const auto phi = layout.modes[f.beam]->At(f.height_m);
     const double dir[2] = {f.dir_y, f.dir_z};
-    for (int d = 0; d < dirs; ++d) {
+    for (int d = 0; d < layout.dirs; ++d) {
       for (std::size_t i = 0; i < phi.size(); ++i) {
-        load.shape[block(f.beam, d) + static_cast<int>(i)] = dir[d] * phi[i];
+        load.shape[layout.Block(f.beam, d) + static_cast<int>(i)] = dir[d] * phi[i];
       }
     }
     loads.push_back(std::move(load));
   }
+  return loads;
+}
 
-  model.x0 = Eigen::VectorXd::Zero(n);
-  model.v0 = Eigen::VectorXd::Zero(n);
+// The coordinate of `mode` (1-based) that gives its largest deflection node the value tip_m, as
+// a displacement output at that node's height reads it.
+double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
+  const Eigen::VectorXd shape = m.basis.shapes.col(mode - 1);
+  int node = 0;
+  double largest = 0.0;
+  for (int i = 0; i < m.fe.Size(); ++i) {
+    if (m.fe.global_dof[i] % 2 == 0 && std::abs(shape[i]) > largest) {
+      largest = std::abs(shape[i]);
+      node = m.fe.global_dof[i] / 2;
+    }
+  }
+  const double length = m.fe.beam.length_m;
+  const double height = node == m.fe.n_elements ? length : length * node / m.fe.n_elements;
+  return tip_m / m.At(height)[mode - 1];
+}
+
+void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model) {
+  model.x0 = Eigen::VectorXd::Zero(layout.n);
+  model.v0 = Eigen::VectorXd::Zero(layout.n);
   for (const auto& s : scene.initial_state) {
-    const BeamModes& m = *modes[s.beam];
-    const int offset = block(s.beam, s.direction);
+    const BeamModes& m = *layout.modes[s.beam];
+    const int offset = layout.Block(s.beam, s.direction);
     if (s.tip_m != 0.0 && s.mode - 1 < m.N()) {
-      // Scaled so that the largest deflection node of the mode carries tip_m.
-      Eigen::Index at = 0;
-      const Eigen::VectorXd shape = m.basis.shapes.col(s.mode - 1);
-      double largest = 0.0;
-      for (int i = 0; i < m.fe.Size(); ++i) {
-        if (m.fe.global_dof[i] % 2 == 0 && std::abs(shape[i]) > largest) {
-          largest = std::abs(shape[i]);
-          at = i;
-        }
-      }
-      model.x0[offset + s.mode - 1] = s.tip_m / shape[at];
+      model.x0[offset + s.mode - 1] = ModeCoordinate(m, s.mode, s.tip_m);
     }
     if (s.static_force_n != 0.0) {
       // q_i = phi_i(h) F / omega_i^2: the static deflection projected on the retained modes
@@ -274,25 +316,42 @@ SceneModel BuildSceneModel(const Scene& scene) {
       model.v0.segment(offset, m.N()) += s.velocity_m_s * m.participation;
     }
   }
+}
 
+// The observed displacements, and per direction the momentum of all beams.
+void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
   for (const auto& o : scene.outputs.displacements) {
-    Eigen::VectorXd row = Eigen::VectorXd::Zero(n);
-    const auto phi = modes[o.beam]->At(o.height_m);
-    const int offset = block(o.beam, o.direction);
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(layout.n);
+    const auto phi = layout.modes[o.beam]->At(o.height_m);
+    const int offset = layout.Block(o.beam, o.direction);
     for (std::size_t i = 0; i < phi.size(); ++i) row[offset + static_cast<int>(i)] = phi[i];
     model.observed_rows.push_back(std::move(row));
   }
-
-  for (int d = 0; d < dirs; ++d) {
-    Eigen::VectorXd row = Eigen::VectorXd::Zero(n);
-    for (std::size_t b = 0; b < scene.beams.size(); ++b)
-      row.segment(block(static_cast<int>(b), d), modes[b]->N()) = modes[b]->participation;
+  for (int d = 0; d < layout.dirs; ++d) {
+    Eigen::VectorXd row = Eigen::VectorXd::Zero(layout.n);
+    for (std::size_t b = 0; b < layout.modes.size(); ++b)
+      row.segment(layout.Block(b, d), layout.modes[b]->N()) = layout.modes[b]->participation;
     model.momentum_rows.push_back(std::move(row));
   }
+}
 
-  model.system = std::make_unique<SceneModalSystem>(omega, std::move(damping), std::move(zones),
-                                                    std::move(loads));
-  model.bounds.dt_paper_s = 1.0 / (4.0 * f_trunc_max);
+}  // namespace
+
+SceneModel BuildSceneModel(const Scene& scene) {
+  const Layout layout = LayOut(scene);
+  SceneModel model;
+  model.beam_offset = layout.offset;
+  for (const auto& m : layout.modes) model.modes_per_beam.push_back(m->N());
+  model.distinct_bases = layout.distinct_bases;
+
+  const Eigen::VectorXd omega = Frequencies(layout);
+  model.system =
+      std::make_unique<SceneModalSystem>(omega, ModalDamping(scene, layout, omega),
+                                         ZoneTerms(scene, layout), TimeLoads(scene, layout));
+  SetInitialState(scene, layout, model);
+  SetRows(scene, layout, model);
+
+  model.bounds.dt_paper_s = 1.0 / (4.0 * HighestTruncationHz(layout));
   model.bounds.omega_max_rad_s = std::sqrt(SharpOmegaSquared(*model.system, omega));
   model.bounds.dt_sharp_s = 2.0 / model.bounds.omega_max_rad_s;
   return model;

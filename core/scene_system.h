@@ -51,6 +51,7 @@ class SceneModalSystem final : public SecondOrderSystem {
   // iteration on the operator: the sharp central-difference bound is 2 / sqrt of it.
   double StiffestOmegaSquared() const;
   const std::vector<ZoneTerm>& Zones() const { return zones_; }
+  const Eigen::VectorXd& OmegaSquared() const { return omega_squared_; }
 
  private:
   // Normal displacement (and velocity) of a zone: n . (u_a - u_b) at its height.

@@ -122,7 +122,8 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
 
 void CanonicalStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
                                   const Outcome& outcome) const {
-  StoreCanonicalOutcome(db, point_id, run_id, outcome.status, outcome.message, outcome.score);
+  StoreCanonicalOutcome(db, point_id, run_id, ToString(outcome.status), outcome.message,
+                        outcome.score);
 }
 
 }  // namespace shockmap

@@ -41,7 +41,7 @@ SceneStudy::Reference SceneStudy::ComputeReference(const Point& point) const {
   Reference ref;
   ref.reference_key = SceneReferenceKey(spec_, parameters);
   ref.parameters_json = ParametersJson(parameters);
-  ref.status = "failed";
+  ref.status = ToString(RunStatus::kFailed);
   try {
     const SceneRun run = RunScene(ScoredScene(spec_, parameters));
     const RunSummary& s = run.result.summary;
@@ -101,7 +101,9 @@ SceneScoreRow SceneStudy::Measure(const Scene& scene, const SceneRun& run) const
 
 SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
                                       std::int64_t reference_id) const {
-  if (ref.status != "ok") return {"failed", "reference " + ref.status + ": " + ref.message, {}};
+  if (ref.status != ToString(RunStatus::kOk)) {
+    return {RunStatus::kFailed, "reference " + ref.status + ": " + ref.message, {}};
+  }
   Outcome out;
   try {
     const Scene scene = ScoredScene(spec_, point);
@@ -109,7 +111,7 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
     const RunSummary& s = run.result.summary;
     SceneScoreRow score = Measure(scene, run);
     score.reference_id = reference_id;
-    out.status = ToString(s.status);
+    out.status = s.status;
     out.message = s.message;
     if (s.status == RunStatus::kOk) {
       const UniformSignal ref_displacement{0.0, ref.output_dt_s, ref.displacement_m};
@@ -133,7 +135,7 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
 
 void SceneStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
                               const Outcome& outcome) const {
-  StoreSceneOutcome(db, point_id, run_id, outcome.status, outcome.message, outcome.score);
+  StoreSceneOutcome(db, point_id, run_id, ToString(outcome.status), outcome.message, outcome.score);
 }
 
 }  // namespace shockmap

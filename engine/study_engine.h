@@ -48,7 +48,7 @@ struct StudyRunSummary {
 int WorkerCount(const StudyRunOptions& options);
 
 // Counts one finished point in the summary by its stored status.
-void CountOutcome(const std::string& status, StudyRunSummary& summary);
+void CountOutcome(RunStatus status, StudyRunSummary& summary);
 
 // Throws InputError when the study is stored with other settings, DbError on database faults
 // (another run holding the database among them).
@@ -194,7 +194,7 @@ class StudyRun {
   std::pair<std::int64_t, Outcome> Score(const PendingPoint& p) const {
     const Point& point = *by_key_.at(p.point_key);
     const ReferenceSlot& slot = references_.at(p.reference_key);
-    if (!slot.reference) return {p.point_id, Outcome{"failed", slot.error, std::nullopt}};
+    if (!slot.reference) return {p.point_id, Outcome{RunStatus::kFailed, slot.error, std::nullopt}};
     return {p.point_id, kind_.Score(point, *slot.reference, slot.id)};
   }
 

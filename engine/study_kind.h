@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/run_status.h"
 #include "db/study_database.h"
 
 namespace shockmap {
@@ -27,11 +28,11 @@ struct StudyHeader {
   std::string spec_json;
 };
 
-// One point's result as stored: its status ("ok", "diverged", "failed",
-// "reference_unconverged"), a message, and the kind's score row when it was computed.
+// One point's result as stored: its status, a message, and the kind's score row when it was
+// computed.
 template <typename Score>
 struct PointOutcome {
-  std::string status = "failed";
+  RunStatus status = RunStatus::kFailed;
   std::string message;
   std::optional<Score> score;
 };
@@ -69,7 +70,7 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
 
   // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
   { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
-  { outcome.status } -> std::convertible_to<std::string>;
+  { outcome.status } -> std::convertible_to<RunStatus>;
   // One transaction: the point's status and score.
   kind.StoreOutcome(db, id, id, outcome);
 };

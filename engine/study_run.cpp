@@ -12,12 +12,22 @@ int WorkerCount(const StudyRunOptions& options) {
                           : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-void CountOutcome(const std::string& status, StudyRunSummary& summary) {
+void CountOutcome(RunStatus status, StudyRunSummary& summary) {
   ++summary.points_computed;
-  if (status == "ok") ++summary.ok;
-  if (status == "diverged") ++summary.diverged;
-  if (status == "failed") ++summary.failed;
-  if (status == "reference_unconverged") ++summary.reference_unconverged;
+  switch (status) {
+    case RunStatus::kOk:
+      ++summary.ok;
+      break;
+    case RunStatus::kDiverged:
+      ++summary.diverged;
+      break;
+    case RunStatus::kFailed:
+      ++summary.failed;
+      break;
+    case RunStatus::kReferenceUnconverged:
+      ++summary.reference_unconverged;
+      break;
+  }
 }
 
 StudyRunSummary RunStudy(const StudyFile& study, const StudyRunOptions& options) {

@@ -27,7 +27,7 @@ nlohmann::json ComparisonToJson(const CantileverImpact& problem, const Compariso
   return {{"rk", problem.r_k},
           {"rftrunc", options.r_ftrunc},
           {"scheme", ToString(options.scheme)},
-          {"status", result.status},
+          {"status", ToString(result.status)},
           {"message", result.message},
           {"err", OrNull(result.err)},
           {"srf", OrNull(result.srf)},

@@ -26,7 +26,8 @@ constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
 
 // Beyond the eigenproblem budget of core/modal_basis.h when the distinct beam models of `beams`
-// are solved (twice each: the first elastic frequency, then the basis), the estimate; else "".
+// are solved (once each: one eigensolution gives the first elastic frequency and the basis),
+// the estimate; else "".
 std::string BasesExcess(const std::vector<SceneBeam>& beams) {
   std::set<std::tuple<double, double, double, int, EndCondition, EndCondition, double, double,
                       std::optional<double>, std::optional<double>>>
@@ -40,7 +41,7 @@ std::string BasesExcess(const std::vector<SceneBeam>& beams) {
             .second)
       unknowns.push_back(BeamUnknowns(b.n_elements));
   }
-  return EigenBudgetExcess(unknowns, 2);
+  return EigenBudgetExcess(unknowns, 1);
 }
 
 double Positive(JsonObjectReader& r, const std::string& key, double hi = 1e15) {

@@ -4,8 +4,12 @@
 #include <gtest/gtest.h>
 
 #include "compare/comparison.h"
+#include "formats/comparison_json.h"
 
 namespace shockmap {
+
+void PrintTo(RunStatus s, std::ostream* os) { *os << ToString(s); }
+
 namespace {
 
 class PaperFig3 : public ::testing::Test {
@@ -36,14 +40,14 @@ TEST_F(PaperFig3, ReferenceIsConvergedOverTheWindow) {
 
 TEST_F(PaperFig3, LowTruncationIsWrong) {
   const ComparisonResult r = Compare(10.0);
-  ASSERT_EQ(r.status, "ok") << r.message;
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.message;
   EXPECT_EQ(r.n_modes, 2);
   EXPECT_GT(*r.err, 0.25);
 }
 
 TEST_F(PaperFig3, HighTruncationIsRight) {
   const ComparisonResult r = Compare(300.0);
-  ASSERT_EQ(r.status, "ok") << r.message;
+  ASSERT_EQ(r.status, RunStatus::kOk) << r.message;
   EXPECT_LT(*r.err, 0.10);
   ASSERT_TRUE(r.srf.has_value());
   EXPECT_GT(*r.srf, 0.9);
@@ -53,7 +57,7 @@ TEST_F(PaperFig3, ErrorDecreasesWithTruncation) {
   double previous = 1.0;
   for (double r_ftrunc : {10.0, 100.0, 300.0, 1000.0}) {
     const ComparisonResult r = Compare(r_ftrunc);
-    ASSERT_EQ(r.status, "ok") << r.message;
+    ASSERT_EQ(r.status, RunStatus::kOk) << r.message;
     EXPECT_LT(*r.err, previous) << "R_ftrunc = " << r_ftrunc;
     previous = *r.err;
   }
@@ -64,10 +68,23 @@ TEST_F(PaperFig3, PaperTimeStepRuleDivergesWhereTheSharpBoundHolds) {
   // contact-stiffened modal stiffness.
   const ComparisonResult paper = Compare(10.0, {std::nullopt, 1.0, DtRule::kPaper});
   EXPECT_GT(paper.bounds.dt_paper_s, paper.bounds.dt_sharp_s);
-  EXPECT_EQ(paper.status, "diverged");
+  EXPECT_EQ(paper.status, RunStatus::kDiverged);
   EXPECT_FALSE(paper.err.has_value());
   const ComparisonResult sharp = Compare(10.0, {std::nullopt, 0.5, DtRule::kSharp});
-  EXPECT_EQ(sharp.status, "ok") << sharp.message;
+  EXPECT_EQ(sharp.status, RunStatus::kOk) << sharp.message;
+}
+
+// Every status, including the comparison's own kReferenceUnconverged, is written to the JSON
+// as its text and reads back as itself.
+TEST_F(PaperFig3, EveryStatusRoundTripsThroughTheJson) {
+  const ComparisonOptions o;
+  ComparisonResult r;
+  r.reference = reference_;
+  for (RunStatus s : kAllRunStatuses) {
+    r.status = s;
+    const nlohmann::json parsed = nlohmann::json::parse(ComparisonToJson(problem_, o, r).dump());
+    EXPECT_EQ(RunStatusFromString(parsed.at("status").get<std::string>()), s) << ToString(s);
+  }
 }
 
 TEST_F(PaperFig3, ImplicitSchemeIsStableAboveTheExplicitBound) {
@@ -80,7 +97,7 @@ TEST_F(PaperFig3, ImplicitSchemeIsStableAboveTheExplicitBound) {
   o.scheme = Scheme::kImplicitFull;
   o.dt = {std::nullopt, 2.0, DtRule::kSharp};
   const ComparisonResult r = ScoreAgainstReference(problem_, o, reference_);
-  EXPECT_EQ(r.status, "ok") << r.message;
+  EXPECT_EQ(r.status, RunStatus::kOk) << r.message;
   EXPECT_LT(r.numerical.max_energy_ratio, 1.05);
 }
 

@@ -26,10 +26,10 @@
 #include "core/end_condition.h"
 #include "core/full_fe_contact_system.h"
 #include "core/modal_basis.h"
-#include "core/modal_contact_system.h"
 #include "core/newmark.h"
 #include "core/point_contact.h"
 #include "core/run_status.h"
+#include "core/scene_system.h"
 #include "core/scheme.h"
 #include "core/second_order_system.h"
 #include "core/stability_bounds.h"
@@ -337,7 +337,7 @@ std::pair<double, double> EnergyDeviationFirstAndLastTenth(const TransientResult
 
 TEST(CentralDifference, ConservesEnergyWithoutContact) {
   const FourModeProblem p;
-  ModalContactSystem system(p.modes.omega_rad_s, std::nullopt, {});
+  SceneModalSystem system(p.modes.omega_rad_s, std::nullopt, {}, {});
   const double omega_dt = 0.1;
   const double dt = omega_dt / p.OmegaMax();
   TransientOptions options;
@@ -359,7 +359,7 @@ TEST(CentralDifference, ConservesEnergyWithoutContact) {
 
 TEST(CentralDifference, ConservesItsDiscreteInvariantToRoundOff) {
   const FourModeProblem p;
-  ModalContactSystem system(p.modes.omega_rad_s, std::nullopt, {});
+  SceneModalSystem system(p.modes.omega_rad_s, std::nullopt, {}, {});
   const double dt = 0.1 / p.OmegaMax();
   const Eigen::ArrayXd w2 = p.modes.omega_rad_s.array().square();
   const Eigen::ArrayXd factor = 1.0 - w2 * dt * dt / 4.0;
@@ -412,7 +412,7 @@ TEST_P(CentralDifferenceOrderTest, TipDisplacementConvergesAtSecondOrder) {
   const double alpha = GetParam() ? kConvergenceDampingPerS : 0.0;
   std::optional<Eigen::VectorXd> damping;
   if (GetParam()) damping = Eigen::VectorXd::Constant(4, alpha);
-  ModalContactSystem system(p.modes.omega_rad_s, damping, {});
+  SceneModalSystem system(p.modes.omega_rad_s, damping, {}, {});
   const double end_s = 0.05;
   // omega_max dt from 0.06 down to 0.0075.
   const int n0 = static_cast<int>(std::ceil(end_s * p.OmegaMax() / 0.06));
@@ -835,6 +835,17 @@ TEST(SchemeAgreement, ExplicitModalMatchesImplicitFullOnTheSameElements) {
 // ---------------------------------------------------------------------------------------------
 // 9. Options.
 
+// The statuses are stored as text (database, JSON): every one reads back as itself.
+TEST(RunStatus, EveryStatusRoundTripsThroughItsText) {
+  for (RunStatus s : kAllRunStatuses) {
+    EXPECT_EQ(RunStatusFromString(ToString(s)), s) << ToString(s);
+  }
+  EXPECT_EQ(ToString(RunStatus::kReferenceUnconverged), "reference_unconverged");
+  EXPECT_FALSE(RunStatusFromString("unknown").has_value());
+  EXPECT_FALSE(RunStatusFromString("OK").has_value());
+  EXPECT_FALSE(RunStatusFromString("").has_value());
+}
+
 TEST(TransientOptions, AcceptsAReasonableRun) {
   TransientOptions options;
   options.end_time_s = 0.3;
@@ -916,7 +927,7 @@ TEST(TransientOptions, RejectsBadStridesAndGrowthLimit) {
 TEST(RunTransient, ShortensTheStepToEndExactlyAndRecordsEveryStride) {
   Eigen::VectorXd omega(1);
   omega << 10.0;
-  ModalContactSystem system(omega, std::nullopt, {});
+  SceneModalSystem system(omega, std::nullopt, {}, {});
   TransientOptions options;
   options.end_time_s = 1.0;
   options.dt_s = 0.3;
@@ -942,7 +953,7 @@ TEST(TransientOptions, EndTimeFarBelowDtStillTakesOneStep) {
   options.dt_s = 1.0;
   Eigen::VectorXd omega(1);
   omega << 10.0;
-  ModalContactSystem system(omega, std::nullopt, {});
+  SceneModalSystem system(omega, std::nullopt, {}, {});
   if (options.IsValid(nullptr)) {
     const TransientResult r =
         RunTransient(system, NewmarkParameters::CentralDifference(), Eigen::VectorXd::Ones(1),

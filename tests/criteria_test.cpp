@@ -84,8 +84,8 @@ TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
     for (int j = 0; j <= 40; ++j) {
       const double r_ftrunc = std::pow(10.0, 0.1 * j);
       const bool pass = r_ftrunc >= 2.0 * std::sqrt(r_k);
-      points.push_back({++id, r_k, r_ftrunc, "ok", pass ? 0.01 : 0.5, pass ? 0.99 : 0.5, 1e-5, 1e-4,
-                        1e-4, 1e-3, 10, 1000});
+      points.push_back({++id, r_k, r_ftrunc, RunStatus::kOk, pass ? 0.01 : 0.5, pass ? 0.99 : 0.5,
+                        1e-5, 1e-4, 1e-4, 1e-3, 10, 1000});
     }
   }
   const ValidityCriteria c = DeriveCriteria(points, {});

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "compare/comparison.h"
+#include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "formats/scene_file.h"
 #include "tests/run_command.h"
@@ -209,6 +212,32 @@ TEST_F(SceneFiles, CanonicalSceneThroughSimulateEqualsCompare) {
   ASSERT_GT(peak, 1e3);                     // The run has shocks to compare.
   EXPECT_LT(worst_tip, 1e-12 * 1e-3 * 10);  // 12 digits in the files.
   EXPECT_LT(worst_force, 1e-10 * peak);
+}
+
+// The shipped canonical scene is the comparison's reduced model: the scene engine running
+// scenes/cantilever_spring.json gives the histories `compare` scores, bit for bit (the same
+// FE mesh, modes, initial state, zone and time step; one system integrates both).
+TEST_F(SceneFiles, CanonicalSceneFileGivesTheComparisonsHistoriesBitForBit) {
+  const SceneRun scene = RunScene(LoadScene(kScenes + "cantilever_spring.json"));
+  CantileverImpact problem;
+  problem.r_k = 3000.0;
+  ComparisonOptions options;
+  options.r_ftrunc = 300.0;
+  const ComparisonResult cmp = RunComparison(problem, options);
+  ASSERT_EQ(cmp.status, RunStatus::kOk) << cmp.message;
+  ASSERT_EQ(scene.result.summary.status, RunStatus::kOk) << scene.result.summary.message;
+  EXPECT_EQ(scene.result.summary.dt_used_s, cmp.numerical.dt_used_s);
+  const TransientResult& a = scene.result;
+  const TransientResult& b = cmp.histories;
+  ASSERT_GT(
+      *std::max_element(b.contact_force_n[0].values.begin(), b.contact_force_n[0].values.end()),
+      1e3);  // The run has shocks.
+  EXPECT_EQ(a.displacement_m[0].values, b.displacement_m[0].values);
+  EXPECT_EQ(a.velocity_m_s[0].values, b.velocity_m_s[0].values);
+  EXPECT_EQ(a.contact_force_n[0].values, b.contact_force_n[0].values);
+  EXPECT_EQ(a.energy.kinetic_j.values, b.energy.kinetic_j.values);
+  EXPECT_EQ(a.energy.strain_j.values, b.energy.strain_j.values);
+  EXPECT_EQ(a.energy.contact_j.values, b.energy.contact_j.values);
 }
 
 TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {

@@ -15,7 +15,6 @@
 
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
-#include "core/modal_contact_system.h"
 #include "core/scene_model.h"
 #include "core/transient_run.h"
 #include "reference/reference_solver.h"
@@ -49,15 +48,16 @@ class ClosedContactStabilityTest : public testing::TestWithParam<double> {};
 TEST_P(ClosedContactStabilityTest, SharpBoundIsTheExactLimit) {
   const CantileverImpact problem;
   const ImpactModel model = BuildImpactModel(problem, Scheme::kExplicitModal, GetParam());
-  const auto& modal = dynamic_cast<const ModalContactSystem&>(*model.system);
-  const PointContact& contact = modal.Contacts().at(0);
+  const auto& modal = dynamic_cast<const SceneModalSystem&>(*model.system);
+  const ZoneTerm& contact = modal.Zones().at(0);
+  const Eigen::Map<const Eigen::VectorXd> row(contact.phi_a.data(), modal.Size());
   Eigen::MatrixXd k = modal.OmegaSquared().asDiagonal();
-  k += contact.stiffness_n_per_m * contact.row * contact.row.transpose();
+  k += contact.stiffness_n_per_m * row * row.transpose();
   // Integrate in the eigenbasis of the closed-contact stiffness: decoupled oscillators.
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k);
   const Eigen::VectorXd omega = eig.eigenvalues().cwiseSqrt();
   EXPECT_NEAR(2.0 / omega.maxCoeff(), model.bounds.dt_sharp_s, 1e-12 * model.bounds.dt_sharp_s);
-  ModalContactSystem closed(omega, std::nullopt, {});
+  SceneModalSystem closed(omega, std::nullopt, {}, {});
   const Eigen::VectorXd x0 = Eigen::VectorXd::Ones(omega.size());
   TransientOptions options;
   options.end_time_s = 5000 * model.bounds.dt_sharp_s;

@@ -19,7 +19,7 @@ bool CriteriaOptions::IsValid(std::string* error) const {
 }
 
 bool CriteriaOptions::Passes(const ScoredPoint& p) const {
-  return p.status == "ok" && p.err && *p.err <= err_max && (!p.srf || *p.srf >= srf_min);
+  return p.status == RunStatus::kOk && p.err && *p.err <= err_max && (!p.srf || *p.srf >= srf_min);
 }
 
 std::optional<double> ValidityCriteria::RequiredRFtrunc(double r_k) const {
@@ -30,7 +30,7 @@ std::optional<double> ValidityCriteria::RequiredRFtrunc(double r_k) const {
 
 namespace {
 
-bool Scorable(const ScoredPoint& p) { return p.status != "reference_unconverged"; }
+bool Scorable(const ScoredPoint& p) { return p.status != RunStatus::kReferenceUnconverged; }
 
 template <typename T>
 void KeepMax(std::optional<T>& slot, T v) {
@@ -48,8 +48,8 @@ RkBoundary BoundaryAt(double r_k, const std::vector<const ScoredPoint*>& at,
   b.n_points = static_cast<int>(at.size());
   for (const auto* p : at) {
     if (options.Passes(*p)) ++b.n_passing;
-    if (p->status == "ok") KeepMax(b.largest_stable_dt_ratio, p->DtRatio());
-    if (p->status == "diverged") KeepMin(b.smallest_diverged_dt_ratio, p->DtRatio());
+    if (p->status == RunStatus::kOk) KeepMax(b.largest_stable_dt_ratio, p->DtRatio());
+    if (p->status == RunStatus::kDiverged) KeepMin(b.smallest_diverged_dt_ratio, p->DtRatio());
   }
   // Candidate dt ratios, smallest first: the boundary is judged at the finest time step and
   // the time step is then raised while everything above the boundary keeps passing.
@@ -158,8 +158,8 @@ std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
     std::ostringstream why;
     why << "meets the criteria (R_ftrunc " << p.r_ftrunc << " >= " << required << ", dt/dt_sharp "
         << p.DtRatio() << " <= " << *criteria.dt_ratio_max << ") but ";
-    if (p.status != "ok") {
-      why << "ended " << p.status;
+    if (p.status != RunStatus::kOk) {
+      why << "ended " << ToString(p.status);
     } else {
       why << "Err = " << p.err.value_or(NAN) << " (max " << criteria.options.err_max
           << "), SRf = " << (p.srf ? *p.srf : NAN) << " (min " << criteria.options.srf_min << ")";

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/run_status.h"
+
 namespace shockmap {
 
 // One stored point as the criteria see it.
@@ -15,7 +17,7 @@ struct ScoredPoint {
   std::int64_t point_id = 0;
   double r_k = 0.0;
   double r_ftrunc = 0.0;
-  std::string status;  // ok, diverged, failed, reference_unconverged
+  RunStatus status = RunStatus::kFailed;
   std::optional<double> err, srf;
   double dt_s = 0.0;  // As asked: the used step is shortened to land on the window's end.
   double dt_sharp_s = 0.0;

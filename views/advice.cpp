@@ -31,7 +31,7 @@ Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
   a.steps = static_cast<std::int64_t>(std::ceil(a.window_s / a.dt_s));
   std::vector<double> per_mode_step;
   for (const auto& p : points) {
-    if (p.status == "ok" && p.steps > 0 && p.n_modes > 0) {
+    if (p.status == RunStatus::kOk && p.steps > 0 && p.n_modes > 0) {
       per_mode_step.push_back(p.wall_s / (static_cast<double>(p.steps) * p.n_modes));
     }
   }

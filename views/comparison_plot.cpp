@@ -14,7 +14,7 @@ std::filesystem::path PlotComparison(const ComparisonResult& result,
   const std::string scores =
       result.err ? fmt::format("Err = {:.1f} %, SRf = {}", 100.0 * *result.err,
                                result.srf ? fmt::format("{:.3f}", *result.srf) : "n/a")
-                 : result.status;
+                 : ToString(result.status);
   const std::string script = fmt::format(
       R"(set terminal pngcairo size 1200,900 font "DejaVu Sans,11"
 set output {png}

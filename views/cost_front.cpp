@@ -18,7 +18,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
   std::map<double, CostTable> by_rk;
   auto add = [&](const std::vector<ScoredPoint>& points, const char* scheme) {
     for (const auto& p : points) {
-      if (p.status != "ok" || !p.err) continue;
+      if (p.status != RunStatus::kOk || !p.err) continue;
       CostTable& t = by_rk[p.r_k];
       t.r_k = p.r_k;
       t.rows.push_back({p, scheme, false});

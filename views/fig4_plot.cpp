@@ -48,7 +48,8 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
   for (const auto& [key, curve] : curves) {
     data << "# " << curve.title << "\n# r_k err srf status\n";
     for (const auto& [r_k, p] : curve.by_rk) {
-      data << fmt::format("{:.10g} {} {} {}\n", r_k, Value(p->err), Value(p->srf), p->status);
+      data << fmt::format("{:.10g} {} {} {}\n", r_k, Value(p->err), Value(p->srf),
+                          ToString(p->status));
     }
     data << "\n\n";
     const bool is_implicit = key.first == "implicit";

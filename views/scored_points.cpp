@@ -48,7 +48,13 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.point_id = std::get<std::int64_t>(row[0]);
     p.r_k = Real(row[1]);
     p.r_ftrunc = Real(row[2]);
-    p.status = std::get<std::string>(row[3]);
+    const std::string& status = std::get<std::string>(row[3]);
+    const auto parsed = RunStatusFromString(status);
+    if (!parsed) {
+      throw InputError(database_path + ": point " + std::to_string(p.point_id) +
+                       " has the unknown status \"" + status + "\"");
+    }
+    p.status = *parsed;
     p.err = OptionalReal(row[4]);
     p.srf = OptionalReal(row[5]);
     p.dt_s = Real(row[6]);

@@ -48,9 +48,9 @@ namespace {
 enum StatusClass { kPasses = 0, kFailsThresholds = 1, kDiverged = 2, kFailed = 3, kUnscored = 4 };
 
 StatusClass ClassOf(const ScoredPoint& p, const CriteriaOptions& o) {
-  if (p.status == "diverged") return kDiverged;
-  if (p.status == "failed") return kFailed;
-  if (p.status == "reference_unconverged") return kUnscored;
+  if (p.status == RunStatus::kDiverged) return kDiverged;
+  if (p.status == RunStatus::kFailed) return kFailed;
+  if (p.status == RunStatus::kReferenceUnconverged) return kUnscored;
   return o.Passes(p) ? kPasses : kFailsThresholds;
 }
 
