@@ -38,7 +38,12 @@ class SceneStudy {
   Outcome Failed(const Point& point, const std::string& message) const;
   static const std::string& StatusOf(const Outcome& outcome) { return outcome.status; }
   void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                    const Outcome& outcome) const;
+                    const PointOrigin& origin, const Outcome& outcome) const;
+
+  void EncodeReference(const Reference& reference, ByteWriter& out) const;
+  Reference DecodeReference(ByteReader& in) const;
+  void EncodeOutcome(const Outcome& outcome, ByteWriter& out) const;
+  Outcome DecodeOutcome(ByteReader& in) const;
 
  private:
   SceneScoreRow Measure(const Scene& scene, const struct SceneRun& run) const;

@@ -8,7 +8,9 @@
 //   Reference what its points are scored against, computed once per database and shared;
 //   Outcome   one point's result, as it will be stored.
 // The Compute/Score members run on workers: they are const, thread-safe and never touch the
-// database. Everything that takes a StudyDatabase runs on the one writer.
+// database. Everything that takes a StudyDatabase runs on the one writer. A worker may be
+// another process (an MPI rank) that parsed the same study file: a point travels as its index
+// in Points(), a reference and an outcome as the bytes of their Encode/Decode pair.
 
 #include <concepts>
 #include <cstdint>
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "db/study_database.h"
+#include "engine/byte_codec.h"
 
 namespace shockmap {
 
@@ -38,7 +41,8 @@ template <typename K>
 concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K::Point& point,
                              const typename K::Reference& reference,
                              const typename K::Outcome& outcome, const std::string& text,
-                             std::int64_t id) {
+                             std::int64_t id, const PointOrigin& origin, ByteWriter& writer,
+                             ByteReader& reader) {
   { kind.Header() } -> std::same_as<const StudyHeader&>;
   { kind.Table() } -> std::same_as<const PointTable&>;
   // Throws InputError when the study is stored with settings its scores depend on that differ
@@ -63,8 +67,15 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   // The outcome of a point whose reference could not be computed.
   { kind.Failed(point, text) } -> std::same_as<typename K::Outcome>;
   { K::StatusOf(outcome) } -> std::convertible_to<std::string>;
-  // One transaction: the point's status and score.
-  kind.StoreOutcome(db, id, id, outcome);
+  // One transaction: the point's status, origin and score.
+  kind.StoreOutcome(db, id, id, origin, outcome);
+
+  // Decode(Encode(x)) scores and stores exactly as x does. Decode throws std::runtime_error
+  // on a truncated message.
+  kind.EncodeReference(reference, writer);
+  { kind.DecodeReference(reader) } -> std::same_as<typename K::Reference>;
+  kind.EncodeOutcome(outcome, writer);
+  { kind.DecodeOutcome(reader) } -> std::same_as<typename K::Outcome>;
 };
 
 }  // namespace shockmap
