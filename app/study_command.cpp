@@ -45,6 +45,15 @@ void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
       "points/s)\n",
       s.wall_s, s.reference_wall_s, s.wall_s > 0 ? 100.0 * s.reference_wall_s / s.wall_s : 0.0,
       s.point_wall_s, rate);
+  if (s.worker_ranks > 0) {
+    const MessageTotals& m = s.messages;
+    fmt::print(
+        "  messages     {} tasks {:.3f} MB (largest {:.0f} B), {} results {:.3f} MB (largest "
+        "{:.0f} "
+        "B)\n",
+        m.tasks, m.task_bytes / 1e6, m.largest_task, m.results, m.result_bytes / 1e6,
+        m.largest_result);
+  }
   fmt::print("  database     {}\n", database_path);
 }
 

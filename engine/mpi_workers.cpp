@@ -8,6 +8,7 @@
 #include <mpi.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -127,6 +128,7 @@ class MpiWorkers final : public RemoteWorkers {
   PointOrigin OriginOf(int rank) const override {
     return {hosts_.at(static_cast<std::size_t>(rank)), rank};
   }
+  MessageTotals Totals() const override { return totals_; }
 
   std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
                                  const ConsumeResult& consume,
@@ -142,6 +144,7 @@ class MpiWorkers final : public RemoteWorkers {
   int threads_, rank_, size_;
   std::vector<std::string> hosts_;
   Sends sends_;
+  MessageTotals totals_;
 };
 
 std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& encode,
@@ -157,7 +160,11 @@ std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& 
   Backoff backoff;
   for (;;) {
     for (; !stopped && next < count && !idle.empty(); ++next) {
-      sends_.Post(idle.front(), kTask, Framed(next, encode(next, idle.front())));
+      std::string task = Framed(next, encode(next, idle.front()));
+      ++totals_.tasks;
+      totals_.task_bytes += static_cast<double>(task.size());
+      totals_.largest_task = std::max(totals_.largest_task, static_cast<double>(task.size()));
+      sends_.Post(idle.front(), kTask, std::move(task));
       out[next] = idle.front();
       idle.pop_front();
     }
@@ -166,6 +173,10 @@ std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& 
     if (auto m = Receive(MPI_ANY_SOURCE, kResult)) {
       const std::size_t index = IndexOf(m->bytes);
       if (out.erase(index) == 0) throw std::runtime_error("result of a task never handed out");
+      ++totals_.results;
+      totals_.result_bytes += static_cast<double>(m->bytes.size());
+      totals_.largest_result =
+          std::max(totals_.largest_result, static_cast<double>(m->bytes.size()));
       consume(index, std::string_view(m->bytes).substr(sizeof(std::uint64_t)), m->source);
       idle.push_back(m->source);
       backoff.Reset();

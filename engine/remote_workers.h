@@ -20,6 +20,13 @@ struct AbandonedTask {
   int rank = 0;
 };
 
+// What rank 0 sent and received: tasks (with the references they carry) and results.
+struct MessageTotals {
+  long tasks = 0, results = 0;
+  double task_bytes = 0, result_bytes = 0;
+  double largest_task = 0, largest_result = 0;
+};
+
 class RemoteWorkers {
  public:
   using EncodeTask = std::function<std::string(std::size_t index, int rank)>;
@@ -34,6 +41,8 @@ class RemoteWorkers {
   virtual int WorkerRanks() const = 0;
   virtual int ThreadsPerRank() const = 0;
   virtual PointOrigin OriginOf(int rank) const = 0;
+  // Since the job started, on rank 0.
+  virtual MessageTotals Totals() const = 0;
 
   // On rank 0: hands task i (encode(i, rank), i in [0, count) in order) to a worker rank as soon
   // as one of its threads is idle, and passes each result to consume() on the calling thread,

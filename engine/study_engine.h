@@ -53,7 +53,8 @@ struct StudyRunSummary {
   std::vector<std::string> abandoned;
   // How the study's previous run ended when it did not complete (db UnfinishedLastRun).
   std::string previous_run;
-  int stop_signal = 0;  // The signal that interrupted the run, or 0.
+  MessageTotals messages;  // Of an MPI job.
+  int stop_signal = 0;     // The signal that interrupted the run, or 0.
   double wall_s = 0.0;
   double reference_wall_s = 0.0;  // Wall time of the reference phase.
   double point_wall_s = 0.0;      // Wall time of the point phase.
@@ -160,6 +161,7 @@ class StudyRun {
       db_.EndRun(run_id_, RunEnd::kInterrupted, StopMessage());
     }
     summary_.wall_s = timer.WallSeconds();
+    if (remote_) summary_.messages = remote_->Totals();
     return summary_;
   }
 
