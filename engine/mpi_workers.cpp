@@ -21,7 +21,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "core/input_error.h"
 #include "engine/byte_codec.h"
 #include "engine/remote_workers.h"
 
@@ -227,7 +226,8 @@ void MpiWorkers::Serve(const Execute& execute) {
       lock.unlock();
       std::string result, error;
       try {
-        result = Framed(IndexOf(task), execute(std::string_view(task).substr(8)));
+        result =
+            Framed(IndexOf(task), execute(std::string_view(task).substr(sizeof(std::uint64_t))));
       } catch (const std::exception& e) {
         error = e.what();
       }
