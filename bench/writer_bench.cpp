@@ -83,7 +83,8 @@ void Writer(benchmark::State& state, const Kind& kind) {
   std::vector<NewPoint> rows;
   for (int i = 0; i < kPoints; ++i) {
     NewPoint p = kind.Describe(kind.Points()[i % kind.Points().size()]);
-    p.point_key += "#" + std::to_string(i);
+    p.point_key += '#';
+    p.point_key += std::to_string(i);
     rows.push_back(std::move(p));
   }
   db.AddPoints(kind.Table(), study, rows);
