@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "app/flag_checks.h"
 #include "db/study_queries.h"
@@ -50,12 +52,17 @@ struct StudyFlags {
 
 void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
   const double rate = s.point_wall_s > 0 ? s.points_computed / s.point_wall_s : 0.0;
-  fmt::print("study {}: {} points in the study, {} computed now ({} jobs)\n", s.study,
-             s.points_in_study, s.points_computed, s.jobs);
+  const std::string workers =
+      s.worker_ranks > 0
+          ? fmt::format("{} worker ranks x {} threads", s.worker_ranks, s.jobs / s.worker_ranks)
+          : fmt::format("{} jobs", s.jobs);
+  fmt::print("study {}: {} points in the study, {} computed now ({})\n", s.study, s.points_in_study,
+             s.points_computed, workers);
   fmt::print("  outcomes     ok {}, diverged {}, failed {}, reference_unconverged {}\n", s.ok,
              s.diverged, s.failed, s.reference_unconverged);
   fmt::print("  references   {} computed, {} reused from the database\n", s.references_computed,
              s.references_reused);
+  if (!s.previous_run.empty()) fmt::print("  previous     {}\n", s.previous_run);
   if (s.points_reclaimed > 0) {
     fmt::print("  resumed      {} points left running by a stopped run\n", s.points_reclaimed);
   }
@@ -64,6 +71,15 @@ void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
       "points/s)\n",
       s.wall_s, s.reference_wall_s, s.wall_s > 0 ? 100.0 * s.reference_wall_s / s.wall_s : 0.0,
       s.point_wall_s, rate);
+  if (s.worker_ranks > 0) {
+    const MessageTotals& m = s.messages;
+    fmt::print(
+        "  messages     {} tasks {:.3f} MB (largest {:.0f} B), {} results {:.3f} MB (largest "
+        "{:.0f} "
+        "B)\n",
+        m.tasks, m.task_bytes / 1e6, m.largest_task, m.results, m.result_bytes / 1e6,
+        m.largest_result);
+  }
   fmt::print("  database     {}\n", database_path);
 }
 
@@ -72,15 +88,36 @@ struct Interrupted : CLI::RuntimeError {
   explicit Interrupted(int signal) : CLI::RuntimeError(128 + signal) {}
 };
 
+// A worker rank of an MPI job computes what rank 0 hands out. When it cannot read the study
+// file, the first task it is given ends the job with the reason (rank 0 usually fails alike).
+void Serve(const StudyFlags& f, RemoteWorkers& job) {
+  try {
+    ServeStudy(ReadStudyFile(f.spec_path), job);
+  } catch (const std::exception& e) {
+    const std::string why = f.spec_path + ": " + e.what();
+    job.Serve([why](std::string_view) -> std::string { throw std::runtime_error(why); });
+  }
+}
+
 void Run(const StudyFlags& f) {
   StudyRunOptions options = f.run;
   options.progress = !f.quiet;
+  // Under MPI, --jobs is the threads of each worker rank.
+  const std::unique_ptr<RemoteWorkers> job = JoinMpiJob(f.run.jobs > 0 ? f.run.jobs : 1);
+  if (job && job->Rank() != 0) return Serve(f, *job);
+  if (job) {
+    options.jobs = std::max(1, f.run.jobs);
+    if (job->WorkerRanks() > 0) options.remote = job.get();
+  }
   // The whole file, and every point's scene, is checked before the database is touched.
   const StudyFile study = ReadStudyFile(f.spec_path, f.access);
   InstallStopHandlers();
   const StudyRunSummary s = RunStudy(study, options);
   PrintSummary(s, options.database_path);
   if (s.stop_signal != 0) {
+    for (const std::string& task : s.abandoned) {
+      fmt::print(stderr, "shockmap: no answer for {}; it is pending again\n", task);
+    }
     fmt::print(stderr,
                "shockmap: {} received: {} of the {} points to compute are stored, the rest are "
                "pending; run the study again to resume\n",
@@ -100,6 +137,14 @@ void Status(const StudyFlags& f) {
     }
   }
   WriteQueryResult(r, QueryFormat::kTable, std::cout);
+  QueryResult origins = StudyOrigins(f.run.database_path);
+  if (!f.study.empty()) {
+    std::erase_if(origins.rows,
+                  [&](const auto& row) { return std::get<std::string>(row[0]) != f.study; });
+  }
+  std::cout << "\ncomputed on (host, rank; each point's in the views results and "
+               "scene_results):\n";
+  WriteQueryResult(origins, QueryFormat::kTable, std::cout);
   if (const auto writer = LiveWriter(f.run.database_path)) {
     std::cout << "being written by " << *writer << "; its running points are held by it\n";
   }
@@ -131,7 +176,9 @@ void AddStudyCommand(CLI::App& app) {
   run->add_option("STUDY", flags->spec_path, "study file (JSON)")->required();
   run->add_option("--db", flags->run.database_path, "study database (SQLite)")
       ->capture_default_str();
-  run->add_option("--jobs", flags->run.jobs, "worker threads (default: number of cores)")
+  run->add_option("--jobs", flags->run.jobs,
+                  "worker threads (default: number of cores; under MPI: per worker rank, "
+                  "default 1)")
       ->check(CLI::Range(1, 1024));
   run->add_flag("--retry-failed", flags->run.retry_failed, "compute failed points again");
   run->add_flag("--quiet", flags->quiet, "no progress on stderr");

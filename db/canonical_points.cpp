@@ -56,9 +56,9 @@ void WriteScore(Connection& db, std::int64_t point_id, const std::optional<Score
 }  // namespace
 
 void StoreCanonicalOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                           const std::string& status, const std::string& message,
-                           const std::optional<ScoreRow>& score) {
-  StorePointOutcome(db, kCanonicalPoints, point_id, run_id, status, message,
+                           const PointOrigin& origin, const std::string& status,
+                           const std::string& message, const std::optional<ScoreRow>& score) {
+  StorePointOutcome(db, kCanonicalPoints, point_id, run_id, origin, status, message,
                     [&](Connection& c) { WriteScore(c, point_id, score); });
 }
 

@@ -59,8 +59,8 @@ struct ReferenceRow {
 
 // A point's final status with its score when it was computed; one transaction.
 void StoreCanonicalOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                           const std::string& status, const std::string& message,
-                           const std::optional<ScoreRow>& score);
+                           const PointOrigin& origin, const std::string& status,
+                           const std::string& message, const std::optional<ScoreRow>& score);
 
 std::optional<ReferenceRow> FindReference(StudyDatabase& db, const std::string& reference_key);
 // Stores a new reference and returns its id.

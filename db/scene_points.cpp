@@ -27,9 +27,9 @@ void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneS
 }  // namespace
 
 void StoreSceneOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                       const std::string& status, const std::string& message,
-                       const std::optional<SceneScoreRow>& score) {
-  StorePointOutcome(db, kScenePoints, point_id, run_id, status, message,
+                       const PointOrigin& origin, const std::string& status,
+                       const std::string& message, const std::optional<SceneScoreRow>& score) {
+  StorePointOutcome(db, kScenePoints, point_id, run_id, origin, status, message,
                     [&](Connection& c) { WriteScore(c, point_id, score); });
 }
 

@@ -39,8 +39,8 @@ struct SceneReferenceRow {
 
 // A point's final status with its score when it was computed; one transaction.
 void StoreSceneOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                       const std::string& status, const std::string& message,
-                       const std::optional<SceneScoreRow>& score);
+                       const PointOrigin& origin, const std::string& status,
+                       const std::string& message, const std::optional<SceneScoreRow>& score);
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key);
 // Stores a new reference and returns its id.
 std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& reference,

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <fstream>
 #include <thread>
 
 #include <fmt/format.h>
@@ -93,10 +94,21 @@ double UnixNow() {
   return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
 }
 
+// True when the process has exited but was not yet reaped by its parent (a zombie: an MPI
+// rank killed with its launcher still winding the job down).
+bool Zombie(std::int64_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  std::getline(stat, line);
+  const auto close = line.rfind(')');
+  return close != std::string::npos && line.size() > close + 2 && line[close + 2] == 'Z';
+}
+
 // True when `pid` on this host is known to be gone (a killed run): its lease ends at once
 // instead of after the grace period.
 bool ProcessGone(const std::string& holder_host, std::int64_t pid, const std::string& our_host) {
-  return holder_host == our_host && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+  if (holder_host != our_host) return false;
+  return (kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) || Zombie(pid);
 }
 
 // Throws naming the run that holds the lease, if one does.
@@ -159,13 +171,26 @@ void StudyDatabase::Heartbeat(std::int64_t run_id) {
   t.Commit();
 }
 
-void StudyDatabase::EndRun(std::int64_t run_id, RunEnd end) {
+void StudyDatabase::EndRun(std::int64_t run_id, RunEnd end, const std::string& message) {
   static constexpr const char* kReasons[] = {"completed", "interrupted", "failed"};
-  db_.Prepare("UPDATE runs SET ended_utc = ?, end_reason = ? WHERE run_id = ?")
+  db_.Prepare("UPDATE runs SET ended_utc = ?, end_reason = ?, end_message = ? WHERE run_id = ?")
       .Bind(1, UtcNow())
       .Bind(2, kReasons[static_cast<int>(end)])
-      .Bind(3, run_id)
+      .Bind(3, message)
+      .Bind(4, run_id)
       .Run();
+}
+
+std::optional<std::string> StudyDatabase::UnfinishedLastRun(std::int64_t study_id) {
+  Statement s = db_.Prepare(
+      "SELECT run_id, host, pid, coalesce(end_reason, 'abandoned'), coalesce(end_message, '') "
+      "FROM runs WHERE study_id = ? ORDER BY run_id DESC LIMIT 1");
+  s.Bind(1, study_id);
+  if (!s.Step() || s.GetText(3) == "completed") return std::nullopt;
+  const std::string message = s.GetText(4);
+  return fmt::format("run {} (host {}, pid {}) {}{}", s.GetInt(0), s.GetText(1), s.GetInt(2),
+                     s.GetText(3) == "abandoned" ? "was killed" : s.GetText(3),
+                     message.empty() ? "" : ": " + message);
 }
 
 int StudyDatabase::AddPoints(const PointTable& table, std::int64_t study_id,
@@ -247,15 +272,18 @@ int StudyDatabase::ReleaseRunningPoints(const PointTable& table, std::int64_t ru
 namespace detail {
 
 void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, std::string_view status, std::string_view message) {
-  c.Prepare(fmt::format("UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ? "
-                        "WHERE point_id = ?",
+                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
+                       std::string_view message) {
+  c.Prepare(fmt::format("UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ?, "
+                        "host = ?, rank = ? WHERE point_id = ?",
                         table.name))
       .Bind(1, status)
       .Bind(2, message)
       .Bind(3, run_id)
       .Bind(4, UtcNow())
-      .Bind(5, point_id)
+      .Bind(5, origin.host)
+      .Bind(6, origin.rank)
+      .Bind(7, point_id)
       .Run();
   c.Prepare("UPDATE runs SET points_done = points_done + 1 WHERE run_id = ?").Bind(1, run_id).Run();
 }

@@ -31,6 +31,12 @@ struct Provenance {
   int jobs = 1;
 };
 
+// Where a point was computed: the host and the MPI rank (0 in a local run).
+struct PointOrigin {
+  std::string host;
+  int rank = 0;
+};
+
 // A table of study points. Its lifecycle columns are the same for every kind: point_id,
 // study_id, point_key, reference_key, status, message, run_id, updated_utc. The parameter
 // columns are the kind's, bound in this order.
@@ -72,7 +78,11 @@ class StudyDatabase {
   // Renews the lease. Throws DbError when another run has taken it over (this process was
   // stopped for longer than the grace period): it must stop writing.
   void Heartbeat(std::int64_t run_id);
-  void EndRun(std::int64_t run_id, RunEnd end);
+  // `message` says why a run that did not complete ended.
+  void EndRun(std::int64_t run_id, RunEnd end, const std::string& message = "");
+  // The last run of the study when it did not complete ("run 3 (host h, pid 42) interrupted:
+  // ..."), for the run that takes up its points. Call before BeginRun.
+  std::optional<std::string> UnfinishedLastRun(std::int64_t study_id);
 
   // Inserts the points not yet in the study as 'pending'; returns how many were new.
   int AddPoints(const PointTable& table, std::int64_t study_id,
@@ -100,12 +110,12 @@ class StudyDatabase {
   Connection db_;
 };
 
-// Stores a point's final status in one transaction with whatever `write_score` writes on the
-// same connection (the kind's score row), and counts it in its run.
+// Stores a point's final status and origin in one transaction with whatever `write_score` writes
+// on the same connection (the kind's score row), and counts it in its run.
 template <typename WriteScore>
 void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, std::string_view status, std::string_view message,
-                       WriteScore write_score);
+                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
+                       std::string_view message, WriteScore write_score);
 
 // Runs one INSERT with `values` bound in order, in its own transaction; returns the new rowid.
 template <typename... T>
@@ -123,17 +133,18 @@ std::string UtcNow();
 
 namespace detail {
 void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, std::string_view status, std::string_view message);
+                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
+                       std::string_view message);
 }  // namespace detail
 
 template <typename WriteScore>
 void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, std::string_view status, std::string_view message,
-                       WriteScore write_score) {
+                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
+                       std::string_view message, WriteScore write_score) {
   Connection& c = db.Raw();
   Transaction t(c);
   write_score(c);
-  detail::UpdatePointStatus(c, table, point_id, run_id, status, message);
+  detail::UpdatePointStatus(c, table, point_id, run_id, origin, status, message);
   t.Commit();
 }
 

@@ -22,6 +22,17 @@ QueryResult StudyProgress(const std::string& database_path) {
       "JOIN studies st USING (study_id) GROUP BY st.name ORDER BY st.name");
 }
 
+QueryResult StudyOrigins(const std::string& database_path) {
+  return RunReadOnlyQuery(
+      database_path,
+      "SELECT st.name AS study, p.host, p.rank, count(*) AS points, "
+      "min(p.point_id) AS first_point, max(p.point_id) AS last_point "
+      "FROM (SELECT study_id, point_id, host, rank FROM points WHERE host IS NOT NULL "
+      "UNION ALL SELECT study_id, point_id, host, rank FROM scene_points WHERE host IS NOT NULL) "
+      "p JOIN studies st USING (study_id) GROUP BY st.name, p.host, p.rank "
+      "ORDER BY st.name, p.host, p.rank");
+}
+
 std::vector<std::string> StudyNames(const std::string& database_path) {
   const QueryResult r = RunReadOnlyQuery(database_path, "SELECT name FROM studies ORDER BY name");
   std::vector<std::string> names;

@@ -13,6 +13,10 @@ namespace shockmap {
 // One row per study: points, counts by status (running ones are held by a run), last update.
 QueryResult StudyProgress(const std::string& database_path);
 
+// Where the stored points were computed: one row per study, host and rank (0 in a local run;
+// 1..N-1 the worker ranks of an MPI job) with its count of points and their point_id range.
+QueryResult StudyOrigins(const std::string& database_path);
+
 // The names of the stored studies, sorted.
 std::vector<std::string> StudyNames(const std::string& database_path);
 

@@ -54,6 +54,36 @@ PointParameters ParametersOf(const StudyPoint& p) {
   return r;
 }
 
+void PutSignal(const UniformSignal& signal, ByteWriter& out) {
+  out.Put(signal.t0_s);
+  out.Put(signal.dt_s);
+  out.Put(signal.values);
+}
+
+UniformSignal GetSignal(ByteReader& in) {
+  UniformSignal signal;
+  signal.t0_s = in.Get<double>();
+  signal.dt_s = in.Get<double>();
+  signal.values = in.GetDoubles();
+  return signal;
+}
+
+void PutShock(const Shock& s, ByteWriter& out) {
+  for (double v : {s.start_s, s.end_s, s.peak_force_n, s.peak_time_s, s.impulse_n_s}) out.Put(v);
+  out.Put(s.n_contacts);
+  out.Put(static_cast<std::uint8_t>(s.truncated));
+}
+
+Shock GetShock(ByteReader& in) {
+  Shock s;
+  for (double* v : {&s.start_s, &s.end_s, &s.peak_force_n, &s.peak_time_s, &s.impulse_n_s}) {
+    *v = in.Get<double>();
+  }
+  s.n_contacts = in.Get<int>();
+  s.truncated = in.Get<std::uint8_t>() != 0;
+  return s;
+}
+
 }  // namespace
 
 CanonicalStudy::CanonicalStudy(StudySpec spec)
@@ -121,9 +151,101 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
 }
 
 void CanonicalStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                                  const Outcome& outcome) const {
-  StoreCanonicalOutcome(db, point_id, run_id, ToString(outcome.status), outcome.message,
+                                  const PointOrigin& origin, const Outcome& outcome) const {
+  StoreCanonicalOutcome(db, point_id, run_id, origin, ToString(outcome.status), outcome.message,
                         outcome.score);
+}
+
+void CanonicalStudy::EncodeReference(const Reference& reference, ByteWriter& out) const {
+  out.Put(reference.key);
+  out.Put(reference.r_k);
+  out.Put(reference.window_s);
+  const ReferenceRun& run = *reference.run;
+  PutSignal(run.tip_m, out);
+  PutSignal(run.force_n, out);
+  out.Put(static_cast<std::uint64_t>(run.shocks.size()));
+  for (const Shock& shock : run.shocks) PutShock(shock, out);
+  const ReferenceSummary& s = run.summary;
+  out.Put(s.n_modes_free);
+  out.Put(s.n_modes_contact);
+  out.Put(s.n_transitions);
+  out.Put(s.shortest_period_s);
+  out.Put(s.wall_s);
+  const ReferenceConvergence& c = run.convergence;
+  for (double v : {c.r_fref, c.r_fref_check, c.difference, c.wall_check_s}) out.Put(v);
+  out.Put(run.wall_s);
+}
+
+CanonicalStudy::Reference CanonicalStudy::DecodeReference(ByteReader& in) const {
+  Reference reference;
+  reference.key = in.GetString();
+  reference.r_k = in.Get<double>();
+  reference.window_s = in.Get<double>();
+  ReferenceRun run;
+  run.tip_m = GetSignal(in);
+  run.force_n = GetSignal(in);
+  const auto n_shocks = in.Get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < n_shocks && !in.AtEnd(); ++i) run.shocks.push_back(GetShock(in));
+  ReferenceSummary& s = run.summary;
+  s.n_modes_free = in.Get<int>();
+  s.n_modes_contact = in.Get<int>();
+  s.n_transitions = in.Get<int>();
+  s.shortest_period_s = in.Get<double>();
+  s.wall_s = in.Get<double>();
+  ReferenceConvergence& c = run.convergence;
+  for (double* v : {&c.r_fref, &c.r_fref_check, &c.difference, &c.wall_check_s}) {
+    *v = in.Get<double>();
+  }
+  run.wall_s = in.Get<double>();
+  reference.run = std::make_shared<const ReferenceRun>(std::move(run));
+  return reference;
+}
+
+void CanonicalStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) const {
+  out.Put(ToString(outcome.status));
+  out.Put(outcome.message);
+  out.Put(static_cast<std::uint8_t>(outcome.score.has_value()));
+  if (!outcome.score) return;
+  const ScoreRow& s = *outcome.score;
+  out.Put(s.reference_id);
+  out.Put(s.err);
+  out.Put(s.srf);
+  for (int v : {s.n_modes, s.n_elements, s.n_dofs, s.n_shocks}) out.Put(v);
+  for (double v : {s.dt_requested_s, s.dt_used_s, s.dt_paper_s, s.dt_sharp_s, s.wall_s, s.cpu_s,
+                   s.max_energy_ratio}) {
+    out.Put(v);
+  }
+  out.Put(s.steps);
+  out.Put(static_cast<std::uint8_t>(s.first_shock.has_value()));
+  if (const auto& f = s.first_shock) {
+    for (double v : {f->start_s, f->impulse_n_s, f->peak_n, f->duration_s}) out.Put(v);
+    out.Put(f->rebounds);
+  }
+  out.Put(s.shocks_json);
+}
+
+CanonicalStudy::Outcome CanonicalStudy::DecodeOutcome(ByteReader& in) const {
+  Outcome outcome;
+  outcome.status = DecodeStatus(in);
+  outcome.message = in.GetString();
+  if (in.Get<std::uint8_t>() == 0) return outcome;
+  ScoreRow& s = outcome.score.emplace();
+  s.reference_id = in.Get<std::int64_t>();
+  s.err = in.GetOptional<double>();
+  s.srf = in.GetOptional<double>();
+  for (int* v : {&s.n_modes, &s.n_elements, &s.n_dofs, &s.n_shocks}) *v = in.Get<int>();
+  for (double* v : {&s.dt_requested_s, &s.dt_used_s, &s.dt_paper_s, &s.dt_sharp_s, &s.wall_s,
+                    &s.cpu_s, &s.max_energy_ratio}) {
+    *v = in.Get<double>();
+  }
+  s.steps = in.Get<std::int64_t>();
+  if (in.Get<std::uint8_t>() != 0) {
+    ShockColumns& f = s.first_shock.emplace();
+    for (double* v : {&f.start_s, &f.impulse_n_s, &f.peak_n, &f.duration_s}) *v = in.Get<double>();
+    f.rebounds = in.Get<int>();
+  }
+  s.shocks_json = in.GetString();
+  return outcome;
 }
 
 }  // namespace shockmap

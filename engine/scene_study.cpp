@@ -134,8 +134,78 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
 }
 
 void SceneStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                              const Outcome& outcome) const {
-  StoreSceneOutcome(db, point_id, run_id, ToString(outcome.status), outcome.message, outcome.score);
+                              const PointOrigin& origin, const Outcome& outcome) const {
+  StoreSceneOutcome(db, point_id, run_id, origin, ToString(outcome.status), outcome.message,
+                    outcome.score);
+}
+
+void SceneStudy::EncodeReference(const Reference& r, ByteWriter& out) const {
+  out.Put(r.reference_id);
+  for (const std::string* text : {&r.reference_key, &r.parameters_json, &r.status, &r.message}) {
+    out.Put(*text);
+  }
+  out.Put(r.output_dt_s);
+  out.Put(r.displacement_m);
+  out.Put(r.force_n);
+  out.Put(r.steps);
+  out.Put(r.wall_s);
+  out.Put(r.max_energy_ratio);
+}
+
+SceneStudy::Reference SceneStudy::DecodeReference(ByteReader& in) const {
+  Reference r;
+  r.reference_id = in.Get<std::int64_t>();
+  for (std::string* text : {&r.reference_key, &r.parameters_json, &r.status, &r.message}) {
+    *text = in.GetString();
+  }
+  r.output_dt_s = in.Get<double>();
+  r.displacement_m = in.GetDoubles();
+  r.force_n = in.GetDoubles();
+  r.steps = in.Get<std::int64_t>();
+  r.wall_s = in.Get<double>();
+  r.max_energy_ratio = in.Get<double>();
+  return r;
+}
+
+void SceneStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) const {
+  out.Put(ToString(outcome.status));
+  out.Put(outcome.message);
+  out.Put(static_cast<std::uint8_t>(outcome.score.has_value()));
+  if (!outcome.score) return;
+  const SceneScoreRow& s = *outcome.score;
+  out.Put(s.reference_id);
+  out.Put(s.err);
+  out.Put(s.srf);
+  for (int v : {s.coordinates, s.zones, s.n_shocks}) out.Put(v);
+  for (double v : {s.dt_used_s, s.dt_paper_s, s.dt_sharp_s, s.wall_s, s.cpu_s, s.max_energy_ratio,
+                   s.largest_force_n}) {
+    out.Put(v);
+  }
+  out.Put(s.steps);
+  out.Put(s.largest_force_zone);
+  out.Put(s.first_shock_peak_n);
+  out.Put(s.first_shock_impulse_n_s);
+}
+
+SceneStudy::Outcome SceneStudy::DecodeOutcome(ByteReader& in) const {
+  Outcome outcome;
+  outcome.status = DecodeStatus(in);
+  outcome.message = in.GetString();
+  if (in.Get<std::uint8_t>() == 0) return outcome;
+  SceneScoreRow& s = outcome.score.emplace();
+  s.reference_id = in.Get<std::int64_t>();
+  s.err = in.GetOptional<double>();
+  s.srf = in.GetOptional<double>();
+  for (int* v : {&s.coordinates, &s.zones, &s.n_shocks}) *v = in.Get<int>();
+  for (double* v : {&s.dt_used_s, &s.dt_paper_s, &s.dt_sharp_s, &s.wall_s, &s.cpu_s,
+                    &s.max_energy_ratio, &s.largest_force_n}) {
+    *v = in.Get<double>();
+  }
+  s.steps = in.Get<std::int64_t>();
+  s.largest_force_zone = in.GetString();
+  s.first_shock_peak_n = in.GetOptional<double>();
+  s.first_shock_impulse_n_s = in.GetOptional<double>();
+  return outcome;
 }
 
 }  // namespace shockmap

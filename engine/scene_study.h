@@ -32,7 +32,12 @@ class SceneStudy {
 
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
   void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                    const Outcome& outcome) const;
+                    const PointOrigin& origin, const Outcome& outcome) const;
+
+  void EncodeReference(const Reference& reference, ByteWriter& out) const;
+  Reference DecodeReference(ByteReader& in) const;
+  void EncodeOutcome(const Outcome& outcome, ByteWriter& out) const;
+  Outcome DecodeOutcome(ByteReader& in) const;
 
  private:
   SceneScoreRow Measure(const Scene& scene, const struct SceneRun& run) const;

@@ -6,16 +6,24 @@
 // db/study_database.h).
 
 #include <algorithm>
+#include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/cpu_timer.h"
 #include "core/input_error.h"
 #include "engine/progress_reporter.h"
 #include "engine/provenance.h"
+#include "engine/remote_workers.h"
 #include "engine/stop_request.h"
 #include "engine/study_kind.h"
 #include "engine/worker_pool.h"
@@ -27,6 +35,8 @@ struct StudyRunOptions {
   int jobs = 0;  // 0: one worker per hardware thread.
   bool retry_failed = false;
   bool progress = true;  // On stderr.
+  // The worker ranks of an MPI job (rank 0 runs the engine), or null: this process's threads.
+  RemoteWorkers* remote = nullptr;
 };
 
 struct StudyRunSummary {
@@ -37,8 +47,14 @@ struct StudyRunSummary {
   long ok = 0, diverged = 0, failed = 0, reference_unconverged = 0;
   int references_computed = 0, references_reused = 0;
   int points_reclaimed = 0;  // Left 'running' by a dead or stopped run, taken up again.
-  int jobs = 0;
-  int stop_signal = 0;  // The signal that interrupted the run, or 0.
+  int jobs = 0;              // Worker threads in all.
+  int worker_ranks = 0;      // Of an MPI job; 0 in a local run.
+  // Tasks a stopped MPI job handed out and got no answer for: "point 17 on rank 2 (host h)".
+  std::vector<std::string> abandoned;
+  // How the study's previous run ended when it did not complete (db UnfinishedLastRun).
+  std::string previous_run;
+  MessageTotals messages;  // Of an MPI job.
+  int stop_signal = 0;     // The signal that interrupted the run, or 0.
   double wall_s = 0.0;
   double reference_wall_s = 0.0;  // Wall time of the reference phase.
   double point_wall_s = 0.0;      // Wall time of the point phase.
@@ -55,18 +71,76 @@ void CountOutcome(RunStatus status, StudyRunSummary& summary);
 template <StudyKind Kind>
 StudyRunSummary RunStudyKind(const Kind& kind, const StudyRunOptions& options);
 
+// On MPI ranks 1..N-1: computes the tasks rank 0's RunStudyKind sends, until it ends the job.
+template <StudyKind Kind>
+void ServeStudyKind(const Kind& kind, RemoteWorkers& remote);
+
 // ---------------------------------------------------------------------------------------------
 
 namespace detail {
+
+// What workers compute, the same in threads and on worker ranks, and the bytes it travels as.
+// A reference task is [0][point index]; a score task is [1][point index][reference key][its id]
+// [error][has reference][reference bytes when the rank does not hold it yet].
+template <StudyKind Kind>
+struct Work {
+  using Point = typename Kind::Point;
+  using Reference = typename Kind::Reference;
+  using Outcome = typename Kind::Outcome;
+  enum TaskType : std::uint8_t { kReferenceTask = 0, kScoreTask = 1 };
+
+  struct ComputedReference {
+    std::string key;
+    std::optional<Reference> reference;
+    std::string error;
+  };
+  // A reference as the points that need it see it: null when it could not be computed.
+  struct ReferenceSlot {
+    std::int64_t id = 0;
+    std::shared_ptr<const Reference> reference;
+    std::string error;
+  };
+
+  static ComputedReference ComputeReference(const Kind& kind, const Point& point) {
+    ComputedReference c{kind.Describe(point).reference_key, std::nullopt, ""};
+    try {
+      c.reference.emplace(kind.ComputeReference(point));
+    } catch (const std::exception& e) {
+      c.error = std::string("reference: ") + e.what();
+    }
+    return c;
+  }
+  static Outcome Score(const Kind& kind, const Point& point, const ReferenceSlot& slot) {
+    if (!slot.reference) return Outcome{RunStatus::kFailed, slot.error, std::nullopt};
+    return kind.Score(point, *slot.reference, slot.id);
+  }
+
+  static void EncodeComputed(const Kind& kind, const ComputedReference& c, ByteWriter& out) {
+    out.Put(c.key);
+    out.Put(c.error);
+    out.Put(static_cast<std::uint8_t>(c.reference.has_value()));
+    if (c.reference) kind.EncodeReference(*c.reference, out);
+  }
+  static ComputedReference DecodeComputed(const Kind& kind, ByteReader& in) {
+    ComputedReference c;
+    c.key = in.GetString();
+    c.error = in.GetString();
+    if (in.Get<std::uint8_t>() != 0) c.reference.emplace(kind.DecodeReference(in));
+    return c;
+  }
+};
 
 template <StudyKind Kind>
 class StudyRun {
  public:
   StudyRun(const Kind& kind, const StudyRunOptions& options)
-      : kind_(kind), options_(options), db_(options.database_path) {
+      : kind_(kind), options_(options), remote_(options.remote), db_(options.database_path) {
     summary_.study = kind.Header().name;
-    summary_.jobs = WorkerCount(options);
+    summary_.jobs =
+        remote_ ? remote_->WorkerRanks() * remote_->ThreadsPerRank() : WorkerCount(options);
+    summary_.worker_ranks = remote_ ? remote_->WorkerRanks() : 0;
     summary_.points_in_study = kind.Points().size();
+    local_origin_ = {CurrentProvenance(summary_.jobs).host, 0};
   }
 
   StudyRunSummary Run() {
@@ -80,27 +154,24 @@ class StudyRun {
       db_.EndRun(run_id_, RunEnd::kFailed);
       throw;
     }
-    if (summary_.stop_signal != 0) db_.ReleaseRunningPoints(kind_.Table(), run_id_);
-    db_.EndRun(run_id_, summary_.stop_signal != 0 ? RunEnd::kInterrupted : RunEnd::kCompleted);
+    if (summary_.stop_signal == 0) {
+      db_.EndRun(run_id_, RunEnd::kCompleted);
+    } else {
+      db_.ReleaseRunningPoints(kind_.Table(), run_id_);
+      db_.EndRun(run_id_, RunEnd::kInterrupted, StopMessage());
+    }
     summary_.wall_s = timer.WallSeconds();
+    if (remote_) summary_.messages = remote_->Totals();
     return summary_;
   }
 
  private:
+  using W = Work<Kind>;
   using Point = typename Kind::Point;
   using Reference = typename Kind::Reference;
   using Outcome = typename Kind::Outcome;
-
-  struct ReferenceSlot {
-    std::int64_t id = 0;
-    std::shared_ptr<const Reference> reference;  // Null when it could not be computed.
-    std::string error;
-  };
-  struct ComputedReference {
-    std::string key;
-    std::optional<Reference> reference;
-    std::string error;
-  };
+  using ComputedReference = typename W::ComputedReference;
+  using ReferenceSlot = typename W::ReferenceSlot;
 
   // The study, its points and this run's lease; the points this spec lists that are to compute.
   void Register() {
@@ -110,11 +181,13 @@ class StudyRun {
     }
     const std::int64_t study_id = db_.UpsertStudy(header.name, header.spec_json);
     std::vector<NewPoint> rows;
-    for (const Point& p : kind_.Points()) {
-      rows.push_back(kind_.Describe(p));
-      by_key_[rows.back().point_key] = &p;
+    const auto& points = kind_.Points();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      rows.push_back(kind_.Describe(points[i]));
+      by_key_[rows.back().point_key] = i;
     }
     db_.AddPoints(kind_.Table(), study_id, rows);
+    summary_.previous_run = db_.UnfinishedLastRun(study_id).value_or("");
     run_id_ = db_.BeginRun(study_id, CurrentProvenance(summary_.jobs));
     summary_.points_reclaimed = db_.ReclaimStalePoints(kind_.Table(), study_id, run_id_);
     // A point whose value was removed from the file keeps its row but is not computed.
@@ -124,10 +197,44 @@ class StudyRun {
     summary_.points_to_compute = to_compute_.size();
   }
 
+  const Point& PointOf(const PendingPoint& p) const {
+    return kind_.Points()[by_key_.at(p.point_key)];
+  }
+
+  // Runs local(i) for i in [0, count) on this process's threads, or the task encode(i, rank)
+  // on the worker ranks whose answer decode(i, bytes) reads back; each result reaches
+  // consume(result, where it was computed) on this thread, the one writer. `what(i)` names a
+  // task a stopped MPI job got no answer for.
+  template <typename Result, typename Local, typename Encode, typename Decode, typename Consume,
+            typename What>
+  void Distribute(std::size_t count, Local local, Encode encode, Decode decode, Consume consume,
+                  What what) {
+    if (remote_ == nullptr) {
+      RunOnWorkers(
+          count, summary_.jobs, local, [&](Result r) { consume(std::move(r), local_origin_); },
+          [&] { return Poll(); });
+      return;
+    }
+    const auto abandoned = remote_->Run(
+        count, encode,
+        [&](std::size_t i, std::string_view bytes, int rank) {
+          ByteReader in(bytes);
+          Result r = decode(i, in);
+          in.ExpectEnd();
+          consume(std::move(r), remote_->OriginOf(rank));
+        },
+        [&] { return Poll(); });
+    for (const AbandonedTask& t : abandoned) {
+      const PointOrigin o = remote_->OriginOf(t.rank);
+      summary_.abandoned.push_back(what(t.index) + " on rank " + std::to_string(t.rank) +
+                                   " (host " + o.host + ")");
+    }
+  }
+
   // Phase 1: each reference once per database, longest first so no worker is left alone with
   // the longest at the end.
   void ComputeReferences() {
-    std::vector<const Point*> missing;
+    std::vector<std::size_t> missing;  // Indices in kind_.Points().
     for (const PendingPoint& p : to_compute_) {
       if (references_.contains(p.reference_key)) continue;
       ReferenceSlot& slot = references_[p.reference_key];
@@ -139,26 +246,31 @@ class StudyRun {
         missing.push_back(by_key_.at(p.point_key));
       }
     }
+    const auto& points = kind_.Points();
     std::ranges::stable_sort(missing, std::greater{},
-                             [&](const Point* p) { return kind_.ReferenceCost(*p); });
+                             [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
     const CpuTimer timer;
-    RunOnWorkers(
-        missing.size(), summary_.jobs, [&](std::size_t i) { return Compute(*missing[i]); },
-        [&](ComputedReference c) { StoreReference(std::move(c)); }, [&] { return Poll(); });
+    Distribute<ComputedReference>(
+        missing.size(),
+        [&](std::size_t i) { return W::ComputeReference(kind_, points[missing[i]]); },
+        [&](std::size_t i, int) {
+          ByteWriter out;
+          out.Put(static_cast<std::uint8_t>(W::kReferenceTask));
+          out.Put(static_cast<std::uint64_t>(missing[i]));
+          return out.Take();
+        },
+        [&](std::size_t, ByteReader& in) { return W::DecodeComputed(kind_, in); },
+        [&](ComputedReference c, const PointOrigin& origin) {
+          StoreReference(std::move(c), origin);
+        },
+        [&](std::size_t i) {
+          return "the reference of point " + kind_.Describe(points[missing[i]]).point_key;
+        });
     summary_.reference_wall_s = timer.WallSeconds();
   }
 
-  ComputedReference Compute(const Point& point) const {
-    ComputedReference c{kind_.Describe(point).reference_key, std::nullopt, ""};
-    try {
-      c.reference.emplace(kind_.ComputeReference(point));
-    } catch (const std::exception& e) {
-      c.error = std::string("reference: ") + e.what();
-    }
-    return c;
-  }
-
-  void StoreReference(ComputedReference c) {
+  // A worker rank keeps the references it computed or was sent.
+  void StoreReference(ComputedReference c, const PointOrigin& origin) {
     ReferenceSlot& slot = references_[c.key];
     if (!c.reference) {
       slot.error = std::move(c.error);
@@ -167,6 +279,7 @@ class StudyRun {
     slot.id = kind_.StoreReference(db_, *c.reference, run_id_);
     slot.reference = std::make_shared<const Reference>(std::move(*c.reference));
     ++summary_.references_computed;
+    if (remote_) held_.insert({origin.rank, c.key});
   }
 
   // Phase 2: the points; each finished point is committed on its own.
@@ -177,25 +290,50 @@ class StudyRun {
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
     ProgressReporter progress(static_cast<long>(to_compute_.size()), stderr, options_.progress);
-    RunOnWorkers(
-        to_compute_.size(), summary_.jobs, [&](std::size_t i) { return Score(to_compute_[i]); },
-        [&](std::pair<std::int64_t, Outcome> out) {
-          kind_.StoreOutcome(db_, out.first, run_id_, out.second);
+    using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
+    Distribute<Scored>(
+        to_compute_.size(),
+        [&](std::size_t i) {
+          const PendingPoint& p = to_compute_[i];
+          return Scored{p.point_id, W::Score(kind_, PointOf(p), references_.at(p.reference_key))};
+        },
+        [&](std::size_t i, int rank) { return ScoreTask(to_compute_[i], rank); },
+        [&](std::size_t i, ByteReader& in) {
+          return Scored{to_compute_[i].point_id, kind_.DecodeOutcome(in)};
+        },
+        [&](Scored out, const PointOrigin& origin) {
+          kind_.StoreOutcome(db_, out.first, run_id_, origin, out.second);
           CountOutcome(out.second.status, summary_);
           progress.Update(static_cast<long>(summary_.points_computed), summary_.diverged,
                           summary_.failed);
         },
-        [&] { return Poll(); });
+        [&](std::size_t i) { return "point " + std::to_string(to_compute_[i].point_id); });
     progress.Finish(static_cast<long>(summary_.points_computed), summary_.diverged,
                     summary_.failed);
     summary_.point_wall_s = timer.WallSeconds();
   }
 
-  std::pair<std::int64_t, Outcome> Score(const PendingPoint& p) const {
-    const Point& point = *by_key_.at(p.point_key);
+  std::string ScoreTask(const PendingPoint& p, int rank) {
     const ReferenceSlot& slot = references_.at(p.reference_key);
-    if (!slot.reference) return {p.point_id, Outcome{RunStatus::kFailed, slot.error, std::nullopt}};
-    return {p.point_id, kind_.Score(point, *slot.reference, slot.id)};
+    ByteWriter out;
+    out.Put(static_cast<std::uint8_t>(W::kScoreTask));
+    out.Put(static_cast<std::uint64_t>(by_key_.at(p.point_key)));
+    out.Put(p.reference_key);
+    out.Put(slot.id);
+    out.Put(slot.error);
+    const bool send = slot.reference && held_.insert({rank, p.reference_key}).second;
+    out.Put(static_cast<std::uint8_t>(send));
+    if (send) kind_.EncodeReference(*slot.reference, out);
+    return out.Take();
+  }
+
+  // Why the run stopped, stored with it: an MPI launcher may no longer show rank 0's output.
+  std::string StopMessage() const {
+    std::string m = std::string(SignalName(summary_.stop_signal)) + " received";
+    for (std::size_t i = 0; i < summary_.abandoned.size(); ++i) {
+      m += (i == 0 ? "; no answer for " : ", ") + summary_.abandoned[i];
+    }
+    return m;
   }
 
   // On the writer between results: renews the lease, and says whether to stop.
@@ -210,13 +348,71 @@ class StudyRun {
 
   const Kind& kind_;
   const StudyRunOptions& options_;
+  RemoteWorkers* remote_;
   StudyDatabase db_;
   StudyRunSummary summary_;
+  PointOrigin local_origin_;
   std::int64_t run_id_ = 0;
-  std::map<std::string, const Point*> by_key_;
+  std::map<std::string, std::size_t> by_key_;  // Point key -> index in kind_.Points().
   std::vector<PendingPoint> to_compute_;
   std::map<std::string, ReferenceSlot> references_;
+  std::set<std::pair<int, std::string>> held_;  // (worker rank, reference key) it holds.
   CpuTimer heartbeat_;
+};
+
+// Executes the tasks of StudyRun on a worker rank, keeping every reference it computed or was
+// sent for the score tasks that follow. Thread-safe: a rank may run tasks on several threads.
+template <StudyKind Kind>
+class StudyWorker {
+ public:
+  explicit StudyWorker(const Kind& kind) : kind_(kind) {}
+
+  // Throws std::runtime_error on a malformed task (never sent by the same build).
+  std::string Execute(std::string_view task) {
+    ByteReader in(task);
+    const auto type = in.Get<std::uint8_t>();
+    const auto& point = kind_.Points().at(static_cast<std::size_t>(in.Get<std::uint64_t>()));
+    ByteWriter out;
+    if (type == W::kReferenceTask) {
+      typename W::ComputedReference c = W::ComputeReference(kind_, point);
+      if (c.reference) Keep(c.key, *c.reference);
+      W::EncodeComputed(kind_, c, out);
+    } else {
+      kind_.EncodeOutcome(W::Score(kind_, point, Slot(in)), out);
+    }
+    return out.Take();
+  }
+
+ private:
+  using W = Work<Kind>;
+
+  typename W::ReferenceSlot Slot(ByteReader& in) {
+    const std::string key = in.GetString();
+    typename W::ReferenceSlot slot;
+    slot.id = in.Get<std::int64_t>();
+    slot.error = in.GetString();
+    if (in.Get<std::uint8_t>() != 0) Keep(key, kind_.DecodeReference(in));
+    in.ExpectEnd();
+    if (slot.error.empty()) {
+      // Another thread of this rank may still be decoding it from the task that brought it.
+      std::unique_lock lock(mutex_);
+      kept_.wait(lock, [&] { return held_.contains(key); });
+      slot.reference = held_.at(key);
+    }
+    return slot;
+  }
+
+  void Keep(const std::string& key, typename Kind::Reference reference) {
+    auto kept = std::make_shared<const typename Kind::Reference>(std::move(reference));
+    const std::lock_guard lock(mutex_);
+    held_[key] = std::move(kept);
+    kept_.notify_all();
+  }
+
+  const Kind& kind_;
+  std::mutex mutex_;
+  std::condition_variable kept_;
+  std::map<std::string, std::shared_ptr<const typename Kind::Reference>> held_;
 };
 
 }  // namespace detail
@@ -224,6 +420,12 @@ class StudyRun {
 template <StudyKind Kind>
 StudyRunSummary RunStudyKind(const Kind& kind, const StudyRunOptions& options) {
   return detail::StudyRun<Kind>(kind, options).Run();
+}
+
+template <StudyKind Kind>
+void ServeStudyKind(const Kind& kind, RemoteWorkers& remote) {
+  detail::StudyWorker<Kind> worker(kind);
+  remote.Serve([&](std::string_view task) { return worker.Execute(task); });
 }
 
 }  // namespace shockmap

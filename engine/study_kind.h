@@ -8,7 +8,9 @@
 //   Reference what its points are scored against, computed once per database and shared;
 //   Outcome   one point's result, as it will be stored: a PointOutcome of the kind's score row.
 // The Compute/Score members run on workers: they are const, thread-safe and never touch the
-// database. Everything that takes a StudyDatabase runs on the one writer.
+// database. Everything that takes a StudyDatabase runs on the one writer. A worker may be
+// another process (an MPI rank) that parsed the same study file: a point travels as its index
+// in Points(), a reference and an outcome as the bytes of their Encode/Decode pair.
 
 #include <concepts>
 #include <cstdint>
@@ -18,6 +20,7 @@
 
 #include "core/run_status.h"
 #include "db/study_database.h"
+#include "engine/byte_codec.h"
 
 namespace shockmap {
 
@@ -37,6 +40,13 @@ struct PointOutcome {
   std::optional<Score> score;
 };
 
+// A status as it travels between ranks: its text. Throws std::runtime_error on an unknown one.
+inline RunStatus DecodeStatus(ByteReader& in) {
+  const std::string text = in.GetString();
+  if (const auto status = RunStatusFromString(text)) return *status;
+  throw std::runtime_error("message with an unknown status \"" + text + "\"");
+}
+
 // A reference as found in the database, with its id.
 template <typename Reference>
 struct StoredReference {
@@ -48,7 +58,8 @@ template <typename K>
 concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K::Point& point,
                              const typename K::Reference& reference,
                              const typename K::Outcome& outcome, const std::string& text,
-                             std::int64_t id) {
+                             std::int64_t id, const PointOrigin& origin, ByteWriter& writer,
+                             ByteReader& reader) {
   { kind.Header() } -> std::same_as<const StudyHeader&>;
   { kind.Table() } -> std::same_as<const PointTable&>;
   // Throws InputError when the study is stored with settings its scores depend on that differ
@@ -71,8 +82,15 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
   { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
   { outcome.status } -> std::convertible_to<RunStatus>;
-  // One transaction: the point's status and score.
-  kind.StoreOutcome(db, id, id, outcome);
+  // One transaction: the point's status, origin and score.
+  kind.StoreOutcome(db, id, id, origin, outcome);
+
+  // Decode(Encode(x)) scores and stores exactly as x does. Decode throws std::runtime_error
+  // on a truncated message.
+  kind.EncodeReference(reference, writer);
+  { kind.DecodeReference(reader) } -> std::same_as<typename K::Reference>;
+  kind.EncodeOutcome(outcome, writer);
+  { kind.DecodeOutcome(reader) } -> std::same_as<typename K::Outcome>;
 };
 
 }  // namespace shockmap

@@ -30,17 +30,31 @@ void CountOutcome(RunStatus status, StudyRunSummary& summary) {
   }
 }
 
-StudyRunSummary RunStudy(const StudyFile& study, const StudyRunOptions& options) {
+namespace {
+
+// Calls f with the study kind of the file.
+template <typename F>
+auto WithKind(const StudyFile& study, F f) {
   return std::visit(
       [&](const auto& spec) {
         using Spec = std::decay_t<decltype(spec)>;
         if constexpr (std::is_same_v<Spec, StudySpec>) {
-          return RunStudyKind(CanonicalStudy(spec), options);
+          return f(CanonicalStudy(spec));
         } else {
-          return RunStudyKind(SceneStudy(spec), options);
+          return f(SceneStudy(spec));
         }
       },
       study);
+}
+
+}  // namespace
+
+StudyRunSummary RunStudy(const StudyFile& study, const StudyRunOptions& options) {
+  return WithKind(study, [&](const auto& kind) { return RunStudyKind(kind, options); });
+}
+
+void ServeStudy(const StudyFile& study, RemoteWorkers& remote) {
+  WithKind(study, [&](const auto& kind) { ServeStudyKind(kind, remote); });
 }
 
 }  // namespace shockmap

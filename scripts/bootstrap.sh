@@ -13,6 +13,7 @@ SHOCKMAP_PACKAGES=(
   libeigen3-dev libgsl-dev libfftw3-dev libsqlite3-dev sqlite3
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libopenmpi-dev openmpi-bin
   gnuplot-nox
 )
 

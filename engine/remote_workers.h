@@ -1,0 +1,68 @@
+#pragma once
+// Workers in other processes (MPI ranks 1..N-1, engine/mpi_workers.cpp) that parsed the same
+// study file. Rank 0 calls Run and alone touches the database; the other ranks call Serve.
+// A task and its result travel as bytes.
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "db/study_database.h"
+
+namespace shockmap {
+
+// A task handed out and not answered when the run stopped.
+struct AbandonedTask {
+  std::size_t index = 0;
+  int rank = 0;
+};
+
+// What rank 0 sent and received: tasks (with the references they carry) and results.
+struct MessageTotals {
+  long tasks = 0, results = 0;
+  double task_bytes = 0, result_bytes = 0;
+  double largest_task = 0, largest_result = 0;
+};
+
+class RemoteWorkers {
+ public:
+  using EncodeTask = std::function<std::string(std::size_t index, int rank)>;
+  using ConsumeResult = std::function<void(std::size_t index, std::string_view bytes, int rank)>;
+  using Execute = std::function<std::string(std::string_view task)>;
+
+  virtual ~RemoteWorkers() = default;
+
+  // This process's rank; rank 0 runs the study, the others serve it.
+  virtual int Rank() const = 0;
+  // Worker ranks (N - 1) and the threads each runs tasks on.
+  virtual int WorkerRanks() const = 0;
+  virtual int ThreadsPerRank() const = 0;
+  virtual PointOrigin OriginOf(int rank) const = 0;
+  // Since the job started, on rank 0.
+  virtual MessageTotals Totals() const = 0;
+
+  // On rank 0: hands task i (encode(i, rank), i in [0, count) in order) to a worker rank as soon
+  // as one of its threads is idle, and passes each result to consume() on the calling thread,
+  // in completion order. poll() runs after every result and every millisecond while waiting;
+  // once it returns true, Run returns at once with the tasks still out: a stopped job does not
+  // wait, since under an MPI launcher SIGTERM is followed by SIGKILL within a second (a dead
+  // worker rank would never answer anyway). Throws std::runtime_error on a malformed message.
+  virtual std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
+                                         const ConsumeResult& consume,
+                                         const std::function<bool()>& poll) = 0;
+
+  // On ranks 1..N-1: runs every task rank 0 sends on ThreadsPerRank() threads and sends back
+  // execute(task), until rank 0 ends the job. execute must not throw.
+  virtual void Serve(const Execute& execute) = 0;
+};
+
+// The workers of this process's MPI job when it was started by an MPI launcher (mpirun, srun)
+// with more than one rank, else null (a local run). `threads` is the threads per worker rank.
+// Ends the job on every rank when the returned object is destroyed (rank 0 first tells the
+// workers). Throws InputError when launched on several ranks by a build without MPI.
+std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads);
+
+}  // namespace shockmap

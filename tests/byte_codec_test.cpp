@@ -1,0 +1,120 @@
+// What travels between MPI ranks: each study kind's references and outcomes come back from their
+// bytes field for field, and a truncated or overlong message is refused, never read past.
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "engine/canonical_study.h"
+#include "engine/scene_study.h"
+
+namespace shockmap {
+namespace {
+
+std::string Source(const std::string& relative) {
+  return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
+}
+
+const CanonicalStudy& Quick() {
+  static const CanonicalStudy kind(
+      std::get<StudySpec>(ReadStudyFile(Source("studies/quick.json"))));
+  return kind;
+}
+
+CanonicalStudy::Outcome ScoredOutcome() {
+  ScoreRow s;
+  s.reference_id = 7;
+  s.err = 0.25;
+  s.n_modes = 12;
+  s.steps = 123456789012;
+  s.first_shock = ShockColumns{1e-3, 2e-2, 150.0, 1e-4, 3};
+  s.shocks_json = R"([{"rebounds":3}])";
+  return {RunStatus::kOk, "message", s};
+}
+
+TEST(ByteCodec, CanonicalOutcomeComesBackFieldForField) {
+  const CanonicalStudy::Outcome sent = ScoredOutcome();
+  ByteWriter out;
+  Quick().EncodeOutcome(sent, out);
+  ByteReader in(out.Bytes());
+  const CanonicalStudy::Outcome got = Quick().DecodeOutcome(in);
+  in.ExpectEnd();
+  EXPECT_EQ(got.status, RunStatus::kOk);
+  EXPECT_EQ(got.message, "message");
+  ASSERT_TRUE(got.score.has_value());
+  EXPECT_EQ(got.score->reference_id, 7);
+  EXPECT_EQ(got.score->err, 0.25);
+  EXPECT_FALSE(got.score->srf.has_value());
+  EXPECT_EQ(got.score->n_modes, 12);
+  EXPECT_EQ(got.score->steps, 123456789012);
+  ASSERT_TRUE(got.score->first_shock.has_value());
+  EXPECT_EQ(got.score->first_shock->rebounds, 3);
+  EXPECT_EQ(got.score->first_shock->peak_n, 150.0);
+  EXPECT_EQ(got.score->shocks_json, sent.score->shocks_json);
+}
+
+TEST(ByteCodec, CanonicalReferenceComesBackSampleForSample) {
+  ReferenceRun run;
+  run.tip_m = {0.0, 1e-5, {0.1, -0.2, 0.30000000000000004}};
+  run.force_n = {0.0, 1e-5, {0.0, 5.0, 0.0}};
+  run.shocks.push_back(Shock{1e-5, 2e-5, 5.0, 1e-5, 5e-5, 1, false});
+  run.summary.n_transitions = 4;
+  run.convergence.difference = 1e-4;
+  const CanonicalStudy::Reference sent{"key", 1000.0, 0.05,
+                                       std::make_shared<const ReferenceRun>(run)};
+  ByteWriter out;
+  Quick().EncodeReference(sent, out);
+  ByteReader in(out.Bytes());
+  const CanonicalStudy::Reference got = Quick().DecodeReference(in);
+  in.ExpectEnd();
+  EXPECT_EQ(got.key, "key");
+  EXPECT_EQ(got.run->tip_m.values, run.tip_m.values);
+  EXPECT_EQ(got.run->force_n.values, run.force_n.values);
+  ASSERT_EQ(got.run->shocks.size(), 1u);
+  EXPECT_EQ(got.run->shocks[0].impulse_n_s, 5e-5);
+  EXPECT_EQ(got.run->summary.n_transitions, 4);
+  EXPECT_EQ(got.run->convergence.difference, 1e-4);
+}
+
+TEST(ByteCodec, SceneOutcomeComesBackFieldForField) {
+  const SceneStudy scene(
+      std::get<SceneStudySpec>(ReadStudyFile(Source("studies/bundle_row_truncation.json"))));
+  SceneScoreRow s;
+  s.srf = 1.5;
+  s.largest_force_zone = "pin_2";
+  s.first_shock_impulse_n_s = 0.03;
+  ByteWriter out;
+  scene.EncodeOutcome({RunStatus::kDiverged, "why", s}, out);
+  ByteReader in(out.Bytes());
+  const SceneStudy::Outcome got = scene.DecodeOutcome(in);
+  in.ExpectEnd();
+  EXPECT_EQ(got.status, RunStatus::kDiverged);
+  ASSERT_TRUE(got.score.has_value());
+  EXPECT_EQ(got.score->srf, 1.5);
+  EXPECT_FALSE(got.score->err.has_value());
+  EXPECT_EQ(got.score->largest_force_zone, "pin_2");
+  EXPECT_EQ(got.score->first_shock_impulse_n_s, 0.03);
+}
+
+TEST(ByteCodec, TruncatedOrOverlongMessagesAreRefused) {
+  ByteWriter out;
+  Quick().EncodeOutcome(ScoredOutcome(), out);
+  const std::string bytes = out.Bytes();
+  for (std::size_t cut : {std::size_t{0}, std::size_t{5}, bytes.size() / 2, bytes.size() - 1}) {
+    ByteReader in(std::string_view(bytes).substr(0, cut));
+    EXPECT_THROW(Quick().DecodeOutcome(in), std::runtime_error) << "cut at " << cut;
+  }
+  const std::string longer = bytes + "x";
+  ByteReader in(longer);
+  Quick().DecodeOutcome(in);
+  EXPECT_THROW(in.ExpectEnd(), std::runtime_error);
+  // A length prefix larger than the message.
+  ByteWriter huge;
+  huge.Put(std::uint64_t{1} << 60);
+  ByteReader h(huge.Bytes());
+  EXPECT_THROW(h.GetDoubles(), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace shockmap
