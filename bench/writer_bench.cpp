@@ -1,7 +1,7 @@
 // The one writer's throughput (Google Benchmark): what rank 0 of an MPI job (or the calling
 // thread of a local run) does per finished point, with synthetic results and no physics:
 // decode the outcome's bytes as they arrive from a worker rank, then commit it, one point per
-// transaction, through the study kind's StoreOutcome, as the engine does.
+// transaction, through StoreOutcome, as the engine does.
 //   Writer/Canonical   a scored point of studies/quick.json (a typical shocks_json)
 //   Writer/Scene       a scored point of studies/bundle_row_truncation.json
 // items_per_second is results committed per wall-clock second (the CPU column: per second of
@@ -91,13 +91,13 @@ void Writer(benchmark::State& state, const Kind& kind) {
   const std::int64_t run = db.BeginRun(study, Provenance{"bench", "", "", "bench", 1, 1});
   const std::int64_t reference = kind.StoreReference(db, SyntheticReference(kind), run);
   ByteWriter out;
-  kind.EncodeOutcome(SyntheticOutcome(kind, reference), out);
+  EncodeOutcome(kind, SyntheticOutcome(kind, reference), out);
   const std::string bytes = out.Take();
   const PointOrigin origin{"worker-host", 1};
   std::int64_t i = 0;
   for (auto _ : state) {
     ByteReader in(bytes);
-    kind.StoreOutcome(db, 1 + i++ % kPoints, run, origin, kind.DecodeOutcome(in));
+    StoreOutcome(kind, db, 1 + i++ % kPoints, run, origin, DecodeOutcome(kind, in));
   }
   state.SetItemsProcessed(state.iterations());
   state.counters["bytes_per_result"] = static_cast<double>(bytes.size());

@@ -33,6 +33,8 @@ std::optional<Member> FirstShock(const std::optional<ShockColumns>& f, Member Sh
   return f ? std::optional<Member>((*f).*m) : std::nullopt;
 }
 
+}  // namespace
+
 void WriteScore(Connection& db, std::int64_t point_id, const std::optional<ScoreRow>& score) {
   db.Prepare("DELETE FROM scores WHERE point_id = ?").Bind(1, point_id).Run();
   if (!score) return;
@@ -53,28 +55,16 @@ void WriteScore(Connection& db, std::int64_t point_id, const std::optional<Score
       .Run();
 }
 
-}  // namespace
-
-void StoreCanonicalOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                           const PointOrigin& origin, const std::string& status,
-                           const std::string& message, const std::optional<ScoreRow>& score) {
-  StorePointOutcome(db, kCanonicalPoints, point_id, run_id, origin, status, message,
-                    [&](Connection& c) { WriteScore(c, point_id, score); });
-}
-
 std::optional<ReferenceRow> FindReference(StudyDatabase& db, const std::string& reference_key) {
-  Statement s = db.Raw().Prepare(
-      "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, n_modes_free, "
-      "n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, force_n, shocks_json "
-      "FROM reference_runs WHERE reference_key = ?");
-  s.Bind(1, reference_key);
-  if (!s.Step()) return std::nullopt;
-  ReferenceRow r;
-  r.reference_key = reference_key;
-  s.ReadColumns(r.reference_id, r.r_k, r.r_fref, r.r_fref_check, r.window_s, r.convergence,
-                r.n_modes_free, r.n_modes_contact, r.n_transitions, r.wall_s, r.output_dt_s,
-                r.tip_m, r.force_n, r.shocks_json);
-  return r;
+  using R = ReferenceRow;
+  return FindRow(db,
+                 "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, "
+                 "n_modes_free, n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, "
+                 "force_n, shocks_json FROM reference_runs WHERE reference_key = ?",
+                 reference_key, &R::reference_key, &R::reference_id, &R::r_k, &R::r_fref,
+                 &R::r_fref_check, &R::window_s, &R::convergence, &R::n_modes_free,
+                 &R::n_modes_contact, &R::n_transitions, &R::wall_s, &R::output_dt_s, &R::tip_m,
+                 &R::force_n, &R::shocks_json);
 }
 
 std::int64_t StoreReference(StudyDatabase& db, const ReferenceRow& r, std::int64_t run_id) {

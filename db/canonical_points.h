@@ -57,10 +57,9 @@ struct ReferenceRow {
   std::string shocks_json = "[]";
 };
 
-// A point's final status with its score when it was computed; one transaction.
-void StoreCanonicalOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                           const PointOrigin& origin, const std::string& status,
-                           const std::string& message, const std::optional<ScoreRow>& score);
+// Replaces the point's score row by `score` (none when it was not computed), on the writer's
+// connection inside StorePointOutcome's transaction.
+void WriteScore(Connection& c, std::int64_t point_id, const std::optional<ScoreRow>& score);
 
 std::optional<ReferenceRow> FindReference(StudyDatabase& db, const std::string& reference_key);
 // Stores a new reference and returns its id.

@@ -4,8 +4,6 @@ namespace shockmap {
 
 const PointTable kScenePoints{"scene_points", {"parameters_json"}};
 
-namespace {
-
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneScoreRow>& score) {
   Statement update = c.Prepare(
       "UPDATE scene_points SET reference_id = ?, err = ?, srf = ?, coordinates = ?, zones = ?, "
@@ -24,26 +22,15 @@ void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneS
   update.Bind(18, point_id).Run();
 }
 
-}  // namespace
-
-void StoreSceneOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                       const PointOrigin& origin, const std::string& status,
-                       const std::string& message, const std::optional<SceneScoreRow>& score) {
-  StorePointOutcome(db, kScenePoints, point_id, run_id, origin, status, message,
-                    [&](Connection& c) { WriteScore(c, point_id, score); });
-}
-
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key) {
-  Statement s = db.Raw().Prepare(
-      "SELECT reference_id, parameters_json, status, message, output_dt_s, displacement_m, "
-      "force_n, steps, wall_s, max_energy_ratio FROM scene_references WHERE reference_key = ?");
-  s.Bind(1, key);
-  if (!s.Step()) return std::nullopt;
-  SceneReferenceRow r;
-  r.reference_key = key;
-  s.ReadColumns(r.reference_id, r.parameters_json, r.status, r.message, r.output_dt_s,
-                r.displacement_m, r.force_n, r.steps, r.wall_s, r.max_energy_ratio);
-  return r;
+  using R = SceneReferenceRow;
+  return FindRow(db,
+                 "SELECT reference_id, parameters_json, status, message, output_dt_s, "
+                 "displacement_m, force_n, steps, wall_s, max_energy_ratio FROM scene_references "
+                 "WHERE reference_key = ?",
+                 key, &R::reference_key, &R::reference_id, &R::parameters_json, &R::status,
+                 &R::message, &R::output_dt_s, &R::displacement_m, &R::force_n, &R::steps,
+                 &R::wall_s, &R::max_energy_ratio);
 }
 
 std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& r,

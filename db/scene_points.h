@@ -37,10 +37,9 @@ struct SceneReferenceRow {
   double wall_s = 0.0, max_energy_ratio = 0.0;
 };
 
-// A point's final status with its score when it was computed; one transaction.
-void StoreSceneOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                       const PointOrigin& origin, const std::string& status,
-                       const std::string& message, const std::optional<SceneScoreRow>& score);
+// Sets the point's score columns from `score` (NULL when it was not computed), on the writer's
+// connection inside StorePointOutcome's transaction.
+void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneScoreRow>& score);
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key);
 // Stores a new reference and returns its id.
 std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& reference,

@@ -128,6 +128,20 @@ std::int64_t InsertRow(StudyDatabase& db, std::string_view sql, const T&... valu
   return id;
 }
 
+// The row of `sql` (one ? bound to `key`) read into `members` of a Row in column order, with
+// `key_member` set to the key; nullopt when there is none.
+template <typename Row, typename... M>
+std::optional<Row> FindRow(StudyDatabase& db, std::string_view sql, const std::string& key,
+                           std::string Row::*key_member, M Row::*... members) {
+  Statement s = db.Raw().Prepare(sql);
+  s.Bind(1, key);
+  if (!s.Step()) return std::nullopt;
+  Row row;
+  row.*key_member = key;
+  s.ReadColumns((row.*members)...);
+  return row;
+}
+
 // The current UTC time as ISO 8601 with milliseconds.
 std::string UtcNow();
 

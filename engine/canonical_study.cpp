@@ -4,7 +4,6 @@
 
 #include "engine/reference_store.h"
 #include "formats/comparison_json.h"
-#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -89,20 +88,9 @@ Shock GetShock(ByteReader& in) {
 CanonicalStudy::CanonicalStudy(StudySpec spec)
     : spec_(std::move(spec)), header_{spec_.file, spec_.name, spec_.spec_json} {}
 
-void CanonicalStudy::CheckStoredSpec(const std::string& stored_json,
+bool CanonicalStudy::KeepsSettingsOf(const nlohmann::json& stored,
                                      const std::string& database_path) const {
-  const nlohmann::json stored =
-      ParseJsonText(stored_json, database_path + ": stored study " + spec_.name);
-  if (StudyKindOf(stored, database_path) != StudyFileKind::kCanonical) {
-    throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
-                     database_path + " as a study of another kind; give this one a new name");
-  }
-  if (SettingsKey(ParseStudySpec(stored, database_path)) != SettingsKey(spec_)) {
-    throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
-                     database_path +
-                     " with other problem or scoring settings; its stored scores depend on them. "
-                     "Give the study a new name (grid axes may change freely).");
-  }
+  return SettingsKey(ParseStudySpec(stored, database_path)) == SettingsKey(spec_);
 }
 
 NewPoint CanonicalStudy::Describe(const Point& point) const {
@@ -150,12 +138,6 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
   return out;
 }
 
-void CanonicalStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                                  const PointOrigin& origin, const Outcome& outcome) const {
-  StoreCanonicalOutcome(db, point_id, run_id, origin, ToString(outcome.status), outcome.message,
-                        outcome.score);
-}
-
 void CanonicalStudy::EncodeReference(const Reference& reference, ByteWriter& out) const {
   out.Put(reference.key);
   out.Put(reference.r_k);
@@ -201,12 +183,7 @@ CanonicalStudy::Reference CanonicalStudy::DecodeReference(ByteReader& in) const 
   return reference;
 }
 
-void CanonicalStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) const {
-  out.Put(ToString(outcome.status));
-  out.Put(outcome.message);
-  out.Put(static_cast<std::uint8_t>(outcome.score.has_value()));
-  if (!outcome.score) return;
-  const ScoreRow& s = *outcome.score;
+void CanonicalStudy::EncodeScore(const ScoreRow& s, ByteWriter& out) const {
   out.Put(s.reference_id);
   out.Put(s.err);
   out.Put(s.srf);
@@ -224,12 +201,8 @@ void CanonicalStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) cons
   out.Put(s.shocks_json);
 }
 
-CanonicalStudy::Outcome CanonicalStudy::DecodeOutcome(ByteReader& in) const {
-  Outcome outcome;
-  outcome.status = DecodeStatus(in);
-  outcome.message = in.GetString();
-  if (in.Get<std::uint8_t>() == 0) return outcome;
-  ScoreRow& s = outcome.score.emplace();
+ScoreRow CanonicalStudy::DecodeScore(ByteReader& in) const {
+  ScoreRow s;
   s.reference_id = in.Get<std::int64_t>();
   s.err = in.GetOptional<double>();
   s.srf = in.GetOptional<double>();
@@ -245,7 +218,7 @@ CanonicalStudy::Outcome CanonicalStudy::DecodeOutcome(ByteReader& in) const {
     f.rebounds = in.Get<int>();
   }
   s.shocks_json = in.GetString();
-  return outcome;
+  return s;
 }
 
 }  // namespace shockmap

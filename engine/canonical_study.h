@@ -27,25 +27,31 @@ class CanonicalStudy {
 
   const StudyHeader& Header() const { return header_; }
   const PointTable& Table() const { return kCanonicalPoints; }
-  void CheckStoredSpec(const std::string& stored_json, const std::string& database_path) const;
+  static constexpr StudyFileKind kFileKind = StudyFileKind::kCanonical;
+  static constexpr std::string_view kLifelongSettings = "other problem or scoring settings";
+  static constexpr std::string_view kChangeableSettings = "grid axes";
+  bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
+  // Keyed by its parameters; its reference by the problem, window and reference settings.
   NewPoint Describe(const Point& point) const;
 
+  // The reference's truncation R_fref: the number of modes and transitions grow with it.
   double ReferenceCost(const Point& point) const;
+  // The piecewise-modal solution at R_fref and its check at R_fref / 3 (docs/physics.md §2).
   Reference ComputeReference(const Point& point) const;
   std::optional<StoredReference<Reference>> FindReference(StudyDatabase& db,
                                                           const std::string& key) const;
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
 
+  // The point's scheme on the canonical scene, Err and SRf against the reference; nothing
+  // scored when the reference is unconverged (docs/physics.md §4).
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
-  void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                    const PointOrigin& origin, const Outcome& outcome) const;
 
   void EncodeReference(const Reference& reference, ByteWriter& out) const;
   Reference DecodeReference(ByteReader& in) const;
-  void EncodeOutcome(const Outcome& outcome, ByteWriter& out) const;
-  Outcome DecodeOutcome(ByteReader& in) const;
+  void EncodeScore(const ScoreRow& score, ByteWriter& out) const;
+  ScoreRow DecodeScore(ByteReader& in) const;
 
  private:
   StudySpec spec_;

@@ -5,7 +5,6 @@
 
 #include "compare/scene_run.h"
 #include "core/input_error.h"
-#include "formats/json_reader.h"
 #include "validation/impulse_ratio.h"
 #include "validation/spectral_error.h"
 
@@ -14,21 +13,9 @@ namespace shockmap {
 SceneStudy::SceneStudy(SceneStudySpec spec)
     : spec_(std::move(spec)), header_{spec_.file, spec_.name, spec_.spec_json} {}
 
-void SceneStudy::CheckStoredSpec(const std::string& stored_json,
-                                 const std::string& database_path) const {
-  const nlohmann::json previous =
-      ParseJsonText(stored_json, database_path + ": stored study " + spec_.name);
-  if (StudyKindOf(previous, database_path) != StudyFileKind::kSceneSweep) {
-    throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
-                     database_path + " as a study of another kind; give this one a new name");
-  }
-  if (previous.value("settings", nlohmann::json()) !=
-      nlohmann::json::parse(SceneSettingsKey(spec_))) {
-    throw InputError(spec_.file + ": study \"" + spec_.name + "\" already exists in " +
-                     database_path +
-                     " with another scene, reference or scoring; its stored scores depend on them. "
-                     "Give the study a new name (the sweep may change freely).");
-  }
+bool SceneStudy::KeepsSettingsOf(const nlohmann::json& stored, const std::string&) const {
+  return stored.value("settings", nlohmann::json()) ==
+         nlohmann::json::parse(SceneSettingsKey(spec_));
 }
 
 NewPoint SceneStudy::Describe(const Point& point) const {
@@ -133,12 +120,6 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
   return out;
 }
 
-void SceneStudy::StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                              const PointOrigin& origin, const Outcome& outcome) const {
-  StoreSceneOutcome(db, point_id, run_id, origin, ToString(outcome.status), outcome.message,
-                    outcome.score);
-}
-
 void SceneStudy::EncodeReference(const Reference& r, ByteWriter& out) const {
   out.Put(r.reference_id);
   for (const std::string* text : {&r.reference_key, &r.parameters_json, &r.status, &r.message}) {
@@ -167,12 +148,7 @@ SceneStudy::Reference SceneStudy::DecodeReference(ByteReader& in) const {
   return r;
 }
 
-void SceneStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) const {
-  out.Put(ToString(outcome.status));
-  out.Put(outcome.message);
-  out.Put(static_cast<std::uint8_t>(outcome.score.has_value()));
-  if (!outcome.score) return;
-  const SceneScoreRow& s = *outcome.score;
+void SceneStudy::EncodeScore(const SceneScoreRow& s, ByteWriter& out) const {
   out.Put(s.reference_id);
   out.Put(s.err);
   out.Put(s.srf);
@@ -187,12 +163,8 @@ void SceneStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) const {
   out.Put(s.first_shock_impulse_n_s);
 }
 
-SceneStudy::Outcome SceneStudy::DecodeOutcome(ByteReader& in) const {
-  Outcome outcome;
-  outcome.status = DecodeStatus(in);
-  outcome.message = in.GetString();
-  if (in.Get<std::uint8_t>() == 0) return outcome;
-  SceneScoreRow& s = outcome.score.emplace();
+SceneScoreRow SceneStudy::DecodeScore(ByteReader& in) const {
+  SceneScoreRow s;
   s.reference_id = in.Get<std::int64_t>();
   s.err = in.GetOptional<double>();
   s.srf = in.GetOptional<double>();
@@ -205,7 +177,7 @@ SceneStudy::Outcome SceneStudy::DecodeOutcome(ByteReader& in) const {
   s.largest_force_zone = in.GetString();
   s.first_shock_peak_n = in.GetOptional<double>();
   s.first_shock_impulse_n_s = in.GetOptional<double>();
-  return outcome;
+  return s;
 }
 
 }  // namespace shockmap

@@ -19,25 +19,30 @@ class SceneStudy {
 
   const StudyHeader& Header() const { return header_; }
   const PointTable& Table() const { return kScenePoints; }
-  void CheckStoredSpec(const std::string& stored_json, const std::string& database_path) const;
+  static constexpr StudyFileKind kFileKind = StudyFileKind::kSceneSweep;
+  static constexpr std::string_view kLifelongSettings = "another scene, reference or scoring";
+  static constexpr std::string_view kChangeableSettings = "the sweep";
+  bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
+  // Keyed by its parameters' JSON; its reference by the scene with the refined settings over it.
   NewPoint Describe(const Point& point) const;
 
   double ReferenceCost(const Point&) const { return 1.0; }  // Every reference is the same run.
+  // The point's scene with the study's reference settings applied over its parameters.
   Reference ComputeReference(const Point& point) const;
   std::optional<StoredReference<Reference>> FindReference(StudyDatabase& db,
                                                           const std::string& key) const;
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
 
+  // The point's scene, Err on the scored displacement and SRf on the scored zone's first
+  // shock against the reference's histories; a failed reference fails the point.
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
-  void StoreOutcome(StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                    const PointOrigin& origin, const Outcome& outcome) const;
 
   void EncodeReference(const Reference& reference, ByteWriter& out) const;
   Reference DecodeReference(ByteReader& in) const;
-  void EncodeOutcome(const Outcome& outcome, ByteWriter& out) const;
-  Outcome DecodeOutcome(ByteReader& in) const;
+  void EncodeScore(const SceneScoreRow& score, ByteWriter& out) const;
+  SceneScoreRow DecodeScore(ByteReader& in) const;
 
  private:
   SceneScoreRow Measure(const Scene& scene, const struct SceneRun& run) const;

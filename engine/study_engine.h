@@ -174,11 +174,26 @@ class StudyRun {
   using ReferenceSlot = typename W::ReferenceSlot;
 
   // The study, its points and this run's lease; the points this spec lists that are to compute.
+  // Throws InputError when the study is stored as another kind, or with other lifelong settings
+  // (its stored scores would no longer match its spec).
+  void CheckStoredSpec(const std::string& text) const {
+    const StudyHeader& h = kind_.Header();
+    const std::string& db = options_.database_path;
+    const nlohmann::json stored = ParseJsonText(text, db + ": stored study " + h.name);
+    const std::string exists = h.file + ": study \"" + h.name + "\" already exists in " + db;
+    if (StudyKindOf(stored, db) != Kind::kFileKind) {
+      throw InputError(exists + " as a study of another kind; give this one a new name");
+    }
+    if (!kind_.KeepsSettingsOf(stored, db)) {
+      throw InputError(exists + " with " + std::string(Kind::kLifelongSettings) +
+                       "; its stored scores depend on them. Give the study a new name (" +
+                       std::string(Kind::kChangeableSettings) + " may change freely).");
+    }
+  }
+
   void Register() {
     const StudyHeader& header = kind_.Header();
-    if (const auto stored = db_.StoredSpec(header.name)) {
-      kind_.CheckStoredSpec(*stored, options_.database_path);
-    }
+    if (const auto stored = db_.StoredSpec(header.name)) CheckStoredSpec(*stored);
     const std::int64_t study_id = db_.UpsertStudy(header.name, header.spec_json);
     std::vector<NewPoint> rows;
     const auto& points = kind_.Points();
@@ -299,10 +314,10 @@ class StudyRun {
         },
         [&](std::size_t i, int rank) { return ScoreTask(to_compute_[i], rank); },
         [&](std::size_t i, ByteReader& in) {
-          return Scored{to_compute_[i].point_id, kind_.DecodeOutcome(in)};
+          return Scored{to_compute_[i].point_id, DecodeOutcome(kind_, in)};
         },
         [&](Scored out, const PointOrigin& origin) {
-          kind_.StoreOutcome(db_, out.first, run_id_, origin, out.second);
+          StoreOutcome(kind_, db_, out.first, run_id_, origin, out.second);
           CountOutcome(out.second.status, summary_);
           progress.Update(static_cast<long>(summary_.points_computed), summary_.diverged,
                           summary_.failed);
@@ -378,7 +393,7 @@ class StudyWorker {
       if (c.reference) Keep(c.key, *c.reference);
       W::EncodeComputed(kind_, c, out);
     } else {
-      kind_.EncodeOutcome(W::Score(kind_, point, Slot(in)), out);
+      EncodeOutcome(kind_, W::Score(kind_, point, Slot(in)), out);
     }
     return out.Take();
   }

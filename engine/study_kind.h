@@ -21,6 +21,7 @@
 #include "core/run_status.h"
 #include "db/study_database.h"
 #include "engine/byte_codec.h"
+#include "formats/study_file.h"
 
 namespace shockmap {
 
@@ -59,12 +60,17 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
                              const typename K::Reference& reference,
                              const typename K::Outcome& outcome, const std::string& text,
                              std::int64_t id, const PointOrigin& origin, ByteWriter& writer,
-                             ByteReader& reader) {
+                             ByteReader& reader, const nlohmann::json& stored) {
   { kind.Header() } -> std::same_as<const StudyHeader&>;
   { kind.Table() } -> std::same_as<const PointTable&>;
-  // Throws InputError when the study is stored with settings its scores depend on that differ
-  // from this spec's (`text`: the stored spec JSON; the database path is the second argument).
-  kind.CheckStoredSpec(text, text);
+  // The study file kind it reads, what a stored study keeps for life (its scores depend on
+  // it: "other problem or scoring settings") and what may change ("grid axes").
+  { K::kFileKind } -> std::convertible_to<StudyFileKind>;
+  { K::kLifelongSettings } -> std::convertible_to<std::string_view>;
+  { K::kChangeableSettings } -> std::convertible_to<std::string_view>;
+  // True when a stored spec of this kind (parsed JSON; `text` names the database) keeps the
+  // lifelong settings of this one. May throw InputError when the stored spec is unreadable.
+  { kind.KeepsSettingsOf(stored, text) } -> std::convertible_to<bool>;
   { kind.Points() } -> std::same_as<const std::vector<typename K::Point>&>;
   // The point's keys and parameter row.
   { kind.Describe(point) } -> std::same_as<NewPoint>;
@@ -82,15 +88,43 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
   { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
   { outcome.status } -> std::convertible_to<RunStatus>;
-  // One transaction: the point's status, origin and score.
-  kind.StoreOutcome(db, id, id, origin, outcome);
+  // The score row's writer in db/ (found by its type): StoreOutcome below calls it inside the
+  // transaction that stores the point's status.
+  WriteScore(db.Raw(), id, outcome.score);
 
   // Decode(Encode(x)) scores and stores exactly as x does. Decode throws std::runtime_error
   // on a truncated message.
   kind.EncodeReference(reference, writer);
   { kind.DecodeReference(reader) } -> std::same_as<typename K::Reference>;
-  kind.EncodeOutcome(outcome, writer);
-  { kind.DecodeOutcome(reader) } -> std::same_as<typename K::Outcome>;
+  kind.EncodeScore(*outcome.score, writer);
+  { kind.DecodeScore(reader) } -> std::same_as<typename decltype(outcome.score)::value_type>;
 };
+
+// One transaction: the point's status, origin and score row.
+template <StudyKind Kind>
+void StoreOutcome(const Kind& kind, StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
+                  const PointOrigin& origin, const typename Kind::Outcome& outcome) {
+  StorePointOutcome(db, kind.Table(), point_id, run_id, origin, ToString(outcome.status),
+                    outcome.message,
+                    [&](Connection& c) { WriteScore(c, point_id, outcome.score); });
+}
+
+// An outcome as it travels between ranks: status, message, then the kind's score row if any.
+template <StudyKind Kind>
+void EncodeOutcome(const Kind& kind, const typename Kind::Outcome& outcome, ByteWriter& out) {
+  out.Put(ToString(outcome.status));
+  out.Put(outcome.message);
+  out.Put(static_cast<std::uint8_t>(outcome.score.has_value()));
+  if (outcome.score) kind.EncodeScore(*outcome.score, out);
+}
+
+template <StudyKind Kind>
+typename Kind::Outcome DecodeOutcome(const Kind& kind, ByteReader& in) {
+  typename Kind::Outcome outcome;
+  outcome.status = DecodeStatus(in);
+  outcome.message = in.GetString();
+  if (in.Get<std::uint8_t>() != 0) outcome.score = kind.DecodeScore(in);
+  return outcome;
+}
 
 }  // namespace shockmap

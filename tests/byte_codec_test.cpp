@@ -36,9 +36,9 @@ CanonicalStudy::Outcome ScoredOutcome() {
 TEST(ByteCodec, CanonicalOutcomeComesBackFieldForField) {
   const CanonicalStudy::Outcome sent = ScoredOutcome();
   ByteWriter out;
-  Quick().EncodeOutcome(sent, out);
+  EncodeOutcome(Quick(), sent, out);
   ByteReader in(out.Bytes());
-  const CanonicalStudy::Outcome got = Quick().DecodeOutcome(in);
+  const CanonicalStudy::Outcome got = DecodeOutcome(Quick(), in);
   in.ExpectEnd();
   EXPECT_EQ(got.status, RunStatus::kOk);
   EXPECT_EQ(got.message, "message");
@@ -85,9 +85,9 @@ TEST(ByteCodec, SceneOutcomeComesBackFieldForField) {
   s.largest_force_zone = "pin_2";
   s.first_shock_impulse_n_s = 0.03;
   ByteWriter out;
-  scene.EncodeOutcome({RunStatus::kDiverged, "why", s}, out);
+  EncodeOutcome(scene, {RunStatus::kDiverged, "why", s}, out);
   ByteReader in(out.Bytes());
-  const SceneStudy::Outcome got = scene.DecodeOutcome(in);
+  const SceneStudy::Outcome got = DecodeOutcome(scene, in);
   in.ExpectEnd();
   EXPECT_EQ(got.status, RunStatus::kDiverged);
   ASSERT_TRUE(got.score.has_value());
@@ -99,15 +99,15 @@ TEST(ByteCodec, SceneOutcomeComesBackFieldForField) {
 
 TEST(ByteCodec, TruncatedOrOverlongMessagesAreRefused) {
   ByteWriter out;
-  Quick().EncodeOutcome(ScoredOutcome(), out);
+  EncodeOutcome(Quick(), ScoredOutcome(), out);
   const std::string bytes = out.Bytes();
   for (std::size_t cut : {std::size_t{0}, std::size_t{5}, bytes.size() / 2, bytes.size() - 1}) {
     ByteReader in(std::string_view(bytes).substr(0, cut));
-    EXPECT_THROW(Quick().DecodeOutcome(in), std::runtime_error) << "cut at " << cut;
+    EXPECT_THROW(DecodeOutcome(Quick(), in), std::runtime_error) << "cut at " << cut;
   }
   const std::string longer = bytes + "x";
   ByteReader in(longer);
-  Quick().DecodeOutcome(in);
+  DecodeOutcome(Quick(), in);
   EXPECT_THROW(in.ExpectEnd(), std::runtime_error);
   // A length prefix larger than the message.
   ByteWriter huge;
