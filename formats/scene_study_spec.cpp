@@ -74,6 +74,87 @@ SceneParameters ParseParameters(const Json& value, const Json& scene, const std:
   return parameters;
 }
 
+using Axes = std::vector<std::pair<std::string, std::vector<double>>>;
+
+// The sweep's axes, by parameter path; refused beyond kMaxStudyPoints points in all.
+Axes ParseSweep(JsonObjectReader& r, const Json& scene, const std::string& file) {
+  const Json* sweep = r.Get("sweep");
+  if (sweep == nullptr || !sweep->is_object() || sweep->empty()) {
+    r.Fail("sweep", "expected {\"parameter.path\": [values...], ...} with at least one parameter");
+  }
+  Axes axes;
+  double count = 1.0;
+  for (const auto& [path, values] : sweep->items()) {
+    const std::string where = r.PathOf("sweep") + "." + path;
+    NumericParameter(scene, path, file, where);
+    if (!values.is_array() || values.empty())
+      FailAt(file, where, "expected a non-empty list of numbers, got " + Shown(values));
+    std::vector<double> axis;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      axis.push_back(NumberAt(values[i], file, where + "[" + std::to_string(i) + "]"));
+    count *= static_cast<double>(axis.size());
+    axes.emplace_back(path, std::move(axis));
+  }
+  if (count > static_cast<double>(kMaxStudyPoints)) {
+    r.Fail("sweep", "the sweep has " + Shown(Json(count)) + " points: at most " +
+                        std::to_string(kMaxStudyPoints) + " are allowed");
+  }
+  return axes;
+}
+
+SceneScoring ParseScoring(JsonObjectReader& r, const std::string& file, const Scene& base) {
+  const Json* scoring = r.Get("scoring");
+  if (scoring == nullptr) r.Fail("scoring", "required object is missing");
+  JsonObjectReader s(*scoring, file, "scoring");
+  SceneScoring sc;
+  sc.displacement = s.RequiredString("displacement");
+  sc.zone = s.RequiredString("zone");
+  sc.window_s = s.Number("window_s", base.solver.end_time_s);
+  if (!(sc.window_s > 0.0) || sc.window_s > 1e4) s.Fail("window_s", "must lie in (0, 1e4] s");
+  sc.rest_duration_s = s.RequiredNumber("rest_duration_s");
+  if (!(sc.rest_duration_s > 0.0)) s.Fail("rest_duration_s", "must be > 0");
+  sc.err_max = s.Number("err_max", sc.err_max);
+  sc.srf_min = s.Number("srf_min", sc.srf_min);
+  if (sc.err_max <= 0 || sc.err_max > 1) s.Fail("err_max", "must lie in (0, 1]");
+  if (sc.srf_min < 0 || sc.srf_min > 1) s.Fail("srf_min", "must lie in [0, 1]");
+  s.Finish();
+  return sc;
+}
+
+// The full product of the axes, each point sorted by path, without repeats.
+std::vector<SceneParameters> FullProduct(const Axes& axes) {
+  std::vector<SceneParameters> points = {{}};
+  for (const auto& [path, axis] : axes) {
+    std::vector<SceneParameters> next;
+    for (const auto& p : points) {
+      for (double v : axis) {
+        SceneParameters q = p;
+        q.emplace_back(path, v);
+        next.push_back(std::move(q));
+      }
+    }
+    points = std::move(next);
+  }
+  for (auto& p : points) std::sort(p.begin(), p.end());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+// Every point's scene and its reference's must be valid scenes, with the scored outputs.
+void CheckEveryPointsScene(const SceneStudySpec& spec) {
+  ScoredScene(spec, {});  // The scored output and zone exist.
+  for (const auto& p : spec.points) {
+    for (const SceneParameters& q : {p, ReferenceParameters(spec, p)}) {
+      try {
+        ScoredScene(spec, q);
+      } catch (const InputError& e) {
+        throw InputError(spec.file + ": sweep point " + ParametersJson(q) + ": " + e.what());
+      }
+    }
+  }
+}
+
 }  // namespace
 
 SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
@@ -87,28 +168,7 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);
   const Scene base = ParseScene(spec.scene, spec.scene_file, access);
-
-  const Json* sweep = r.Get("sweep");
-  if (sweep == nullptr || !sweep->is_object() || sweep->empty()) {
-    r.Fail("sweep", "expected {\"parameter.path\": [values...], ...} with at least one parameter");
-  }
-  std::vector<std::pair<std::string, std::vector<double>>> axes;
-  double count = 1.0;
-  for (const auto& [path, values] : sweep->items()) {
-    const std::string where = r.PathOf("sweep") + "." + path;
-    NumericParameter(spec.scene, path, file, where);
-    if (!values.is_array() || values.empty())
-      FailAt(file, where, "expected a non-empty list of numbers, got " + Shown(values));
-    std::vector<double> axis;
-    for (std::size_t i = 0; i < values.size(); ++i)
-      axis.push_back(NumberAt(values[i], file, where + "[" + std::to_string(i) + "]"));
-    count *= static_cast<double>(axis.size());
-    axes.emplace_back(path, std::move(axis));
-  }
-  if (count > static_cast<double>(kMaxStudyPoints)) {
-    r.Fail("sweep", "the sweep has " + Shown(Json(count)) + " points: at most " +
-                        std::to_string(kMaxStudyPoints) + " are allowed");
-  }
+  const Axes axes = ParseSweep(r, spec.scene, file);
   if (const Json* reference = r.Get("reference")) {
     spec.reference = ParseParameters(*reference, spec.scene, file, "reference");
   }
@@ -117,54 +177,11 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
            "give the refined settings each point is scored against, e.g. {\"solver.r_ftrunc\": "
            "1000, \"solver.dt.factor\": 0.05} (the paths must be set in the scene)");
   }
-
-  const Json* scoring = r.Get("scoring");
-  if (scoring == nullptr) r.Fail("scoring", "required object is missing");
-  JsonObjectReader s(*scoring, file, "scoring");
-  SceneScoring& sc = spec.scoring;
-  sc.displacement = s.RequiredString("displacement");
-  sc.zone = s.RequiredString("zone");
-  sc.window_s = s.Number("window_s", base.solver.end_time_s);
-  if (!(sc.window_s > 0.0) || sc.window_s > 1e4) s.Fail("window_s", "must lie in (0, 1e4] s");
-  sc.rest_duration_s = s.RequiredNumber("rest_duration_s");
-  if (!(sc.rest_duration_s > 0.0)) s.Fail("rest_duration_s", "must be > 0");
-  sc.err_max = s.Number("err_max", sc.err_max);
-  sc.srf_min = s.Number("srf_min", sc.srf_min);
-  if (sc.err_max <= 0 || sc.err_max > 1) s.Fail("err_max", "must lie in (0, 1]");
-  if (sc.srf_min < 0 || sc.srf_min > 1) s.Fail("srf_min", "must lie in [0, 1]");
-  s.Finish();
+  spec.scoring = ParseScoring(r, file, base);
   r.Finish();
-
-  // The full product of the axes, each point sorted by path.
-  spec.points = {{}};
-  for (const auto& [path, axis] : axes) {
-    std::vector<SceneParameters> next;
-    for (const auto& p : spec.points) {
-      for (double v : axis) {
-        SceneParameters q = p;
-        q.emplace_back(path, v);
-        next.push_back(std::move(q));
-      }
-    }
-    spec.points = std::move(next);
-  }
-  for (auto& p : spec.points) std::sort(p.begin(), p.end());
-  std::sort(spec.points.begin(), spec.points.end());
-  spec.points.erase(std::unique(spec.points.begin(), spec.points.end()), spec.points.end());
+  spec.points = FullProduct(axes);
   std::sort(spec.reference.begin(), spec.reference.end());
-
-  ScoredScene(spec, {});  // The scored output and zone exist.
-
-  // Every point's scene and its reference's must be valid scenes, with the scored outputs.
-  for (const auto& p : spec.points) {
-    for (const SceneParameters& q : {p, ReferenceParameters(spec, p)}) {
-      try {
-        ScoredScene(spec, q);
-      } catch (const InputError& e) {
-        throw InputError(file + ": sweep point " + ParametersJson(q) + ": " + e.what());
-      }
-    }
-  }
+  CheckEveryPointsScene(spec);
   Json stored = json;
   stored["scene_json"] = spec.scene;
   stored["settings"] = Json::parse(SceneSettingsKey(spec));
