@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "db/canonical_points.h"
 #include "db/read_only_query.h"
 #include "engine/study_run.h"
 #include "tests/run_command.h"
@@ -180,6 +181,31 @@ TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {
       "s.json");
   EXPECT_THROW(RunStudy(changed, options_), InputError);
   EXPECT_TRUE(testing::ReadBytes(options_.database_path) == bytes);
+}
+
+// Every status is stored as its text and read back as the same status.
+TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
+  StudyDatabase db(options_.database_path);
+  const std::int64_t study = db.UpsertStudy("statuses", "{}");
+  std::vector<NewPoint> points;
+  for (RunStatus status : kAllRunStatuses) points.push_back({ToString(status), "ref", {}});
+  for (auto& p : points) p.parameters = ParameterValues(PointParameters{});
+  db.AddPoints(kCanonicalPoints, study, points);
+  const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
+  const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
+  ASSERT_EQ(pending.size(), kAllRunStatuses.size());
+  for (const PendingPoint& p : pending) {
+    StorePointOutcome(db, kCanonicalPoints, p.point_id, run, PointOrigin{"host", 0}, p.point_key,
+                      "", [](Connection&) {});
+  }
+  const QueryResult r = RunReadOnlyQuery(options_.database_path,
+                                         "SELECT point_key, status FROM points ORDER BY point_id");
+  ASSERT_EQ(r.rows.size(), kAllRunStatuses.size());
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const auto read = RunStatusFromString(std::get<std::string>(r.rows[i][1]));
+    ASSERT_TRUE(read.has_value()) << std::get<std::string>(r.rows[i][1]);
+    EXPECT_EQ(*read, kAllRunStatuses[i]);
+  }
 }
 
 }  // namespace
