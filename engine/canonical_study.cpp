@@ -29,6 +29,7 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   nlohmann::json shocks = nlohmann::json::array();
   for (const auto& shock : r.shocks_numerical) shocks.push_back(ShockToJson(shock));
   s.shocks_json = shocks.dump();
+  s.srf_definition = ToString(r.srf_definition);
   if (!r.shocks_numerical.empty()) {
     const Shock& f = r.shocks_numerical.front();
     s.first_shock =
@@ -222,6 +223,7 @@ void CanonicalStudy::EncodeOutcome(const Outcome& outcome, ByteWriter& out) cons
     out.Put(f->rebounds);
   }
   out.Put(s.shocks_json);
+  out.Put(s.srf_definition);
 }
 
 CanonicalStudy::Outcome CanonicalStudy::DecodeOutcome(ByteReader& in) const {
@@ -245,6 +247,7 @@ CanonicalStudy::Outcome CanonicalStudy::DecodeOutcome(ByteReader& in) const {
     f.rebounds = in.Get<int>();
   }
   s.shocks_json = in.GetString();
+  s.srf_definition = in.GetString();
   return outcome;
 }
 
