@@ -275,6 +275,10 @@ void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
     const auto w = PsdWindowFromString(window);
     if (!w) p.Fail("window", "\"" + window + "\" is not a window: use \"hann\" or \"rectangular\"");
     s.psd.window = *w;
+    const std::string scaling = p.String("scaling", s.psd.one_sided ? "one_sided" : "two_sided");
+    if (scaling != "one_sided" && scaling != "two_sided")
+      p.Fail("scaling", "\"" + scaling + "\" is not a scaling: use \"one_sided\" or \"two_sided\"");
+    s.psd.one_sided = scaling == "one_sided";
     p.Finish();
     in_range(p, "n_samples", s.psd.n_samples, {16.0, false, 1 << 22});
     in_range(p, "zero_padding_factor", s.psd.zero_padding_factor, {1.0, false, 64.0});
@@ -438,7 +442,8 @@ std::string SettingsKey(const StudySpec& spec) {
              {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
              {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
              {"tolerance", s.reference.tolerance}}}};
-  // Only when not the default, so that studies stored before the setting keep their key.
+  // Only when not the default, so that studies stored before the settings keep their key.
+  if (!s.psd.one_sided) key["psd"]["scaling"] = "two_sided";
   if (s.srf_definition != SrfDefinition::kFirstShock) {
     key["srf_definition"] = ToString(s.srf_definition);
   }

@@ -128,7 +128,7 @@ TEST(StudySpec, ModesAxisPlacesOneTruncationJustAboveEachModeFrequency) {
   }
 }
 
-TEST(StudySpec, SrfDefinitionEntersTheSettingsKeyOnlyWhenNotTheDefault) {
+TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
   auto spec = [](const std::string& shocks) {
     return ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {"shocks": {)" + shocks +
                                       R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
@@ -143,6 +143,12 @@ TEST(StudySpec, SrfDefinitionEntersTheSettingsKeyOnlyWhenNotTheDefault) {
   EXPECT_NE(SettingsKey(plain), SettingsKey(contact));
   EXPECT_NE(SettingsKey(contact), SettingsKey(window));
   EXPECT_EQ(OptionsOf(window, window.points[0]).srf_definition, SrfDefinition::kReferenceWindow);
+  EXPECT_NE(SettingsKey(plain), SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x",
+                "scoring": {"psd": {"scaling": "two_sided"}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                                                           "x.json")));
+  EXPECT_EQ(SettingsKey(plain), SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x",
+                "scoring": {"psd": {"scaling": "one_sided"}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                                                           "x.json")));
   // The reference does not depend on how SRf reads it.
   EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
 }

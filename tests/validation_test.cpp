@@ -335,6 +335,24 @@ TEST(SpectralErrorTest, DisjointSpectraGiveOne) {
   EXPECT_NEAR(SpectralError(a, b, 0.0, t_end, options), 1.0, 1e-12);
 }
 
+TEST(PsdTest, TwoSidedScalingHalvesEveryBinButDcAndNyquist) {
+  PsdOptions one;
+  one.n_samples = 256;
+  PsdOptions two = one;
+  two.one_sided = false;
+  const UniformSignal s = Sample(0.0, 1e-3, 1001, [](double t) {
+    return 0.3 + std::sin(2.0 * kPi * 40.0 * t) + 0.1 * std::sin(2.0 * kPi * 130.0 * t);
+  });
+  const PowerSpectrum a = OneSidedPsd(s, 0.0, 1.0, one);
+  const PowerSpectrum b = OneSidedPsd(s, 0.0, 1.0, two);
+  ASSERT_EQ(a.density.size(), b.density.size());
+  EXPECT_EQ(b.density.front(), a.density.front());
+  EXPECT_EQ(b.density.back(), a.density.back());
+  for (std::size_t k = 1; k + 1 < a.density.size(); ++k) {
+    EXPECT_DOUBLE_EQ(b.density[k], 0.5 * a.density[k]) << k;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // ImpulseRatio, paper eq. (9)
 
