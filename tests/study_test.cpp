@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -230,6 +231,13 @@ TEST_F(StudyDatabaseRuns, EveryScoreRecordsItsSrfDefinition) {
   ASSERT_EQ(rows.rows.size(), 2u);
   EXPECT_EQ(std::get<std::string>(rows.rows[0][1]), "first_contact");
   EXPECT_EQ(std::get<std::string>(rows.rows[1][1]), "first_shock");
+  // At R_k = 3000, R_ftrunc = 10 the first contact's impulse is far from the first shock's
+  // (0.62 against 0.84 on the Fig. 4 grid): the definition reaches the score.
+  const QueryResult srf =
+      RunReadOnlyQuery(options_.database_path,
+                       "SELECT srf FROM results WHERE r_k = 3000 AND r_ftrunc = 10 ORDER BY study");
+  ASSERT_EQ(srf.rows.size(), 2u);
+  EXPECT_GT(std::abs(std::get<double>(srf.rows[1][0]) - std::get<double>(srf.rows[0][0])), 0.1);
 }
 
 TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {
