@@ -34,6 +34,7 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
                                        const ComparisonOptions& options,
                                        std::shared_ptr<const ReferenceRun> reference) {
   ComparisonResult result;
+  result.srf_definition = options.srf_definition;
   const ImpactModel model =
       BuildImpactModel(problem, options.scheme, options.r_ftrunc, options.n_elements);
   result.n_modes = model.n_modes;
@@ -69,7 +70,9 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   }
   result.err = SpectralError(result.histories.displacement_m[0], result.reference->tip_m, 0.0,
                              options.window_s, options.psd);
-  result.srf = FirstShockImpulseRatio(result.shocks_numerical, result.reference->shocks);
+  result.srf = DefinedImpulseRatio(options.srf_definition, result.histories.contact_force_n[0],
+                                   result.shocks_numerical, result.reference->force_n,
+                                   result.reference->shocks, shocks, options.window_s);
   return result;
 }
 

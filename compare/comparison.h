@@ -14,6 +14,7 @@
 #include "core/scheme.h"
 #include "core/stability_bounds.h"
 #include "core/transient_run.h"
+#include "validation/impulse_ratio.h"
 #include "validation/psd.h"
 
 namespace shockmap {
@@ -31,6 +32,8 @@ struct ComparisonOptions {
   // Contacts closer than this fraction of the first period 1 / f1 form one shock: the rebounds
   // of a shock at R_k = 3000 are < 2 ms (0.04 T1) apart, successive shocks ~ 30 ms (0.6 T1).
   double rest_duration_t1 = 0.1;
+  // Which impulses SRf compares (paper eq. 9 admits several readings).
+  SrfDefinition srf_definition = SrfDefinition::kFirstShock;
   // Score nothing when the reference's two truncations differ by more than this share of the
   // tip amplitude over the window.
   double reference_tolerance = 0.02;
@@ -45,6 +48,7 @@ struct ComparisonResult {
   std::string message;
   std::optional<double> err;  // Set only when status is kOk.
   std::optional<double> srf;  // Set when status is kOk and either side has a shock.
+  SrfDefinition srf_definition = SrfDefinition::kFirstShock;  // The one srf was computed with.
   int n_modes = 0;
   int n_elements = 0;
   int n_dofs = 0;

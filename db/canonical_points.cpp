@@ -44,14 +44,15 @@ void WriteScore(Connection& db, std::int64_t point_id, const std::optional<Score
         "INSERT INTO scores(point_id, reference_id, err, srf, n_modes, n_elements, n_dofs, "
         "dt_requested_s, dt_used_s, dt_paper_s, dt_sharp_s, steps, wall_s, cpu_s, "
         "max_energy_ratio, n_shocks, first_shock_start_s, first_shock_impulse_n_s, "
-        "first_shock_peak_n, first_shock_duration_s, first_shock_rebounds, shocks_json) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
+        "first_shock_peak_n, first_shock_duration_s, first_shock_rebounds, shocks_json, "
+        "srf_definition) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .BindAll(point_id, c.reference_id, c.err, c.srf, c.n_modes, c.n_elements, c.n_dofs,
                c.dt_requested_s, c.dt_used_s, c.dt_paper_s, c.dt_sharp_s, c.steps, c.wall_s,
                c.cpu_s, c.max_energy_ratio, c.n_shocks, FirstShock(f, &ShockColumns::start_s),
                FirstShock(f, &ShockColumns::impulse_n_s), FirstShock(f, &ShockColumns::peak_n),
                FirstShock(f, &ShockColumns::duration_s), FirstShock(f, &ShockColumns::rebounds),
-               c.shocks_json)
+               c.shocks_json, c.srf_definition)
       .Run();
 }
 

@@ -45,6 +45,7 @@ struct ScoreRow {
   int n_shocks = 0;
   std::optional<ShockColumns> first_shock;
   std::string shocks_json = "[]";
+  std::string srf_definition = "first_shock";  // What srf compares (paper eq. 9's readings).
 };
 
 struct ReferenceRow {

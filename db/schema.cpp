@@ -221,6 +221,27 @@ JOIN studies st ON st.study_id = p.study_id
 LEFT JOIN scene_references r ON r.reference_id = p.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 4 -> 5: the SRf definition each score was computed with (paper eq. 9 admits several
+    // readings); scores stored before used the first shock.
+    R"sql(
+ALTER TABLE scores ADD COLUMN srf_definition TEXT NOT NULL DEFAULT 'first_shock';
+DROP VIEW results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);

@@ -28,6 +28,7 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   nlohmann::json shocks = nlohmann::json::array();
   for (const auto& shock : r.shocks_numerical) shocks.push_back(ShockToJson(shock));
   s.shocks_json = shocks.dump();
+  s.srf_definition = ToString(r.srf_definition);
   if (!r.shocks_numerical.empty()) {
     const Shock& f = r.shocks_numerical.front();
     s.first_shock =
@@ -199,6 +200,7 @@ void CanonicalStudy::EncodeScore(const ScoreRow& s, ByteWriter& out) const {
     out.Put(f->rebounds);
   }
   out.Put(s.shocks_json);
+  out.Put(s.srf_definition);
 }
 
 ScoreRow CanonicalStudy::DecodeScore(ByteReader& in) const {
@@ -218,6 +220,7 @@ ScoreRow CanonicalStudy::DecodeScore(ByteReader& in) const {
     f.rebounds = in.Get<int>();
   }
   s.shocks_json = in.GetString();
+  s.srf_definition = in.GetString();
   return s;
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/modal_basis.h"
 #include "formats/json_reader.h"
+#include "reference/analytic_modes.h"
 
 namespace shockmap {
 
@@ -147,6 +148,27 @@ struct AxisSet {
   std::vector<int> n_elements;
 };
 
+// {"modes": [first, last]} (see ModeEntryTruncations), else any axis.
+std::vector<double> ParseTruncationAxis(const Json& value, const std::string& file,
+                                        const std::string& path, const Range& range) {
+  if (!value.is_object() || !value.contains("modes")) return ParseAxis(value, file, path, range);
+  JsonObjectReader r(value, file, path);
+  const Json* modes = r.Get("modes");
+  r.Finish();
+  const std::string at = r.PathOf("modes");
+  const auto is_count = [](const Json& v) {
+    return v.is_number_integer() && v.get<std::int64_t>() >= 1 &&
+           v.get<std::int64_t>() <= kMaxModeAxisCount;
+  };
+  if (!modes->is_array() || modes->size() != 2 || !is_count((*modes)[0]) ||
+      !is_count((*modes)[1]) || (*modes)[0].get<int>() > (*modes)[1].get<int>()) {
+    FailAt(file, at,
+           "expected [first, last], mode counts with 1 <= first <= last <= " +
+               std::to_string(kMaxModeAxisCount) + ", got " + Shown(*modes));
+  }
+  return ModeEntryTruncations((*modes)[0].get<int>(), (*modes)[1].get<int>());
+}
+
 const Range kRk{0.0, true, 1e12};
 const Range kRftrunc{1.0, false, 1e5};
 const Range kWindow{0.0, true, 100.0};
@@ -169,7 +191,11 @@ AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) 
     return ParseAxis(*v, file, r.PathOf(key), range);
   };
   a.rk = required("rk", kRk);
-  a.rftrunc = required("rftrunc", kRftrunc);
+  if (const Json* v = r.Get("rftrunc"); v != nullptr && !single && v->is_object()) {
+    a.rftrunc = ParseTruncationAxis(*v, file, r.PathOf("rftrunc"), kRftrunc);
+  } else {
+    a.rftrunc = required("rftrunc", kRftrunc);
+  }
   a.window_s = optional("window_s", kWindow, scoring.window_s);
   a.mass_damping_per_s = optional("mass_damping_per_s", kDamping, 0.0);
   for (double e : optional("n_elements", kElements, 0.0)) {
@@ -249,6 +275,10 @@ void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
     const auto w = PsdWindowFromString(window);
     if (!w) p.Fail("window", "\"" + window + "\" is not a window: use \"hann\" or \"rectangular\"");
     s.psd.window = *w;
+    const std::string scaling = p.String("scaling", s.psd.one_sided ? "one_sided" : "two_sided");
+    if (scaling != "one_sided" && scaling != "two_sided")
+      p.Fail("scaling", "\"" + scaling + "\" is not a scaling: use \"one_sided\" or \"two_sided\"");
+    s.psd.one_sided = scaling == "one_sided";
     p.Finish();
     in_range(p, "n_samples", s.psd.n_samples, {16.0, false, 1 << 22});
     in_range(p, "zero_padding_factor", s.psd.zero_padding_factor, {1.0, false, 64.0});
@@ -258,6 +288,13 @@ void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
     s.rest_duration_t1 =
         in_range(sh, "rest_duration_t1", sh.Number("rest_duration_t1", s.rest_duration_t1),
                  {0.0, true, 10.0});
+    const std::string definition = sh.String("srf_definition", ToString(s.srf_definition));
+    const auto d = SrfDefinitionFromString(definition);
+    if (!d)
+      sh.Fail("srf_definition", "\"" + definition +
+                                    "\" is not an SRf definition: use \"first_shock\", "
+                                    "\"first_contact\" or \"reference_window\"");
+    s.srf_definition = *d;
     sh.Finish();
   }
   if (const Json* ref = r.Get("reference")) {
@@ -298,6 +335,16 @@ Json ProblemJson(const CantileverImpact& p) {
 }
 
 }  // namespace
+
+std::vector<double> ModeEntryTruncations(int first_mode, int last_mode) {
+  const std::vector<double> b = CharacteristicRoots(0.0, 0.0, last_mode);
+  std::vector<double> r_ftrunc;
+  for (int n = first_mode; n <= last_mode; ++n) {
+    const double ratio = b[static_cast<std::size_t>(n - 1)] / b[0];
+    r_ftrunc.push_back(ratio * ratio * (1.0 + kModeEntryMargin));
+  }
+  return r_ftrunc;
+}
 
 StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   StudySpec spec;
@@ -354,6 +401,7 @@ ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point) {
   o.reference.crossing_samples_per_period = spec.scoring.reference.crossing_samples_per_period;
   o.psd = spec.scoring.psd;
   o.rest_duration_t1 = spec.scoring.rest_duration_t1;
+  o.srf_definition = spec.scoring.srf_definition;
   o.reference_tolerance = spec.scoring.reference.tolerance;
   return o;
 }
@@ -383,18 +431,23 @@ std::string ReferenceKey(const StudySpec& spec, const StudyPoint& p) {
 
 std::string SettingsKey(const StudySpec& spec) {
   const ScoringSpec& s = spec.scoring;
-  return Json{{"problem", ProblemJson(spec.problem)},
-              {"psd",
-               {{"n_samples", s.psd.n_samples},
-                {"window", ToString(s.psd.window)},
-                {"zero_padding_factor", s.psd.zero_padding_factor}}},
-              {"rest_duration_t1", s.rest_duration_t1},
-              {"reference",
-               {{"r_fref_min", s.reference.r_fref_min},
-                {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
-                {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
-                {"tolerance", s.reference.tolerance}}}}
-      .dump();
+  Json key{{"problem", ProblemJson(spec.problem)},
+           {"psd",
+            {{"n_samples", s.psd.n_samples},
+             {"window", ToString(s.psd.window)},
+             {"zero_padding_factor", s.psd.zero_padding_factor}}},
+           {"rest_duration_t1", s.rest_duration_t1},
+           {"reference",
+            {{"r_fref_min", s.reference.r_fref_min},
+             {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
+             {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
+             {"tolerance", s.reference.tolerance}}}};
+  // Only when not the default, so that studies stored before the settings keep their key.
+  if (!s.psd.one_sided) key["psd"]["scaling"] = "two_sided";
+  if (s.srf_definition != SrfDefinition::kFirstShock) {
+    key["srf_definition"] = ToString(s.srf_definition);
+  }
+  return key.dump();
 }
 
 }  // namespace shockmap

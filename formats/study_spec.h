@@ -27,10 +27,21 @@ struct ReferencePolicy {
   double RFref(double r_k) const;
 };
 
+// The truncation axis at mode resolution, {"modes": [first, last]}: one R_ftrunc per count n of
+// retained clamped-free modes, placed just above mode n's analytic frequency,
+// R_ftrunc = (b_n / b_1)^2 (1 + kModeEntryMargin), b_n the roots of 1 + cosh b cos b = 0. The
+// finite-element frequencies lie above the analytic ones by less than 1e-4 with the default
+// mesh (docs/physics.md §3), so the model keeps exactly n modes, and the smallest passing
+// truncation found on this axis is the frequency at which the last needed mode enters.
+inline constexpr double kModeEntryMargin = 1e-3;
+inline constexpr int kMaxModeAxisCount = 150;  // Mode 150 is at ~6.3e4 f1, below the axis' 1e5.
+std::vector<double> ModeEntryTruncations(int first_mode, int last_mode);
+
 struct ScoringSpec {
   double window_s = ComparisonOptions{}.window_s;
   PsdOptions psd;
   double rest_duration_t1 = ComparisonOptions{}.rest_duration_t1;
+  SrfDefinition srf_definition = SrfDefinition::kFirstShock;
   ReferencePolicy reference;
   // Validity thresholds the criteria are derived with (paper §2.4: SRf > 0.8 is acceptable).
   double err_max = 0.10;

@@ -30,6 +30,7 @@ CanonicalStudy::Outcome ScoredOutcome() {
   s.steps = 123456789012;
   s.first_shock = ShockColumns{1e-3, 2e-2, 150.0, 1e-4, 3};
   s.shocks_json = R"([{"rebounds":3}])";
+  s.srf_definition = "reference_window";
   return {RunStatus::kOk, "message", s};
 }
 
@@ -52,6 +53,7 @@ TEST(ByteCodec, CanonicalOutcomeComesBackFieldForField) {
   EXPECT_EQ(got.score->first_shock->rebounds, 3);
   EXPECT_EQ(got.score->first_shock->peak_n, 150.0);
   EXPECT_EQ(got.score->shocks_json, sent.score->shocks_json);
+  EXPECT_EQ(got.score->srf_definition, "reference_window");
 }
 
 TEST(ByteCodec, CanonicalReferenceComesBackSampleForSample) {

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -91,6 +92,16 @@ INSTANTIATE_TEST_SUITE_P(
             "BadProblem",
             R"({"name": "x", "problem": {"gap_m": "wide"}, "grids": [{"rk": 1, "rftrunc": 10}]})",
             "problem.gap_m"},
+        BadSpec{
+            "UnknownSrfDefinition",
+            R"({"name": "x", "scoring": {"shocks": {"srf_definition": "first"}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.shocks.srf_definition"},
+        BadSpec{"ModesAxisReversed",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": {"modes": [5, 2]}}]})",
+                "grids[0].rftrunc.modes"},
+        BadSpec{"ModesAxisZero",
+                R"({"name": "x", "grids": [{"rk": 1, "rftrunc": {"modes": [0, 3]}}]})",
+                "grids[0].rftrunc.modes"},
         BadSpec{"NoGridNoPoints", R"({"name": "x"})", "(top level)"}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -105,6 +116,43 @@ TEST(StudySpec, ExpandsGridsAndPointsWithoutRepeats) {
   EXPECT_EQ(s.points.size(), 13u);
   EXPECT_DOUBLE_EQ(s.points[0].r_k, 1.0);
   EXPECT_DOUBLE_EQ(s.points.back().r_k, 5.0);
+}
+
+TEST(StudySpec, ModesAxisPlacesOneTruncationJustAboveEachModeFrequency) {
+  const StudySpec s = ParseStudySpec(
+      Json::parse(R"({"name": "x", "grids": [{"rk": 1, "rftrunc": {"modes": [1, 4]}}]})"),
+      "x.json");
+  // f_n / f1 of the clamped-free beam: (b_n / b_1)^2 with b = 1.8751, 4.6941, 7.8548, 10.9955.
+  const double expected[] = {1.0, 6.2669, 17.5475, 34.3861};
+  ASSERT_EQ(s.points.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(s.points[i].r_ftrunc / (1.0 + kModeEntryMargin), expected[i], 1e-3 * expected[i]);
+  }
+}
+
+TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
+  auto spec = [](const std::string& shocks) {
+    return ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {"shocks": {)" + shocks +
+                                      R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                          "x.json");
+  };
+  const StudySpec plain = spec("");
+  const StudySpec shock = spec(R"("srf_definition": "first_shock")");
+  const StudySpec contact = spec(R"("srf_definition": "first_contact")");
+  const StudySpec window = spec(R"("srf_definition": "reference_window")");
+  EXPECT_EQ(SettingsKey(plain), SettingsKey(shock));
+  EXPECT_EQ(SettingsKey(plain).find("srf_definition"), std::string::npos);
+  EXPECT_NE(SettingsKey(plain), SettingsKey(contact));
+  EXPECT_NE(SettingsKey(contact), SettingsKey(window));
+  EXPECT_EQ(OptionsOf(window, window.points[0]).srf_definition, SrfDefinition::kReferenceWindow);
+  EXPECT_NE(SettingsKey(plain), SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x",
+                "scoring": {"psd": {"scaling": "two_sided"}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                                                           "x.json")));
+  EXPECT_EQ(SettingsKey(plain), SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x",
+                "scoring": {"psd": {"scaling": "one_sided"}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                                                           "x.json")));
+  // The reference does not depend on how SRf reads it.
+  EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
 }
 
 class StudyDatabaseRuns : public ::testing::Test {
@@ -169,6 +217,28 @@ TEST_F(StudyDatabaseRuns, ReferencesAreSharedAcrossStudies) {
   EXPECT_EQ(b.points_computed, 2u);
   EXPECT_EQ(b.references_computed, 0);
   EXPECT_EQ(b.references_reused, 2);
+}
+
+TEST_F(StudyDatabaseRuns, EveryScoreRecordsItsSrfDefinition) {
+  RunStudy(Spec("shock", "[10]"), options_);
+  RunStudy(ParseStudySpec(Json::parse(R"({"name": "contact", "scoring": {"window_s": 0.03,
+               "shocks": {"srf_definition": "first_contact"}},
+               "grids": [{"rk": [100, 3000], "rftrunc": [10]}]})"),
+                          "contact.json"),
+           options_);
+  const QueryResult rows = RunReadOnlyQuery(
+      options_.database_path,
+      "SELECT study, srf_definition, count(*) FROM results GROUP BY study ORDER BY study");
+  ASSERT_EQ(rows.rows.size(), 2u);
+  EXPECT_EQ(std::get<std::string>(rows.rows[0][1]), "first_contact");
+  EXPECT_EQ(std::get<std::string>(rows.rows[1][1]), "first_shock");
+  // At R_k = 3000, R_ftrunc = 10 the first contact's impulse is far from the first shock's
+  // (0.62 against 0.84 on the Fig. 4 grid): the definition reaches the score.
+  const QueryResult srf =
+      RunReadOnlyQuery(options_.database_path,
+                       "SELECT srf FROM results WHERE r_k = 3000 AND r_ftrunc = 10 ORDER BY study");
+  ASSERT_EQ(srf.rows.size(), 2u);
+  EXPECT_GT(std::abs(std::get<double>(srf.rows[1][0]) - std::get<double>(srf.rows[0][0])), 0.1);
 }
 
 TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {

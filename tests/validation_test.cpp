@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -334,6 +335,24 @@ TEST(SpectralErrorTest, DisjointSpectraGiveOne) {
   EXPECT_NEAR(SpectralError(a, b, 0.0, t_end, options), 1.0, 1e-12);
 }
 
+TEST(PsdTest, TwoSidedScalingHalvesEveryBinButDcAndNyquist) {
+  PsdOptions one;
+  one.n_samples = 256;
+  PsdOptions two = one;
+  two.one_sided = false;
+  const UniformSignal s = Sample(0.0, 1e-3, 1001, [](double t) {
+    return 0.3 + std::sin(2.0 * kPi * 40.0 * t) + 0.1 * std::sin(2.0 * kPi * 130.0 * t);
+  });
+  const PowerSpectrum a = OneSidedPsd(s, 0.0, 1.0, one);
+  const PowerSpectrum b = OneSidedPsd(s, 0.0, 1.0, two);
+  ASSERT_EQ(a.density.size(), b.density.size());
+  EXPECT_EQ(b.density.front(), a.density.front());
+  EXPECT_EQ(b.density.back(), a.density.back());
+  for (std::size_t k = 1; k + 1 < a.density.size(); ++k) {
+    EXPECT_DOUBLE_EQ(b.density[k], 0.5 * a.density[k]) << k;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // ImpulseRatio, paper eq. (9)
 
@@ -349,6 +368,95 @@ TEST(ImpulseRatioTest, RejectsNegativeOrNonFiniteImpulse) {
   EXPECT_THROW(ImpulseRatio(-1.0, 2.0), std::invalid_argument);
   EXPECT_THROW(ImpulseRatio(1.0, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
   EXPECT_THROW(ImpulseRatio(std::numeric_limits<double>::infinity(), 1.0), std::invalid_argument);
+}
+
+// The SRf definitions on a hand-made pair (dt = 1 ms, exact zeros between contacts, rest
+// duration 5 ms so that each pair of contacts 1-3 ms apart is one shock):
+// reference: contact 1 at samples 10-12 = (1, 3, 1), impulse 5e-3 N s; rebound at 15 = 2,
+//   impulse 2e-3; first shock 7e-3 over [9 ms, 16 ms]; a second shock at 50 ms.
+// numerical: contact 1 at 11-12 = (3, 3), impulse 6e-3; rebounds at 15 = 1 (1e-3) and at
+//   18 = 2 (2e-3); first shock 9e-3, of which 7e-3 lie in [9 ms, 16 ms].
+UniformSignal ForceFromSamples(const std::map<int, double>& samples) {
+  UniformSignal s;
+  s.t0_s = 0.0;
+  s.dt_s = 1e-3;
+  s.values.assign(60, 0.0);
+  for (const auto& [i, f] : samples) s.values[static_cast<std::size_t>(i)] = f;
+  return s;
+}
+
+struct SrfPair {
+  UniformSignal numerical = ForceFromSamples({{11, 3.0}, {12, 3.0}, {15, 1.0}, {18, 2.0}});
+  UniformSignal reference =
+      ForceFromSamples({{10, 1.0}, {11, 3.0}, {12, 1.0}, {15, 2.0}, {50, 10.0}});
+  ShockSegmentationOptions options{0.0, 5e-3};
+  double t_end_s = 0.059;
+
+  double Srf(SrfDefinition d) const {
+    return DefinedImpulseRatio(d, numerical, SegmentShocks(numerical, options, t_end_s), reference,
+                               SegmentShocks(reference, options, t_end_s), options, t_end_s)
+        .value();
+  }
+};
+
+TEST(SrfDefinitionTest, FirstShockComparesGroupedContacts) {
+  const SrfPair pair;
+  EXPECT_NEAR(pair.Srf(SrfDefinition::kFirstShock), 7.0 / 9.0, 1e-12);
+}
+
+TEST(SrfDefinitionTest, FirstContactStopsAtTheFirstSeparation) {
+  const SrfPair pair;
+  EXPECT_NEAR(pair.Srf(SrfDefinition::kFirstContact), 5.0 / 6.0, 1e-12);
+}
+
+TEST(SrfDefinitionTest, FirstContactSeparatesContactsOneZeroSampleApart) {
+  SrfPair pair;
+  pair.numerical = ForceFromSamples({{11, 3.0}, {12, 3.0}, {14, 1.0}});  // Zero at 13 only.
+  EXPECT_NEAR(pair.Srf(SrfDefinition::kFirstContact), 5.0 / 6.0, 1e-12);
+}
+
+TEST(SrfDefinitionTest, ReferenceWindowIntegratesBothOverTheReferenceShock) {
+  const SrfPair pair;
+  EXPECT_NEAR(pair.Srf(SrfDefinition::kReferenceWindow), 1.0, 1e-12);
+  SrfPair later = pair;  // The numerical rebound at 15 ms moved out of the window: 6 / 7.
+  later.numerical = ForceFromSamples({{11, 3.0}, {12, 3.0}, {17, 1.0}});
+  EXPECT_NEAR(later.Srf(SrfDefinition::kReferenceWindow), 6.0 / 7.0, 1e-12);
+}
+
+TEST(SrfDefinitionTest, NoContactOnOneSideScoresZeroAndOnNeitherNothing) {
+  SrfPair pair;
+  pair.numerical = ForceFromSamples({});
+  for (const auto d : {SrfDefinition::kFirstShock, SrfDefinition::kFirstContact,
+                       SrfDefinition::kReferenceWindow}) {
+    EXPECT_EQ(pair.Srf(d), 0.0) << ToString(d);
+  }
+  pair.reference = ForceFromSamples({});
+  for (const auto d : {SrfDefinition::kFirstShock, SrfDefinition::kFirstContact,
+                       SrfDefinition::kReferenceWindow}) {
+    EXPECT_FALSE(
+        DefinedImpulseRatio(d, pair.numerical, {}, pair.reference, {}, pair.options, pair.t_end_s)
+            .has_value())
+        << ToString(d);
+  }
+}
+
+TEST(SrfDefinitionTest, NamesRoundTrip) {
+  for (const auto d : {SrfDefinition::kFirstShock, SrfDefinition::kFirstContact,
+                       SrfDefinition::kReferenceWindow}) {
+    EXPECT_EQ(SrfDefinitionFromString(ToString(d)), d);
+  }
+  EXPECT_FALSE(SrfDefinitionFromString("First_Shock").has_value());
+}
+
+TEST(ImpulseOverTest, IntegratesThePiecewiseLinearForceOverAnyInterval) {
+  UniformSignal ramp;
+  ramp.dt_s = 0.5;
+  ramp.values = {0.0, 1.0, 2.0, 3.0, 4.0};  // f(t) = 2 t on [0, 2].
+  EXPECT_NEAR(ImpulseOver(ramp, 0.3, 1.7), 1.7 * 1.7 - 0.3 * 0.3, 1e-12);
+  EXPECT_NEAR(ImpulseOver(ramp, 0.1, 0.2), 0.04 - 0.01, 1e-12);  // Inside one segment.
+  EXPECT_NEAR(ImpulseOver(ramp, -1.0, 5.0), 4.0, 1e-12);         // Clipped to the record.
+  EXPECT_EQ(ImpulseOver(ramp, 3.0, 4.0), 0.0);
+  EXPECT_THROW(ImpulseOver(ramp, 1.0, 0.5), std::invalid_argument);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -192,7 +192,7 @@ PowerSpectrum OneSidedPsd(const UniformSignal& s, double t_begin_s, double t_end
     const double re = out.get()[k][0];
     const double im = out.get()[k][1];
     const bool unpaired = (k == 0 || k == n_bins - 1);  // DC and Nyquist have no mirror bin.
-    psd.density[k] = (unpaired ? 1.0 : 2.0) * (re * re + im * im) * scale;
+    psd.density[k] = (unpaired || !options.one_sided ? 1.0 : 2.0) * (re * re + im * im) * scale;
   }
   return psd;
 }

@@ -14,7 +14,9 @@
 //   4. zero-pad to N = the next power of two >= n_samples * zero_padding_factor and take the
 //      real-to-complex DFT X_k = sum_i w_i x_i exp(-2 pi j i k / N) (FFTW r2c).
 //   5. scale: G_k = c_k |X_k|^2 / (fs sum_i w_i^2), c_k = 2 except c_0 = c_{N/2} = 1, at
-//      f_k = k df, df = fs / N, k = 0 .. N/2. Units: (signal units)^2 / Hz.
+//      f_k = k df, df = fs / N, k = 0 .. N/2. Units: (signal units)^2 / Hz. With
+//      one_sided = false, c_k = 1 for every k: the positive-frequency half of the two-sided
+//      density, whose DC bin weighs twice as much against the others.
 // With this scaling sum_k G_k df = sum_i (w_i x_i)^2 / sum_i w_i^2, i.e. exactly the mean square
 // of the resampled samples for the rectangular window (Parseval) and a window-weighted mean
 // square for Hann.
@@ -46,6 +48,9 @@ struct PsdOptions {
   // 4x padding interpolates the spectrum so the max in eq. (8) hardly depends on where a peak
   // falls between the bins of the unpadded DFT.
   int zero_padding_factor = 4;
+  // One-sided scaling (c_k = 2 off DC and Nyquist), else two-sided (c_k = 1): eq. (8) divides
+  // by the largest density, so only the weight of DC against the other bins changes.
+  bool one_sided = true;
 
   // FFT length N: the next power of two >= n_samples * zero_padding_factor. Requires IsValid().
   int FftLength() const;
