@@ -71,15 +71,7 @@ std::string MpiRun(int ranks, const std::string& args, const std::string& flags 
          " " + SHOCKMAP_BIN + " " + args;
 }
 
-testing::Outcome RunShell(const std::string& command) {
-  testing::Outcome o;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  char buffer[4096];
-  while (fgets(buffer, sizeof buffer, pipe) != nullptr) o.output += buffer;
-  const int status = pclose(pipe);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
+using testing::RunShell;
 
 // The command in a child process with its output in `log`; its pid.
 pid_t Start(const std::string& command, const std::string& log) {

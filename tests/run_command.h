@@ -16,16 +16,20 @@ struct Outcome {
   std::string output;  // stdout and stderr together
 };
 
-inline Outcome RunShockmap(const std::string& args) {
-  const std::string command = std::string(SHOCKMAP_BIN) + " " + args + " 2>&1";
+// Runs `command` with /bin/sh; its stdout and stderr are captured together.
+inline Outcome RunShell(const std::string& command) {
   Outcome o;
-  FILE* pipe = popen(command.c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (pipe == nullptr) return o;
   std::array<char, 4096> buffer{};
   while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) o.output += buffer.data();
   const int status = pclose(pipe);
   o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return o;
+}
+
+inline Outcome RunShockmap(const std::string& args) {
+  return RunShell(std::string(SHOCKMAP_BIN) + " " + args);
 }
 
 inline std::string ReadBytes(const std::string& path) {

@@ -33,16 +33,7 @@ const std::string kSource = SHOCKMAP_SOURCE_DIR;
 // The binary run as RunShockmap does, but stopped after `seconds` (exit code 124), so that a
 // refusal that does not come is a failure rather than a hung test.
 Outcome RunWithin(int seconds, const std::string& args) {
-  const std::string command =
-      "timeout " + std::to_string(seconds) + " " + SHOCKMAP_BIN + " " + args + " 2>&1";
-  Outcome o;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (pipe == nullptr) return o;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) o.output += buffer.data();
-  const int status = pclose(pipe);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
+  return testing::RunShell("timeout " + std::to_string(seconds) + " " + SHOCKMAP_BIN + " " + args);
 }
 
 Json CanonicalScene() {

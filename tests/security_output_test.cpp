@@ -30,16 +30,7 @@ const std::string kInjection = "n\" ; system \"touch PWNED\" ; print \"";
 const std::string kSingleInjection = "z' ; system('touch PWNED') ; print '";
 
 // Runs `command` with /bin/sh; its stderr (and stdout unless redirected) is captured.
-Outcome Shell(const std::string& command) {
-  Outcome o;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return o;
-  std::array<char, 4096> buffer{};
-  while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) o.output += buffer.data();
-  const int status = pclose(pipe);
-  o.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
+Outcome Shell(const std::string& command) { return testing::RunShell(command); }
 
 // `text` as one single-quoted /bin/sh word.
 std::string Sh(const std::string& text) {
