@@ -153,7 +153,7 @@ void MpiStudy::KillRankAndRerun(int rank, std::int64_t stored, const std::string
   const auto whole = RunShockmap("study run " + spec + " --db " + Path("t.db") + " --quiet");
   ASSERT_EQ(whole.exit_code, 0) << whole.output;
   const pid_t launcher =
-      Start(MpiRun(3, "study run " + spec + " --db " + db + " --quiet"), Path("killed.log"));
+      Start(MpiRun(3, "study run " + spec + " --db " + db + " --quiet", flags), Path("killed.log"));
   const std::string done = "SELECT count(*) FROM points WHERE status NOT IN ('pending', 'running')";
   bool killed = false;
   for (int i = 0; i < 6000 && !killed; ++i) {
