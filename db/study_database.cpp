@@ -29,6 +29,10 @@ std::string UtcNow() {
   return out;
 }
 
+double UnixNow() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 namespace {
 
 // WAL is kept in the file, so it is set once, on a new database. Switching needs the file to
@@ -89,10 +93,6 @@ std::int64_t StudyDatabase::UpsertStudy(const std::string& name, const std::stri
 }
 
 namespace {
-
-double UnixNow() {
-  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-}
 
 // True when the process has exited but was not yet reaped by its parent (a zombie: an MPI
 // rank killed with its launcher still winding the job down).

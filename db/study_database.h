@@ -142,6 +142,9 @@ std::optional<Row> FindRow(StudyDatabase& db, std::string_view sql, const std::s
   return row;
 }
 
+// Seconds since the Unix epoch (the clock of the writer's heartbeat).
+double UnixNow();
+
 // The current UTC time as ISO 8601 with milliseconds.
 std::string UtcNow();
 

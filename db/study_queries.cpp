@@ -2,8 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
-
 #include "db/study_database.h"
 
 namespace shockmap {
@@ -41,8 +39,7 @@ std::vector<std::string> StudyNames(const std::string& database_path) {
 }
 
 std::optional<std::string> LiveWriter(const std::string& database_path) {
-  const double now =
-      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  const double now = UnixNow();
   const QueryResult r = RunReadOnlyQuery(
       database_path,
       "SELECT run_id, host, pid, heartbeat_unix_s FROM runs WHERE ended_utc IS NULL "

@@ -173,7 +173,6 @@ class StudyRun {
   using ComputedReference = typename W::ComputedReference;
   using ReferenceSlot = typename W::ReferenceSlot;
 
-  // The study, its points and this run's lease; the points this spec lists that are to compute.
   // Throws InputError when the study is stored as another kind, or with other lifelong settings
   // (its stored scores would no longer match its spec).
   void CheckStoredSpec(const std::string& text) const {
@@ -191,6 +190,7 @@ class StudyRun {
     }
   }
 
+  // The study, its points and this run's lease; the points this spec lists that are to compute.
   void Register() {
     const StudyHeader& header = kind_.Header();
     if (const auto stored = db_.StoredSpec(header.name)) CheckStoredSpec(*stored);

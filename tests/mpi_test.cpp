@@ -18,13 +18,17 @@
 #include <vector>
 
 #include "db/read_only_query.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
 
+using testing::Count;
 using testing::ReadBytes;
+using testing::Rows;
+using testing::RunShell;
 using testing::RunShockmap;
 
 constexpr const char* kMpiexec = SHOCKMAP_MPIEXEC;  // Empty without MPI.
@@ -45,18 +49,6 @@ std::string Source(const std::string& relative) {
   return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
 }
 
-std::vector<std::string> Rows(const std::string& db, const std::string& sql) {
-  std::vector<std::string> rows;
-  for (const auto& row : RunReadOnlyQuery(db, sql).rows) {
-    rows.push_back(std::get<std::string>(row.at(0)));
-  }
-  return rows;
-}
-
-std::int64_t Count(const std::string& db, const std::string& sql) {
-  return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
-}
-
 // Count, or -1 while the file is still being created.
 std::int64_t CountSoFar(const std::string& db, const std::string& sql) {
   try {
@@ -70,8 +62,6 @@ std::string MpiRun(int ranks, const std::string& args, const std::string& flags 
   return std::string(kMpiexec) + " " + kMpiFlags + " " + flags + " -np " + std::to_string(ranks) +
          " " + SHOCKMAP_BIN + " " + args;
 }
-
-using testing::RunShell;
 
 // The command in a child process with its output in `log`; its pid.
 pid_t Start(const std::string& command, const std::string& log) {

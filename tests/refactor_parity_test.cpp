@@ -26,12 +26,14 @@
 #include <vector>
 
 #include "db/sqlite_handle.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
 
+using testing::Rows;
 using testing::RunShockmap;
 
 constexpr const char* kCanonicalRows =
@@ -47,19 +49,6 @@ constexpr const char* kSceneRows =
 
 std::string Source(const std::string& relative) {
   return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
-}
-
-// The rows of `sql` as the sqlite3 shell prints them: columns joined by '|'.
-std::vector<std::string> Rows(const std::string& database, const char* sql) {
-  Connection c(database, Connection::Mode::kReadOnly);
-  Statement s = c.Prepare(sql);
-  std::vector<std::string> rows;
-  while (s.Step()) {
-    std::string line;
-    for (int i = 0; i < s.ColumnCount(); ++i) line += (i ? "|" : "") + s.GetText(i);
-    rows.push_back(line);
-  }
-  return rows;
 }
 
 std::vector<std::string> Lines(const std::string& file) {

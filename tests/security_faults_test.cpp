@@ -13,12 +13,15 @@
 
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
 
+using testing::Count;
+using testing::kSlowStudy;
 using testing::ReadBytes;
 using testing::RunShockmap;
 using testing::WriteText;
@@ -38,18 +41,6 @@ constexpr const char* kSmallStudy = R"({
   "scoring": {"window_s": 0.02, "reference": {"r_fref_min": 300, "r_fref_per_sqrt_rk": 3}},
   "grids": [{"rk": [10, 100, 1000, 3000], "rftrunc": [10, 30]}]
 })";
-
-// Implicit full-model points on fine meshes: ~0.1-0.5 s each, so a signal lands mid-study.
-constexpr const char* kSlowStudy = R"({
-  "name": "slow",
-  "scoring": {"window_s": 0.03},
-  "grids": [{"rk": [100, 1000, 3000], "rftrunc": 300, "scheme": "implicit-full",
-             "n_elements": [150, 200, 250], "dt": {"factor": [0.05, 0.1]}}]
-})";
-
-std::int64_t Count(const std::string& db, const std::string& sql) {
-  return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
-}
 
 std::map<std::string, std::string> Outcomes(const std::string& db) {
   const QueryResult r = RunReadOnlyQuery(

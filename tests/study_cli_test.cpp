@@ -14,25 +14,20 @@
 
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
 namespace {
 
+using testing::Count;
+using testing::kSlowStudy;
 using testing::ReadBytes;
 using testing::RunShockmap;
 using testing::WriteText;
 
 class StudyProcess : public testing::TempDirTest {};
-
-// Implicit full-model points on fine meshes: ~0.1-0.5 s each, so a kill lands mid-study.
-constexpr const char* kSlowStudy = R"({
-  "name": "slow",
-  "scoring": {"window_s": 0.03},
-  "grids": [{"rk": [100, 1000, 3000], "rftrunc": 300, "scheme": "implicit-full",
-             "n_elements": [150, 200, 250], "dt": {"factor": [0.05, 0.1]}}]
-})";
 
 // point_key -> the columns that must not depend on interruptions.
 std::map<std::string, std::string> Outcomes(const std::string& db) {
@@ -44,10 +39,6 @@ std::map<std::string, std::string> Outcomes(const std::string& db) {
   std::map<std::string, std::string> m;
   for (const auto& row : r.rows) m[std::get<std::string>(row[0])] = std::get<std::string>(row[1]);
   return m;
-}
-
-std::int64_t Count(const std::string& db, const std::string& sql) {
-  return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
 }
 
 // `shockmap study run SPEC --db DB --jobs 2 --quiet` in a child process; its pid, or -1.

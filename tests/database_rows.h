@@ -1,0 +1,41 @@
+#pragma once
+// Reading a study database in tests, on read-only connections.
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "db/read_only_query.h"
+#include "db/sqlite_handle.h"
+
+namespace shockmap::testing {
+
+// The rows of `sql` as the sqlite3 shell prints them: columns joined by '|'.
+inline std::vector<std::string> Rows(const std::string& database, const std::string& sql) {
+  Connection c(database, Connection::Mode::kReadOnly);
+  Statement s = c.Prepare(sql);
+  std::vector<std::string> rows;
+  while (s.Step()) {
+    std::string line;
+    for (int i = 0; i < s.ColumnCount(); ++i) line += (i ? "|" : "") + s.GetText(i);
+    rows.push_back(line);
+  }
+  return rows;
+}
+
+// The integer `sql` answers (its first row's first column).
+inline std::int64_t Count(const std::string& database, const std::string& sql) {
+  return std::get<std::int64_t>(RunReadOnlyQuery(database, sql).rows.at(0).at(0));
+}
+
+// Implicit full-model points on fine meshes: ~0.1-0.5 s each, so a kill or a signal lands
+// mid-study.
+inline constexpr const char* kSlowStudy = R"({
+  "name": "slow",
+  "scoring": {"window_s": 0.03},
+  "grids": [{"rk": [100, 1000, 3000], "rftrunc": 300, "scheme": "implicit-full",
+             "n_elements": [150, 200, 250], "dt": {"factor": [0.05, 0.1]}}]
+})";
+
+}  // namespace shockmap::testing
