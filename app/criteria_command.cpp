@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "core/input_error.h"
 #include "db/study_database.h"
@@ -22,9 +23,6 @@ struct CriteriaFlags {
   std::string out;
   std::string baseline;
 };
-
-// Exit code of `criteria check` when the data contradicts the baseline.
-constexpr int kCheckFailed = 1;
 
 void Derive(const CriteriaFlags& f) {
   std::string error;
@@ -57,7 +55,7 @@ void Check(const CriteriaFlags& f) {
   }
   std::cout << "criteria check: study " << study << " contradicts " << f.baseline << ":\n";
   for (const auto& p : problems) std::cout << "  " << p << '\n';
-  throw CLI::RuntimeError(kCheckFailed);
+  throw CLI::RuntimeError(kExitFailure);  // The data contradicts the baseline.
 }
 
 }  // namespace
@@ -73,7 +71,7 @@ void AddCriteriaCommand(CLI::App& app) {
       "For each R_k the smallest R_ftrunc and largest dt meeting the thresholds, a "
       "log-log fit of the boundary, set against the paper's rules");
   derive->add_option("STUDY", flags->study, "study name (default: the database's only study)");
-  derive->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(derive, flags->database_path);
   AddThresholdFlags(derive, flags->options);
   derive->add_option("--out", flags->out, "write the criteria as JSON (a baseline for check)");
   derive->callback([flags] { Derive(*flags); });
@@ -85,7 +83,7 @@ void AddCriteriaCommand(CLI::App& app) {
   check->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   check->add_option("--baseline", flags->baseline, "criteria JSON written by derive --out")
       ->required();
-  check->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(check, flags->database_path);
   check->callback([flags] { Check(*flags); });
 }
 

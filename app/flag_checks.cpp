@@ -1,12 +1,55 @@
 #include "app/flag_checks.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <sstream>
 
+#include "db/study_database.h"
 #include "formats/scene_file.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
+
+namespace {
+
+// "" when `path` may name a database file; else why not, for a message naming its source.
+std::string DatabasePathProblem(const std::string& path) {
+  if (path.empty()) return "is empty; it must name a database file";
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    return "names \"" + path + "\", a directory; it must name a database file";
+  }
+  return "";
+}
+
+}  // namespace
+
+void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
+  database_path = kDefaultDatabasePath;
+  CLI::Option* db =
+      command
+          ->add_option("--db", database_path,
+                       std::string("study database (SQLite); default: $") +
+                           kDatabaseEnvironmentVariable + " when set, else " + kDefaultDatabasePath)
+          ->check(CLI::Validator(
+              [](std::string& path) {
+                const std::string problem = DatabasePathProblem(path);
+                return problem.empty() ? problem : "the value " + problem;
+              },
+              "FILE"));
+  command->parse_complete_callback([db, &database_path] {
+    const char* variable = std::getenv(kDatabaseEnvironmentVariable);
+    if (db->count() > 0 || variable == nullptr) return;
+    const std::string problem = DatabasePathProblem(variable);
+    if (!problem.empty()) {
+      throw CLI::ValidationError(std::string("environment variable ") +
+                                 kDatabaseEnvironmentVariable + " " + problem +
+                                 " (or unset it for " + kDefaultDatabasePath + ")");
+    }
+    database_path = variable;
+  });
+}
 
 void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds) {
   command->add_option("--err-max", thresholds.err_max, "largest acceptable Err")

@@ -1,19 +1,22 @@
 // shockmap: maps where a truncated modal basis with explicit integration gives contact forces
-// that can be trusted. Exit codes: 0 success, 1 internal failure or gnuplot failing, 2 bad input
-// or an output that could not be written (standard output included).
+// that can be trusted. Exit codes: app/exit_codes.h.
 
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
 
 #include "app/compare_command.h"
+#include "app/completion_command.h"
 #include "app/criteria_command.h"
+#include "app/exit_codes.h"
+#include "app/export_command.h"
 #include "app/map_command.h"
 #include "app/simulate_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
+#include "engine/provenance.h"
 #include "formats/output_file.h"
 #include "views/gnuplot.h"
 
@@ -22,6 +25,8 @@ int main(int argc, char** argv) {
       "shockmap: validity maps of modal reduction with explicit integration for "
       "structures with clearances"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", shockmap::VersionLine(),
+                       "Print the release, code version, compiler and build type, and exit");
   shockmap::AddCompareCommand(app);
   shockmap::AddStudyCommand(app);
   shockmap::AddQueryCommand(app);
@@ -29,6 +34,8 @@ int main(int argc, char** argv) {
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddViewCommands(app);
+  shockmap::AddExportCommand(app);
+  shockmap::AddCompletionCommand(app);
   // CLI11 would only say that a subcommand is required.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;
@@ -40,32 +47,32 @@ int main(int argc, char** argv) {
     if (!found) {
       std::cerr << "shockmap: error: unknown command \"" << argv[1] << "\"; use one of " << known
                 << '\n';
-      return 2;
+      return shockmap::kExitBadInput;
     }
   }
   try {
     app.parse(argc, argv);
     shockmap::CheckStandardOutput(true);
   } catch (const CLI::RuntimeError& e) {
-    return e.get_exit_code();  // A verdict already printed (criteria check: 1).
+    return e.get_exit_code();  // A verdict already printed (criteria check, a signal).
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "shockmap: error: " << e.what() << '\n';
-    return 2;
+    return shockmap::kExitBadInput;
   } catch (const shockmap::InputError& e) {
     std::cerr << "shockmap: error: " << e.what() << '\n';
-    return 2;
+    return shockmap::kExitBadInput;
   } catch (const shockmap::DbError& e) {
     // The database named by the user is missing, foreign, corrupt, newer, locked, or the SQL
     // given is invalid or would write: all input the user can fix.
     std::cerr << "shockmap: database error: " << e.what() << '\n';
-    return 2;
+    return shockmap::kExitBadInput;
   } catch (const shockmap::PlotError& e) {
     std::cerr << "shockmap: plot error: " << e.what() << '\n';
-    return 1;
+    return shockmap::kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "shockmap: internal error: " << e.what() << '\n';
-    return 1;
+    return shockmap::kExitFailure;
   }
-  return 0;
+  return shockmap::kExitSuccess;
 }

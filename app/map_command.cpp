@@ -46,7 +46,7 @@ void AddMapCommand(CLI::App& app) {
       "Validity map of a study (explicit modal scheme): a metric over log R_k and log "
       "R_ftrunc or dt/dt_sharp, with the derived boundary and the paper's rules");
   map->add_option("STUDY", flags->study, "study name (default: the database's only study)");
-  map->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(map, flags->database_path);
   map->add_option("--metric", flags->metric, "what the colour shows")
       ->capture_default_str()
       ->check(CLI::IsMember({"err", "srf", "cost", "status"}));
@@ -59,7 +59,14 @@ void AddMapCommand(CLI::App& app) {
   AddThresholdFlags(map, flags->criteria);
   map->add_option("--out", flags->out,
                   "image file, .png or .svg (default: out/maps/STUDY_METRIC.png)");
-  map->callback([flags] { Draw(*flags); });
+  map->callback([flags] {
+    if (flags->r_ftrunc > 0.0 && flags->y != "dt") {
+      throw CLI::ValidationError("--rftrunc",
+                                 "chooses the truncation of a --y dt map; with --y " + flags->y +
+                                     " every truncation is shown (add --y dt or drop --rftrunc)");
+    }
+    Draw(*flags);
+  });
 }
 
 }  // namespace shockmap

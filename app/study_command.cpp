@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "db/study_queries.h"
 #include "engine/stop_request.h"
@@ -85,7 +86,7 @@ void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
 
 // Exit code of a run stopped by a signal: 128 + the signal, as a shell reports it.
 struct Interrupted : CLI::RuntimeError {
-  explicit Interrupted(int signal) : CLI::RuntimeError(128 + signal) {}
+  explicit Interrupted(int signal) : CLI::RuntimeError(kExitSignalBase + signal) {}
 };
 
 // A worker rank of an MPI job computes what rank 0 hands out. When it cannot read the study
@@ -174,8 +175,7 @@ void AddStudyCommand(CLI::App& app) {
   CLI::App* run = study->add_subcommand(
       "run", "Run every missing point of a study file into the database (resumable)");
   run->add_option("STUDY", flags->spec_path, "study file (JSON)")->required();
-  run->add_option("--db", flags->run.database_path, "study database (SQLite)")
-      ->capture_default_str();
+  AddDatabaseFlag(run, flags->run.database_path);
   run->add_option("--jobs", flags->run.jobs,
                   "worker threads (default: number of cores; under MPI: per worker rank, "
                   "default 1)")
@@ -187,8 +187,7 @@ void AddStudyCommand(CLI::App& app) {
 
   CLI::App* status = study->add_subcommand("status", "Progress and outcomes of the studies");
   status->add_option("STUDY", flags->study, "one study's name (default: all)");
-  status->add_option("--db", flags->run.database_path, "study database (SQLite)")
-      ->capture_default_str();
+  AddDatabaseFlag(status, flags->run.database_path);
   status->callback([flags] { Status(*flags); });
 }
 
@@ -199,8 +198,7 @@ void AddQueryCommand(CLI::App& app) {
                          "Run one read-only SQL statement on the database (the views `results` and "
                          "`scene_results` join parameters, scores and references)");
   query->add_option("SQL", flags->sql, "one SELECT (or other read-only) statement")->required();
-  query->add_option("--db", flags->run.database_path, "study database (SQLite)")
-      ->capture_default_str();
+  AddDatabaseFlag(query, flags->run.database_path);
   query->add_option("--format", flags->format, "output format")
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));

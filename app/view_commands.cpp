@@ -1,5 +1,7 @@
 #include "app/view_commands.h"
 
+#include <fmt/format.h>
+
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -29,7 +31,7 @@ struct ViewFlags {
 
 void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
   cmd->add_option("STUDY", f.study, "study name (default: the database's only study)");
-  cmd->add_option("--db", f.database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(cmd, f.database_path);
   if (thresholds) AddThresholdFlags(cmd, f.thresholds);
 }
 
@@ -77,8 +79,14 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
   AddCommon(cost, *flags, false);
   cost->add_option("--rk", flags->r_k, "one R_k (the nearest studied)")->check(Positive());
   cost->add_option("--out", flags->out,
-                   "plot of the R_k given by --rk (default: out/STUDY_cost_rkX.png)");
+                   "plot of the R_k given by --rk (default: out/STUDY_cost_rkX.png, X to six "
+                   "significant digits)");
   cost->callback([flags] {
+    if (!flags->out.empty() && flags->r_k <= 0) {
+      throw CLI::ValidationError("--out",
+                                 "names the plot of one R_k, which --rk gives; without "
+                                 "--rk only the table is printed");
+    }
     CheckPlotPath(flags->out);
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto tables =
@@ -87,9 +95,9 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
                         flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt);
     std::cout << CostSummary(tables);
     if (flags->r_k > 0 && !tables.empty()) {
-      const std::string out = flags->out.empty() ? "out/" + study + "_cost_rk" +
-                                                       std::to_string(tables.front().r_k) + ".png"
-                                                 : flags->out;
+      const std::string out =
+          flags->out.empty() ? fmt::format("out/{}_cost_rk{:.6g}.png", study, tables.front().r_k)
+                             : flags->out;
       DrawCost(study, tables.front(), out);
       std::cout << "plot written to " << out << '\n';
     }

@@ -1,5 +1,6 @@
-# Writes OUTPUT with the code version from `git describe`, run at every build so a result's
-# provenance names the code that produced it. The file is rewritten only when the version changes.
+# Writes OUTPUT with the release (VERSION, CMake's project version, the top entry of
+# CHANGELOG.md) and the code version from `git describe`, run at every build so a result's
+# provenance names the code that produced it. The file is rewritten only when a version changes.
 execute_process(
   COMMAND git describe --always --dirty --abbrev=12
   WORKING_DIRECTORY ${SOURCE_DIR}
@@ -8,7 +9,8 @@ execute_process(
 if(NOT version)
   set(version "unknown")
 endif()
-set(content "#pragma once\n#define SHOCKMAP_GIT_VERSION \"${version}\"\n")
+string(CONCAT content "#pragma once\n#define SHOCKMAP_VERSION \"${VERSION}\"\n"
+       "#define SHOCKMAP_GIT_VERSION \"${version}\"\n")
 if(EXISTS ${OUTPUT})
   file(READ ${OUTPUT} old)
 endif()

@@ -3,13 +3,16 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <climits>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <locale>
 
 #include "core/input_error.h"
 
@@ -21,6 +24,17 @@ std::string Reason(int error) { return error != 0 ? std::strerror(error) : "writ
 std::string Excerpt(const std::string& text) {
   return text.size() <= 80 ? text : text.substr(0, 60) + "..." + text.substr(text.size() - 16);
 }
+
+// Writes every double as the shortest digits that read back as the same value (std::to_chars),
+// so that the numbers of an output file lose nothing.
+class ShortestRoundTrip : public std::num_put<char> {
+ protected:
+  iter_type do_put(iter_type out, std::ios_base&, char_type, double v) const override {
+    std::array<char, 32> digits{};
+    const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), v).ptr;
+    return std::copy(digits.data(), end, out);
+  }
+};
 
 }  // namespace
 
@@ -125,7 +139,7 @@ AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)), str
   if (fd < 0) throw InputError("cannot write " + path_.string() + ": " + Reason(errno));
   buffer_ = std::make_unique<Buffer>(fd);
   stream_.rdbuf(buffer_.get());
-  stream_.precision(12);
+  stream_.imbue(std::locale(std::locale::classic(), new ShortestRoundTrip));
 }
 
 AtomicFile::~AtomicFile() {

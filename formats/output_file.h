@@ -23,8 +23,8 @@ void PrepareOutputDirectory(const std::filesystem::path& dir, std::string_view f
 
 // One output file, written in full or not at all: the bytes go to a temporary file in the same
 // folder, which Commit() renames over `path`. Destroyed without Commit() (an exception on the
-// way), the temporary is removed and whatever `path` held before is untouched. Numbers are
-// written with 12 significant digits.
+// way), the temporary is removed and whatever `path` held before is untouched. Doubles are
+// written with the shortest digits that read back as the same value (docs/database.md).
 class AtomicFile {
  public:
   // Throws InputError naming `path` with the system's reason when the folder takes no file.

@@ -1,6 +1,8 @@
 #include "formats/scene_file.h"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +26,15 @@ using Json = nlohmann::json;
 // Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
+
+// A wire height as it names its zones: rounded to the micrometre, in the shortest digits that
+// read back as that value (0.9144, not the 0.9144000000000001 a linspace computes).
+std::string HeightLabel(double height_m) {
+  std::array<char, 32> digits{};
+  const double rounded = std::round(height_m * 1e6) / 1e6;
+  const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), rounded).ptr;
+  return {digits.data(), end};
+}
 
 // Beyond the eigenproblem budget of core/modal_basis.h when the distinct beam models of `beams`
 // are solved (once each: one eigensolution gives the first elastic frequency and the basis),
@@ -191,12 +202,13 @@ std::vector<double> Heights(const Json& v, const std::string& file, const std::s
       h.push_back(n == 1 ? a : a + (b - a) * static_cast<double>(i) / static_cast<double>(n - 1));
   }
   if (h.empty()) FailAt(file, path, "give at least one height");
-  std::vector<double> sorted = h;
-  std::sort(sorted.begin(), sorted.end());
-  if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end()) {
-    FailAt(file, path,
-           "height " + Shown(Json(*twice)) +
-               " m is given twice; heights must differ, since they name the zones");
+  std::set<std::string> labels;
+  for (double height : h) {
+    if (!labels.insert(HeightLabel(height)).second) {
+      FailAt(file, path,
+             "height " + Shown(Json(height)) + " m is given twice (to the micrometre, " +
+                 HeightLabel(height) + " m); heights must differ, since they name the zones");
+    }
   }
   return h;
 }
@@ -347,7 +359,7 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
         z.y_m = l.positions[a - wrapper - 1].first + 0.5 * l.pitch_m * ny;
         z.z_m = l.positions[a - wrapper - 1].second + 0.5 * l.pitch_m * nz;
         z.beam_b = it != index.end() ? it->second : wrapper;
-        z.name = scene.beams[a].name + "-" + scene.beams[z.beam_b].name + "@" + Shown(Json(h));
+        z.name = scene.beams[a].name + "-" + scene.beams[z.beam_b].name + "@" + HeightLabel(h);
         (it != index.end() ? zones.pairs : zones.walls).push_back(z);
       }
     }

@@ -1,8 +1,9 @@
 #include "views/query_output.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <vector>
 
 #include "formats/output_file.h"
@@ -34,12 +35,9 @@ std::string Text(const QueryCell& c) {
   struct {
     std::string operator()(std::monostate) const { return ""; }
     std::string operator()(std::int64_t v) const { return std::to_string(v); }
-    std::string operator()(double v) const {
-      std::ostringstream s;
-      s.precision(10);
-      s << v;
-      return s.str();
-    }
+    // Shortest digits that read back as the same double, so that a printed value can be
+    // pasted into a WHERE clause or parsed by another tool without loss.
+    std::string operator()(double v) const { return fmt::format("{}", v); }
     std::string operator()(const std::string& v) const { return v; }
   } visitor;
   return std::visit(visitor, c);

@@ -1,0 +1,140 @@
+#include "app/export_command.h"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "app/flag_checks.h"
+#include "core/input_error.h"
+#include "db/report_queries.h"
+#include "db/stored_signals.h"
+#include "db/study_database.h"
+#include "engine/point_replay.h"
+#include "formats/history_csv.h"
+#include "formats/json_reader.h"
+#include "formats/output_file.h"
+#include "formats/study_file.h"
+#include "views/scored_points.h"
+#include "views/signal_csv.h"
+
+namespace shockmap {
+namespace {
+
+struct ExportFlags {
+  std::string database_path;
+  std::string study;
+  double r_k = 0.0;
+  std::int64_t point_id = 0;
+  std::string out;
+};
+
+StudyFileKind KindOf(const std::string& database_path, const std::string& study) {
+  const auto json = StoredStudySpec(database_path, study);
+  if (!json) throw InputError("no study named \"" + study + "\" in " + database_path);
+  return StudyKindOf(ParseJsonText(*json, database_path + ": stored study " + study),
+                     database_path);
+}
+
+// The one reference of the study at --rk; refused when none or several match.
+std::int64_t ReferenceAtRk(const ExportFlags& f, const std::string& study) {
+  const auto ids = ReferenceIdsAt(f.database_path, study, f.r_k);
+  if (ids.empty()) {
+    throw InputError(fmt::format("--rk: no scored point of study {} has R_k = {}", study, f.r_k));
+  }
+  if (ids.size() > 1) {
+    throw InputError(fmt::format(
+        "--rk: the points of study {} at R_k = {} are scored against {} references (windows or "
+        "reference settings differ); name one point with --point ID",
+        study, f.r_k, ids.size()));
+  }
+  return ids.front();
+}
+
+void ExportReference(const ExportFlags& f) {
+  CheckPathLength(f.out, "--out");
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const StudyFileKind kind = KindOf(f.database_path, study);
+  if (kind == StudyFileKind::kSceneSweep && f.r_k > 0) {
+    throw InputError("--rk: study " + study + " is a scene study; name a point with --point ID");
+  }
+  std::int64_t id = 0;
+  if (f.r_k > 0) {
+    id = ReferenceAtRk(f, study);
+  } else if (const auto of_point = ReferenceOfPoint(f.database_path, study, f.point_id)) {
+    id = *of_point;
+  } else {
+    throw InputError(fmt::format("--point: study {} has no scored point {}", study, f.point_id));
+  }
+  std::optional<StoredSignals> signals;
+  if (kind == StudyFileKind::kCanonical) {
+    if (const auto row = ReadReference(f.database_path, id)) signals = SignalsOf(*row);
+  } else {
+    signals = ReadSceneReferenceSignals(f.database_path, id);
+  }
+  if (!signals)
+    throw InputError(fmt::format("reference {} is missing from {}", id, f.database_path));
+  WriteSignalsCsv(*signals, f.out);
+  fmt::print("reference {} of study {}: {} samples every {} s written to {}\n", id, study,
+             signals->values.front().size(), signals->output_dt_s, f.out);
+}
+
+void ExportPoint(const ExportFlags& f) {
+  PrepareOutputDirectory(f.out, "--out");
+  CheckPathLength(std::filesystem::path(f.out) / "reference.csv", "--out");
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const ReplayedPoint replay = ReplayCanonicalPoint(f.database_path, study, f.point_id);
+  WriteComparisonCsv(replay.result, f.out);
+  const auto score = [](const std::optional<double>& v) {
+    return v ? fmt::format("{}", *v) : std::string("not scored");
+  };
+  fmt::print("point {} of study {} computed again: status {}, Err {}, SRf {}\n", f.point_id, study,
+             ToString(replay.result.status), score(replay.result.err), score(replay.result.srf));
+  fmt::print("  histories {}/numerical.csv, reference.csv (the stored reference)\n", f.out);
+}
+
+void AddStudyArgument(CLI::App* command, ExportFlags& f) {
+  command->add_option("STUDY", f.study, "study name (default: the database's only study)");
+  AddDatabaseFlag(command, f.database_path);
+}
+
+}  // namespace
+
+void AddExportCommand(CLI::App& app) {
+  auto flags = std::make_shared<ExportFlags>();
+  CLI::App* cmd = app.add_subcommand(
+      "export", "Write stored signals as CSV: a reference's, or a point's histories");
+  cmd->require_subcommand(1);
+
+  CLI::App* reference = cmd->add_subcommand(
+      "reference",
+      "The stored signals of a reference (t_s, tip displacement or the scored displacement, "
+      "contact force), chosen by R_k or by a point scored against it");
+  AddStudyArgument(reference, *flags);
+  CLI::Option* rk =
+      reference->add_option("--rk", flags->r_k, "R_k of the study's points")->check(Positive());
+  CLI::Option* point =
+      reference->add_option("--point", flags->point_id, "id of a point scored against it")
+          ->check(CLI::PositiveNumber);
+  rk->excludes(point);
+  reference->add_option("--out", flags->out, "CSV file to write")->required();
+  reference->callback([flags, rk, point] {
+    if (rk->count() + point->count() == 0) {
+      throw CLI::ValidationError("--rk", "give --rk R_K or --point ID to choose the reference");
+    }
+    ExportReference(*flags);
+  });
+
+  CLI::App* one_point = cmd->add_subcommand(
+      "point",
+      "A point of a study of the paper's problem computed again against its stored reference: "
+      "DIR/numerical.csv (tip displacement, velocity, contact force, energies) and "
+      "DIR/reference.csv");
+  AddStudyArgument(one_point, *flags);
+  one_point->add_option("--id", flags->point_id, "point id (column point_id of `results`)")
+      ->required()
+      ->check(CLI::PositiveNumber);
+  one_point->add_option("--out", flags->out, "directory to write into")->required();
+  one_point->callback([flags] { ExportPoint(*flags); });
+}
+
+}  // namespace shockmap
