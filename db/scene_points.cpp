@@ -2,7 +2,31 @@
 
 namespace shockmap {
 
-const PointTable kScenePoints{"scene_points", {"parameters_json"}};
+namespace {
+
+// `text` with every `quote` doubled, between two of them: an SQL literal (') or identifier (").
+std::string Quoted(const std::string& text, char quote) {
+  std::string s(1, quote);
+  for (char c : text) s += c == quote ? std::string(2, c) : std::string(1, c);
+  return s + quote;
+}
+
+}  // namespace
+
+void RefreshSceneParamsView(Connection& c) {
+  std::string columns;
+  Statement paths = c.Prepare(
+      "SELECT DISTINCT j.key FROM scene_points p, json_each(p.parameters_json) j ORDER BY j.key");
+  while (paths.Step()) {
+    const std::string path = paths.GetText(0);
+    columns += ", json_extract(r.parameters_json, " + Quoted("$.\"" + path + "\"", '\'') + ") AS " +
+               Quoted("params_" + path, '"');
+  }
+  c.Execute("DROP VIEW IF EXISTS scene_params");
+  c.Execute("CREATE VIEW scene_params AS SELECT r.*" + columns + " FROM scene_results r");
+}
+
+const PointTable kScenePoints{"scene_points", {"parameters_json"}, RefreshSceneParamsView};
 
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneScoreRow>& score) {
   Statement update = c.Prepare(

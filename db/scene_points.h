@@ -28,6 +28,11 @@ struct SceneScoreRow {
   std::optional<double> first_shock_peak_n, first_shock_impulse_n_s;
 };
 
+// Writes the view scene_params again: scene_results with one column params_<path> per
+// parameter path of any scene study (json_extract of parameters_json; NULL where a study does
+// not sweep it), in the order of the paths.
+void RefreshSceneParamsView(Connection& c);
+
 struct SceneReferenceRow {
   std::int64_t reference_id = 0;
   std::string reference_key, parameters_json, status, message;

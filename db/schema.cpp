@@ -242,6 +242,12 @@ LEFT JOIN scores sc ON sc.point_id = p.point_id
 LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 5 -> 6: scene study parameters as columns, params_<path> beside scene_results (as
+    // Optuna's params_*). The view is written again whenever scene points are added, with one
+    // column per parameter path of any scene study (db/scene_points.h); until then it has none.
+    R"sql(
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);

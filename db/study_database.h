@@ -43,6 +43,8 @@ struct PointOrigin {
 struct PointTable {
   std::string_view name;
   std::vector<std::string_view> parameter_columns;
+  // Views to write again when points are added (inside AddPoints' transaction), or null.
+  void (*refresh_views)(Connection& c) = nullptr;
 };
 
 // A point to register: its key within the study, the key of its reference (equal keys share
