@@ -1,0 +1,143 @@
+// Command-line conventions: --version names the release of CHANGELOG.md, SHOCKMAP_DB, the bash
+// completion names every command and option, ignored options are refused.
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+
+#include "tests/run_command.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+using testing::ReadBytes;
+using testing::RunShell;
+using testing::RunShockmap;
+using testing::WriteText;
+
+class CliConventions : public testing::TempDirTest {};
+
+constexpr const char* kStudy =
+    R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": [100, 3000], "rftrunc": [10, 300]}]})";
+
+TEST(CliVersion, PrintsTheTopReleaseOfTheChangelog) {
+  const std::string changelog = ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/CHANGELOG.md");
+  std::smatch top;
+  ASSERT_TRUE(std::regex_search(changelog, top, std::regex(R"(\n## \[(\d+\.\d+\.\d+)\])")));
+  const auto o = RunShockmap("--version");
+  EXPECT_EQ(o.exit_code, 0);
+  EXPECT_EQ(o.output.rfind("shockmap " + top[1].str() + " (git ", 0), 0u) << o.output;
+  EXPECT_NE(o.output.find("Release"), std::string::npos) << o.output;
+}
+
+TEST_F(CliConventions, ShockmapDbNamesTheDefaultDatabaseAndABadValueIsRefused) {
+  WriteText(Path("g.json"), kStudy);
+  const std::string env = "SHOCKMAP_DB=" + Path("env.db") + " ";
+  ASSERT_EQ(RunShell("cd " + Path("") + " && " + env + SHOCKMAP_BIN + " study run g.json --quiet")
+                .exit_code,
+            0);
+  EXPECT_TRUE(std::filesystem::exists(Path("env.db")));
+  EXPECT_FALSE(std::filesystem::exists(Path("shockmap.db")));
+  const auto count =
+      RunShell(env + SHOCKMAP_BIN + " query 'SELECT count(*) FROM results' --format csv");
+  EXPECT_EQ(count.output, "count(*)\n4\n");
+  // --db wins over the variable.
+  EXPECT_EQ(RunShell(env + SHOCKMAP_BIN + " study status --db " + Path("none.db")).exit_code, 2);
+  for (const std::string& bad : {std::string("SHOCKMAP_DB= "), "SHOCKMAP_DB=" + Path("") + " "}) {
+    const auto o = RunShell(bad + SHOCKMAP_BIN + " study status");
+    EXPECT_EQ(o.exit_code, 2) << bad;
+    EXPECT_NE(o.output.find("environment variable SHOCKMAP_DB"), std::string::npos) << o.output;
+  }
+}
+
+// Subcommands and options of one command as its --help lists them.
+struct HelpListing {
+  std::vector<std::string> subcommands, options;
+};
+
+HelpListing Help(const std::string& command) {
+  const std::string text = RunShockmap(command + " --help").output;
+  HelpListing h;
+  std::istringstream lines(text);
+  std::string line;
+  bool in_subcommands = false;
+  while (std::getline(lines, line)) {
+    if (line.rfind("Subcommands:", 0) == 0) in_subcommands = true;
+    std::smatch m;
+    if (in_subcommands && std::regex_search(line, m, std::regex(R"(^  ([a-z0-9]+)\s)"))) {
+      h.subcommands.push_back(m[1]);
+    }
+    // An option line: "  -h,--help  ..." or "  --db TEXT  ...", its names before the text.
+    static const std::regex option(R"(^\s+(-[a-zA-Z],)?(--[a-z-]+))");
+    std::smatch o;
+    if (!in_subcommands && std::regex_search(line, o, option)) h.options.push_back(o[2]);
+  }
+  return h;
+}
+
+TEST(CliCompletion, TheBashScriptNamesEveryCommandAndOptionAndCompletes) {
+  const auto script = RunShockmap("completion bash");
+  ASSERT_EQ(script.exit_code, 0);
+  std::vector<std::string> paths = {""};
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const HelpListing h = Help(paths[i]);
+    std::string words;
+    const std::string head = "    \"" + paths[i] + "\") words=\"";
+    const auto at = script.output.find(head);
+    ASSERT_NE(at, std::string::npos) << "no branch for \"" << paths[i] << "\"";
+    words = " " +
+            script.output.substr(at + head.size(),
+                                 script.output.find('"', at + head.size()) - at - head.size()) +
+            " ";
+    for (const auto& sub : h.subcommands) {
+      EXPECT_NE(words.find(" " + sub + " "), std::string::npos) << paths[i] << ": " << sub;
+      paths.push_back(paths[i] + " " + sub);
+    }
+    for (const auto& option : h.options) {
+      EXPECT_NE(words.find(" " + option + " "), std::string::npos) << paths[i] << ": " << option;
+      ++checked;
+    }
+  }
+  EXPECT_GE(paths.size(), 20u);  // Every command and subcommand was visited.
+  EXPECT_GE(checked, 60u);
+  // The script completes in bash: a subcommand, then an option of it.
+  const std::string file = ::testing::TempDir() + "/shockmap_completion.bash";
+  WriteText(file, script.output);
+  const auto completes = [&](const std::string& words, int cword) {
+    return RunShell("bash -c 'source " + file + "; COMP_WORDS=(" + words + "); COMP_CWORD=" +
+                    std::to_string(cword) + "; _shockmap; echo \"${COMPREPLY[*]}\"'")
+        .output;
+  };
+  EXPECT_EQ(completes("shockmap study r", 2), "run\n");
+  EXPECT_EQ(completes("shockmap study run --ret", 3), "--retry-failed\n");
+  EXPECT_EQ(completes("shockmap map --db \"\"", 3), "\n");  // A file name follows --db.
+}
+
+TEST_F(CliConventions, OptionsThatWouldBeIgnoredAreRefused) {
+  WriteText(Path("g.json"), kStudy);
+  const std::string db = " --db " + Path("s.db");
+  ASSERT_EQ(RunShockmap("study run " + Path("g.json") + db + " --quiet").exit_code, 0);
+  const std::string bytes = ReadBytes(Path("s.db"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"cost --out " + Path("x.png") + db, "--out"},
+      {"map --rftrunc 100 --out " + Path("m.png") + db, "--rftrunc"},
+      {"compare --rk 3000 --rftrunc 300 --plot", "--plot"},
+      {"export reference --out " + Path("r.csv") + db, "--rk"},
+      {"export reference --rk 100 --point 1 --out " + Path("r.csv") + db, "--point"},
+  };
+  for (const auto& [args, flag] : cases) {
+    const auto o = RunShockmap(args);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.output;
+    EXPECT_NE(o.output.find(flag), std::string::npos) << o.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(Path("x.png")));
+  EXPECT_FALSE(std::filesystem::exists(Path("m.png")));
+  EXPECT_FALSE(std::filesystem::exists(Path("r.csv")));
+  EXPECT_TRUE(ReadBytes(Path("s.db")) == bytes);
+}
+
+}  // namespace
+}  // namespace shockmap
