@@ -20,7 +20,8 @@ using testing::WriteText;
 class CliConventions : public testing::TempDirTest {};
 
 constexpr const char* kStudy =
-    R"({"name": "g", "scoring": {"window_s": 0.03}, "grids": [{"rk": [100, 3000], "rftrunc": [10, 300]}]})";
+    R"({"name": "g", "scoring": {"window_s": 0.03},
+        "grids": [{"rk": [100, 3162.2776601683795], "rftrunc": [10, 300]}]})";
 
 TEST(CliVersion, PrintsTheTopReleaseOfTheChangelog) {
   const std::string changelog = ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/CHANGELOG.md");
@@ -137,6 +138,19 @@ TEST_F(CliConventions, OptionsThatWouldBeIgnoredAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(Path("m.png")));
   EXPECT_FALSE(std::filesystem::exists(Path("r.csv")));
   EXPECT_TRUE(ReadBytes(Path("s.db")) == bytes);
+}
+
+TEST_F(CliConventions, DefaultFileNamesCarryNoFloatNoise) {
+  WriteText(Path("g.json"), kStudy);
+  ASSERT_EQ(RunShockmap("study run " + Path("g.json") + " --db " + Path("s.db") + " --quiet")
+                .exit_code,
+            0);
+  // The nearest studied R_k to 3000 is 10^3.5 = 3162.2776601683795.
+  const auto o = RunShell("cd " + Path("") + " && " + SHOCKMAP_BIN + " cost --db s.db --rk 3000");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find("plot written to out/g_cost_rk3162.28.png"), std::string::npos)
+      << o.output;
+  EXPECT_TRUE(std::filesystem::exists(Path("out/g_cost_rk3162.28.png")));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "compare/comparison.h"
@@ -151,6 +152,25 @@ TEST_F(SceneFiles, HexBundleHasTheLatticeOfARealAssembly) {
     EXPECT_EQ(zones[false], heights * 3 * rings * (3 * rings + 1));
     EXPECT_EQ(zones[true], heights * (12 * rings + 6));
   }
+}
+
+TEST_F(SceneFiles, BundleZonesNameTheirWireHeightWithoutFloatNoise) {
+  // linspace [0.3048, 2.1336, 7] computes 0.9144000000000001 for the third height.
+  const Scene scene = LoadScene(kScenes + "bundle_row.json");
+  std::set<std::string> heights;
+  for (const SceneZone& z : scene.zones) {
+    const auto at = z.name.find('@');
+    if (at != std::string::npos) heights.insert(z.name.substr(at + 1));
+  }
+  EXPECT_EQ(heights, (std::set<std::string>{"0.3048", "0.6096", "0.9144", "1.2192", "1.524",
+                                            "1.8288", "2.1336"}));
+  // Heights closer than a micrometre would give two zones one name: refused.
+  const std::string refused = Refusal(Variant([](Json& s) {
+    std::ifstream in(kScenes + "bundle_row.json");
+    s = Json::parse(in);
+    s["bundle"]["wire"]["heights_m"] = {0.5, 0.5000000001};
+  }));
+  EXPECT_NE(refused.find("given twice (to the micrometre, 0.5 m)"), std::string::npos) << refused;
 }
 
 TEST_F(SceneFiles, SeededGapsAreReproducibleAndFollowTheirLaw) {
