@@ -142,9 +142,9 @@ TEST_F(CliConventions, OptionsThatWouldBeIgnoredAreRefused) {
 
 TEST_F(CliConventions, DefaultFileNamesCarryNoFloatNoise) {
   WriteText(Path("g.json"), kStudy);
-  ASSERT_EQ(RunShockmap("study run " + Path("g.json") + " --db " + Path("s.db") + " --quiet")
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      RunShockmap("study run " + Path("g.json") + " --db " + Path("s.db") + " --quiet").exit_code,
+      0);
   // The nearest studied R_k to 3000 is 10^3.5 = 3162.2776601683795.
   const auto o = RunShell("cd " + Path("") + " && " + SHOCKMAP_BIN + " cost --db s.db --rk 3000");
   ASSERT_EQ(o.exit_code, 0) << o.output;
