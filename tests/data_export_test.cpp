@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -162,6 +164,36 @@ TEST_F(DataExport, SceneStudyParametersAreColumnsOfSceneParams) {
   const auto refused = RunShockmap("export point truncation --id 1" + Db() + " --out " + Path("x"));
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.output.find("export reference --point 1"), std::string::npos);
+}
+
+TEST(DatabaseDocs, ThePythonReaderReadsAStoredReferenceBack) {
+  // The ```python block of docs/database.md, run as written on a database named as it expects.
+  const std::string docs =
+      testing::ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/docs/database.md");
+  const auto begin = docs.find("```python\n");
+  ASSERT_NE(begin, std::string::npos);
+  const auto end = docs.find("```", begin + 10);
+  const std::string dir = ::testing::TempDir() + "/shockmap_python_reader";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  WriteText(dir + "/read.py", docs.substr(begin + 10, end - begin - 10));
+  WriteText(dir + "/quick.json", R"({"name": "quick", "scoring": {"window_s": 0.03},
+      "grids": [{"rk": 3162.2776601683795, "rftrunc": 300}]})");
+  ASSERT_EQ(RunShockmap("study run " + dir + "/quick.json --db " + dir + "/shockmap.db --quiet")
+                .exit_code,
+            0);
+  const auto o = testing::RunShell("cd " + dir + " && /usr/bin/python3 read.py");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  const auto ids = ReferenceIdsAt(dir + "/shockmap.db", "quick", 3162.2776601683795);
+  ASSERT_EQ(ids.size(), 1u);
+  const auto stored = ReadReference(dir + "/shockmap.db", ids.front());
+  const double peak = *std::max_element(stored->force_n.begin(), stored->force_n.end());
+  char expected[128];
+  std::snprintf(expected, sizeof expected,
+                "%zu samples, dt = %.6g s, window 0.03 s, peak force %.6g N", stored->tip_m.size(),
+                stored->output_dt_s, peak);
+  EXPECT_EQ(o.output.rfind(expected, 0), 0u) << o.output << " against " << expected;
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
