@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "db/scene_points.h"
+
 namespace shockmap {
 namespace {
 
@@ -316,6 +318,8 @@ void MigrateToCurrent(Connection& db) {
   Transaction t(db);
   const int from = CheckedVersion(db);
   for (int version = from; version < kSchemaVersion; ++version) db.Execute(kMigrations[version]);
+  // Scene points stored before schema 6 get their parameter columns at once.
+  if (from > 0 && from < 6) RefreshSceneParamsView(db);
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   t.Commit();

@@ -166,6 +166,24 @@ TEST_F(DataExport, SceneStudyParametersAreColumnsOfSceneParams) {
   EXPECT_NE(refused.output.find("export reference --point 1"), std::string::npos);
 }
 
+TEST_F(DataExport, AMigratedDatabaseHasItsSceneParametersAsColumnsAtOnce) {
+  // A schema 2 file with scene points, opened for writing by a study of the paper's problem
+  // only: the migration alone writes scene_params.
+  const std::string source = std::string(SHOCKMAP_SOURCE_DIR) + "/tests/data/";
+  std::filesystem::copy_file(source + "schema_v2.db", Path("v2.db"));
+  ASSERT_EQ(RunShockmap("study run " + source + "schema_v2_canonical.json --db " + Path("v2.db") +
+                        " --quiet")
+                .exit_code,
+            0);
+  const QueryResult r =
+      RunReadOnlyQuery(Path("v2.db"),
+                       "SELECT \"params_solver.r_ftrunc\", json_extract(parameters_json, "
+                       "'$.\"solver.r_ftrunc\"') FROM scene_params ORDER BY 1");
+  ASSERT_EQ(r.rows.size(), 2u);
+  EXPECT_EQ(std::get<double>(r.rows[0][0]), 10.0);
+  EXPECT_EQ(r.rows[1][0], r.rows[1][1]);
+}
+
 TEST(DatabaseDocs, ThePythonReaderReadsAStoredReferenceBack) {
   // The ```python block of docs/database.md, run as written on a database named as it expects.
   const std::string docs =
