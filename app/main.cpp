@@ -9,6 +9,7 @@
 #include "app/compare_command.h"
 #include "app/criteria_command.h"
 #include "app/map_command.h"
+#include "app/report_command.h"
 #include "app/simulate_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddViewCommands(app);
+  shockmap::AddReportCommand(app);
   // CLI11 would only say that a subcommand is required.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;
