@@ -1,6 +1,7 @@
 #include "app/report_command.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <iostream>
 #include <memory>
@@ -60,8 +61,10 @@ std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::
   const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
   const auto chosen = PointsWorthFig3(points, ctx.thresholds);
   std::map<std::int64_t, PointFigure> figures;
+  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
   for (std::int64_t id : chosen) {
-    fmt::print("  Fig. 3 of point {} ({}/{})\r", id, figures.size() + 1, chosen.size());
+    if (terminal)
+      fmt::print("  Fig. 3 of point {} ({}/{})\r", id, figures.size() + 1, chosen.size());
     std::fflush(stdout);
     const auto found = stored.find(id);
     if (found == stored.end()) continue;

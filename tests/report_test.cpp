@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <regex>
 
+#include <fmt/format.h>
+
 #include "tests/run_command.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
@@ -21,59 +23,47 @@ using testing::RunShell;
 using testing::RunShockmap;
 using testing::WriteText;
 
-class QuickStudyViews : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / ("shockmap_report_" + std::to_string(getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    db_ = (dir_ / "study.db").string();
-    const auto run = RunShockmap("study run " + std::string(SHOCKMAP_SOURCE_DIR) +
-                                 "/studies/quick.json --db " + db_ + " --quiet");
-    ASSERT_EQ(run.exit_code, 0) << run.output;
-    const auto report = RunShockmap("report --db " + db_ + " --out " + (dir_ / "report").string());
-    ASSERT_EQ(report.exit_code, 0) << report.output;
-  }
-  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
-
-  // The DOM of `page` after its scripts ran, from headless Chromium.
-  static std::string Dom(const std::filesystem::path& page) {
-    // Flags as the machine's own Chromium check uses them: no sandbox as root, no network.
-    const auto dom = RunShell(
-        "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-        "--disable-background-networking --disable-component-update --disable-sync "
-        "--user-data-dir=" +
-        (dir_ / "chromium").string() + " --virtual-time-budget=10000 --dump-dom file://" +
-        page.string() + " 2>/dev/null");
-    EXPECT_EQ(dom.exit_code, 0) << "chromium did not run (is Debian's chromium installed?)";
-    return dom.output;
-  }
-
-  static std::size_t Count(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-  }
-
-  // The stored value of one column of a point, as `query --format csv` prints it.
-  static std::string Stored(const std::string& column, const std::string& point_id) {
-    const auto q = RunShockmap("query --db " + db_ + " --format csv \"SELECT " + column +
-                               " FROM results WHERE point_id = " + point_id + "\"");
-    EXPECT_EQ(q.exit_code, 0) << q.output;
-    const auto line = q.output.find('\n');
-    return q.output.substr(line + 1, q.output.find('\n', line + 1) - line - 1);
-  }
-
-  static inline std::filesystem::path dir_;
-  static inline std::string db_;
+// Where a test's study, report and browser profile live.
+struct Place {
+  std::filesystem::path dir;
+  std::string db;
 };
 
-TEST_F(QuickStudyViews, IndexLoadsWithItsTablesFiguresAndMapsInHeadlessChromium) {
-  const auto page = dir_ / "report" / "index.html";
+// The DOM of `page` after its scripts ran, from headless Chromium.
+std::string Dom(const Place& at, const std::filesystem::path& page) {
+  // Flags as the machine's own Chromium check uses them: no sandbox as root, no network.
+  const auto dom = RunShell(
+      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" +
+      (at.dir / "chromium").string() + " --virtual-time-budget=10000 --dump-dom file://" +
+      page.string() + " 2>/dev/null");
+  EXPECT_EQ(dom.exit_code, 0) << "chromium did not run (is Debian's chromium installed?)";
+  return dom.output;
+}
+
+std::size_t Count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto i = text.find(what); i != std::string::npos; i = text.find(what, i + 1)) ++n;
+  return n;
+}
+
+// The stored value of one column of a point, as `query --format csv` prints it.
+std::string Stored(const Place& at, const std::string& column, const std::string& point_id) {
+  const auto q = RunShockmap("query --db " + at.db + " --format csv \"SELECT " + column +
+                             " FROM results WHERE point_id = " + point_id + "\"");
+  EXPECT_EQ(q.exit_code, 0) << q.output;
+  const auto line = q.output.find('\n');
+  return q.output.substr(line + 1, q.output.find('\n', line + 1) - line - 1);
+}
+
+// One report, checked in its parts (writing it takes most of the time).
+void CheckIndex(const Place& at) {
+  const auto page = at.dir / "report" / "index.html";
   ASSERT_TRUE(std::filesystem::exists(page));
   const std::string html = ReadBytes(page.string());
   EXPECT_EQ(html.find("src=\"http"), std::string::npos) << "the page loads from the network";
-  const std::string dom = Dom(page);
+  const std::string dom = Dom(at, page);
   const std::size_t images = Count(html, "<img ");
   const std::size_t tables = Count(html, "<table class=\"sortable\"");
   EXPECT_GE(images, 7u);  // Five maps, Fig. 4 and the cost front.
@@ -91,8 +81,8 @@ TEST_F(QuickStudyViews, IndexLoadsWithItsTablesFiguresAndMapsInHeadlessChromium)
   EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u);
 }
 
-TEST_F(QuickStudyViews, MapCellsCarryTheStoredValuesAndOpenTheirPoint) {
-  const std::string dom = Dom(dir_ / "report" / "index.html");
+void CheckMapCells(const Place& at) {
+  const std::string dom = Dom(at, at.dir / "report" / "index.html");
   const std::regex cell(
       "<a href=\"(points/point_(\\d+)\\.html)\"><rect class=\"cell\"[^>]* data-rk=\"([^\"]+)\" "
       "data-rftrunc=\"([^\"]+)\" data-dt=\"[^\"]+\" data-dt-ratio=\"([^\"]+)\" "
@@ -104,26 +94,27 @@ TEST_F(QuickStudyViews, MapCellsCarryTheStoredValuesAndOpenTheirPoint) {
     const auto& m = *it;
     if (checked % 9 != 0) continue;  // Every ninth cell against the database.
     const std::string id = m[2];
-    EXPECT_NEAR(std::stod(m[3]), std::stod(Stored("r_k", id)), 1e-5 * std::stod(m[3])) << id;
-    EXPECT_NEAR(std::stod(m[4]), std::stod(Stored("r_ftrunc", id)), 1e-5 * std::stod(m[4])) << id;
-    EXPECT_EQ(m[8].str(), Stored("status", id)) << id;
-    const std::string err = Stored("err", id);
+    EXPECT_NEAR(std::stod(m[3]), std::stod(Stored(at, "r_k", id)), 1e-5 * std::stod(m[3])) << id;
+    EXPECT_NEAR(std::stod(m[4]), std::stod(Stored(at, "r_ftrunc", id)), 1e-5 * std::stod(m[4]))
+        << id;
+    EXPECT_EQ(m[8].str(), Stored(at, "status", id)) << id;
+    const std::string err = Stored(at, "err", id);
     if (err.empty()) {
       EXPECT_EQ(m[6].str(), "not scored") << id;
     } else {
       EXPECT_NEAR(std::stod(m[6]), std::stod(err), 5e-5) << id;
     }
-    EXPECT_TRUE(std::filesystem::exists(dir_ / "report" / m[1].str())) << m[1];
+    EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / m[1].str())) << m[1];
   }
   EXPECT_EQ(checked, 11 * 7 + 11 * 4);
 }
 
-TEST_F(QuickStudyViews, AClickOnAHeaderSortsTheTable) {
+void CheckSortOnClick(const Place& at) {
   // A copy of the page with a script that clicks the Err header twice, as a user would, and
   // records the column after each click.
-  std::string html = ReadBytes((dir_ / "report" / "index.html").string());
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
   const std::string clicker = R"(<script>
-var table = document.getElementById('points');
+var table = document.getElementById('points-table');
 var headers = Array.from(table.tHead.rows[0].cells);
 var column = headers.findIndex(function (h) { return h.textContent === 'err'; });
 function values() {
@@ -137,9 +128,9 @@ headers[column].click();
 document.body.dataset.descending = headers[column].getAttribute('aria-sort') + ':' + values();
 </script></body>)";
   html.replace(html.rfind("</body>"), 7, clicker);
-  const auto copy = dir_ / "report" / "sort_check.html";
+  const auto copy = at.dir / "report" / "sort_check.html";
   WriteText(copy.string(), html);
-  const std::string dom = Dom(copy);
+  const std::string dom = Dom(at, copy);
   for (const std::string order : {"ascending", "descending"}) {
     const std::regex attribute("data-" + order + "=\"" + order + ":([^\"]*)\"");
     std::smatch m;
@@ -155,10 +146,10 @@ document.body.dataset.descending = headers[column].getAttribute('aria-sort') + '
   }
 }
 
-TEST_F(QuickStudyViews, APointPageGivesItsFig3AndACompareCommandThatReproducesIt) {
+void CheckPointPage(const Place& at) {
   // A point with a drawn Fig. 3: its page embeds it and names the command.
   std::string page_path;
-  for (const auto& entry : std::filesystem::directory_iterator(dir_ / "report" / "points")) {
+  for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
     if (entry.is_directory() && std::filesystem::exists(entry.path() / "fig3.png")) {
       page_path = entry.path().string() + ".html";
       break;
@@ -176,15 +167,39 @@ TEST_F(QuickStudyViews, APointPageGivesItsFig3AndACompareCommandThatReproducesIt
   std::smatch err;
   ASSERT_TRUE(std::regex_search(run.output, err, std::regex("\"err\": ([0-9.e+-]+)")))
       << run.output;
-  EXPECT_NEAR(std::stod(err[1]), std::stod(Stored("err", id)), 1e-9) << command[1];
+  EXPECT_NEAR(std::stod(err[1]), std::stod(Stored(at, "err", id)), 1e-9) << command[1];
 }
 
-TEST_F(QuickStudyViews, TheMapsGnuplotScriptsRunFromTheirOwnFolder) {
-  const auto dir = dir_ / "report";
-  std::filesystem::remove(dir / "map_err.png");
-  const auto run = RunShell("cd " + dir.string() + " && gnuplot map_err.gp");
-  EXPECT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_TRUE(std::filesystem::exists(dir / "map_err.png"));
+class QuickStudyViews : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    at_.dir =
+        std::filesystem::temp_directory_path() / ("shockmap_report_" + std::to_string(getpid()));
+    std::filesystem::remove_all(at_.dir);
+    std::filesystem::create_directories(at_.dir);
+    at_.db = (at_.dir / "study.db").string();
+    const auto run = RunShockmap("study run " + std::string(SHOCKMAP_SOURCE_DIR) +
+                                 "/studies/quick.json --db " + at_.db + " --quiet");
+    ASSERT_EQ(run.exit_code, 0) << run.output;
+  }
+  static void TearDownTestSuite() { std::filesystem::remove_all(at_.dir); }
+
+  static inline Place at_;
+};
+
+TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
+  const auto report =
+      RunShockmap("report --db " + at_.db + " --out " + (at_.dir / "report").string());
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  CheckIndex(at_);
+  CheckMapCells(at_);
+  CheckSortOnClick(at_);
+  CheckPointPage(at_);
+  // The maps' scripts run from their own folder.
+  std::filesystem::remove(at_.dir / "report" / "map_err.png");
+  const auto gnuplot = RunShell("cd " + (at_.dir / "report").string() + " && gnuplot map_err.gp");
+  EXPECT_EQ(gnuplot.exit_code, 0) << gnuplot.output;
+  EXPECT_TRUE(std::filesystem::exists(at_.dir / "report" / "map_err.png"));
 }
 
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {
@@ -230,26 +245,28 @@ TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
 }
 
 TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
-  const auto fig4 = RunShockmap("plot fig4 --db " + db_ + " --out " + (dir_ / "fig4.svg").string());
+  const auto fig4 =
+      RunShockmap("plot fig4 --db " + at_.db + " --out " + (at_.dir / "fig4.svg").string());
   ASSERT_EQ(fig4.exit_code, 0) << fig4.output;
-  EXPECT_GT(std::filesystem::file_size(dir_ / "fig4.svg"), 1000u);
+  EXPECT_GT(std::filesystem::file_size(at_.dir / "fig4.svg"), 1000u);
 
   const auto cost =
-      RunShockmap("cost --db " + db_ + " --rk 3000 --out " + (dir_ / "cost.png").string());
+      RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());
   ASSERT_EQ(cost.exit_code, 0) << cost.output;
   EXPECT_NE(cost.output.find("R_k = 3162"), std::string::npos) << cost.output;
   EXPECT_NE(cost.output.find("*"), std::string::npos) << "no Pareto point marked";
 
-  const auto inside = RunShockmap("advise --db " + db_ + " --rk 5000");
+  const auto inside = RunShockmap("advise --db " + at_.db + " --rk 5000");
   ASSERT_EQ(inside.exit_code, 0) << inside.output;
   EXPECT_EQ(inside.output.find("warning"), std::string::npos) << inside.output;
-  const auto outside = RunShockmap("advise --db " + db_ + " --rk 1e7");
+  const auto outside = RunShockmap("advise --db " + at_.db + " --rk 1e7");
   ASSERT_EQ(outside.exit_code, 0) << outside.output;
   EXPECT_NE(outside.output.find("outside the studied range"), std::string::npos) << outside.output;
 
-  const auto bad = RunShockmap("map --db " + db_ + " --metric speed");
+  const auto bad = RunShockmap("map --db " + at_.db + " --metric speed");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  const auto bad_out = RunShockmap("map --db " + db_ + " --out " + (dir_ / "map.jpg").string());
+  const auto bad_out =
+      RunShockmap("map --db " + at_.db + " --out " + (at_.dir / "map.jpg").string());
   EXPECT_EQ(bad_out.exit_code, 2) << bad_out.output;
   EXPECT_NE(bad_out.output.find(".png or .svg"), std::string::npos) << bad_out.output;
 }

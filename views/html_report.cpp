@@ -99,7 +99,7 @@ std::string PointsTable(const QueryResult& results) {
         PointPagePath(std::get<std::int64_t>(row[PointIdColumn(results)])).generic_string());
   }
   return "<div class=\"scroll\">" +
-         SortableTable(shown, "points", "Every stored point (click a header to sort)", links) +
+         SortableTable(shown, "points-table", "Every stored point (click a header to sort)", links) +
          "</div>\n";
 }
 
@@ -182,7 +182,7 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
   DrawFig4(ctx.study, explicit_points, implicit_points, ctx.thresholds, fig4_png);
   return {
       {"outcomes", "Outcomes",
-       SortableTable(tables.outcomes, "outcomes", "Points by scheme and status")},
+       SortableTable(tables.outcomes, "outcomes-table", "Points by scheme and status")},
       {"criteria", "Validity criteria and the paper's rules",
        Preformatted(CriteriaSummary(ctx.study, criteria, explicit_points))},
       {"maps", "Validity maps", InteractiveMaps(explicit_points, criteria)},
@@ -192,7 +192,7 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
       {"cost", "What accuracy costs", CostSection(ctx, explicit_points, implicit_points)},
       {"points", "Points", PointsTable(results)},
       {"provenance", "Provenance",
-       SortableTable(tables.provenance, "provenance", "Runs of the study")},
+       SortableTable(tables.provenance, "provenance-table", "Runs of the study")},
       {"study-file", "Study file", Preformatted(tables.spec_json)},
   };
 }

@@ -82,7 +82,9 @@ std::string Cell(const QueryCell& cell) {
     const std::string full = fmt::format("{}", *d);
     return fmt::format("<td data-sort=\"{0}\" title=\"{0}\">{1}</td>", full, CellText(cell));
   }
-  return "<td>" + HtmlEscaped(CellText(cell)) + "</td>";
+  const std::string text = CellText(cell);
+  // Long texts (messages) wrap; everything else stays on one line.
+  return (text.size() > 40 ? "<td class=\"long\">" : "<td>") + HtmlEscaped(text) + "</td>";
 }
 
 }  // namespace

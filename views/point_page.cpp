@@ -52,7 +52,7 @@ std::string StoredValues(const PointPageInput& in) {
   for (std::size_t i = 0; i < in.columns->size(); ++i) {
     values.rows.push_back({(*in.columns)[i], (*in.row)[i]});
   }
-  return SortableTable(values, "stored", "Its row of the results view");
+  return SortableTable(values, "stored-table", "Its row of the results view");
 }
 
 std::string FigureSection(const PointPageInput& in, const std::string& command) {
@@ -117,14 +117,14 @@ std::string PointPage(const PointPageInput& in) {
   sections.push_back(
       {"reproduce", "Reproduce it",
        "<pre>" + HtmlEscaped(command) + "</pre>\n" +
-           (caveats.empty() ? "<p>compare then uses the study's settings.</p>\n"
+           (caveats.empty() ? "<p>It sets every setting of the study this point depends on.</p>\n"
                             : "<p>compare has no flag for these settings of the study; its "
                               "result can differ from the stored one by them:</p><ul>" +
                                   caveats + "</ul>\n")});
   sections.push_back(
       {"values", "Stored values", "<div class=\"scroll\">" + StoredValues(in) + "</div>"});
   ReportHeader header{fmt::format("{}: point {}", in.study, in.point_id),
-                      {{"study", in.study}, {"report", "../index.html"}}};
+                      {{"study", in.study}, {"point", std::to_string(in.point_id)}}};
   std::string page = ReportPage(header, sections);
   const std::string back = "<p><a href=\"../index.html\">back to the report</a></p>\n";
   return page.insert(page.find("</header>") + 9, back);

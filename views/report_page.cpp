@@ -21,7 +21,8 @@ pre { background: #f6f6f6; padding: 0.8em; white-space: pre-wrap; font-size: 0.9
 code { background: #f0f0f0; padding: 0 0.2em; }
 table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.88em; }
 caption { text-align: left; font-weight: bold; padding: 0.3em 0; }
-th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; white-space: nowrap; }
+td.long { white-space: normal; min-width: 24em; text-align: left; }
 th { background: #eef3ee; cursor: pointer; user-select: none; }
 th[aria-sort=ascending]::after { content: ' \25B2'; } th[aria-sort=descending]::after { content: ' \25BC'; }
 td:first-child, th:first-child { text-align: left; }

@@ -97,15 +97,15 @@ std::vector<ReportSection> SceneSections(const ReportContext& ctx, const SceneSt
       HtmlEscaped(spec.scoring.zone), spec.scoring.window_s);
   return {
       {"outcomes", "Outcomes",
-       about + SortableTable(Outcomes(results), "outcomes", "Points by status")},
+       about + SortableTable(Outcomes(results), "outcomes-table", "Points by status")},
       {"points", "Points",
        "<div class=\"scroll\">" +
-           SortableTable(PointsWithParameters(spec, results), "points",
+           SortableTable(PointsWithParameters(spec, results), "points-table",
                          "Every stored point, its swept parameters as columns") +
            "</div>\n"},
       {"contact-forces", "Contact-force maps", ForceMaps(ctx, maps)},
       {"provenance", "Provenance",
-       SortableTable(tables.provenance, "provenance", "Runs of the study")},
+       SortableTable(tables.provenance, "provenance-table", "Runs of the study")},
       {"study-file", "Study file", Preformatted(tables.spec_json)},
   };
 }

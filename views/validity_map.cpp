@@ -50,18 +50,20 @@ double CellValue(const ScoredPoint& p, MapMetric metric) {
 }
 
 // Index 0, one line per cell: r_k y x_low x_high y_low y_high value category (the index in
-// OutcomeCategories()). Index 1: the smallest passing R_ftrunc of each R_k (the criteria's
+// OutcomeCategories()) valued (1 when value is a number; gnuplot skips a line whose used
+// column reads NaN). Index 1: the smallest passing R_ftrunc of each R_k (the criteria's
 // boundary points).
 void WriteMapData(const MapGrid& grid, const ValidityCriteria& criteria, MapMetric metric,
                   const std::filesystem::path& data_file) {
   AtomicFile file(data_file);
   std::ostream& data = file.Stream();
-  data << "# r_k y x_low x_high y_low y_high value category\n";
+  data << "# r_k y x_low x_high y_low y_high value category valued\n";
   for (const MapCell& c : grid.cells) {
     const double value = CellValue(*c.point, metric);
-    data << fmt::format("{} {} {} {} {} {} {} {}\n", c.r_k, c.y, c.x_low, c.x_high, c.y_low,
+    data << fmt::format("{} {} {} {} {} {} {} {} {}\n", c.r_k, c.y, c.x_low, c.x_high, c.y_low,
                         c.y_high, std::isfinite(value) ? fmt::format("{}", value) : "NaN",
-                        OutcomeCategoryOf(*c.point, criteria.options));
+                        OutcomeCategoryOf(*c.point, criteria.options),
+                        std::isfinite(value) ? 1 : 0);
   }
   data << "\n\n# r_k smallest_passing_r_ftrunc\n";
   for (const RkBoundary& b : criteria.boundary) {
@@ -120,7 +122,7 @@ std::string CellClauses(const MapGrid& grid, MapMetric metric, const CriteriaOpt
     const std::string label =
         metric == MapMetric::kStatus ? category.label : category.label + " (no score)";
     clauses += fmt::format(
-        "{}{} index 0 using 1:($8 == {} && $7 != $7 ? $2 : 1/0):3:4:5:6 with boxxyerror fs "
+        "{}{} index 0 using 1:($8 == {} && $9 == 0 ? $2 : 1/0):3:4:5:6 with boxxyerror fs "
         "solid 1.0 border lc rgb '#ffffff' fc rgb '{}' title {}",
         clauses.empty() ? "" : ", \\\n     ", clauses.empty() ? data : "''", i, category.colour,
         GnuplotQuoted(label));
