@@ -75,6 +75,15 @@ std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::
   return CanonicalSections(ctx, spec, figures);
 }
 
+// "bundle.wire.stiffness_n_per_m = 1e+05, solver.r_ftrunc = 1000"
+std::string Described(const SceneParameters& parameters) {
+  std::string text;
+  for (const auto& [path, value] : parameters) {
+    text += fmt::format("{}{} = {:g}", text.empty() ? "" : ", ", path, value);
+  }
+  return text;
+}
+
 // One contact-force map per combination of the swept parameters outside "solver.", at the
 // reference's settings.
 std::vector<SceneForceMap> DrawForceMaps(const ReportContext& ctx, const SceneStudySpec& spec) {
@@ -89,13 +98,13 @@ std::vector<SceneForceMap> DrawForceMaps(const ReportContext& ctx, const SceneSt
   std::vector<SceneForceMap> maps;
   for (const auto& [key, parameters] : physical) {
     fmt::print("  contact-force map {}/{} at {}\n", maps.size() + 1, physical.size(),
-               ParametersJson(parameters));
+               Described(parameters));
     std::fflush(stdout);
     Scene scene = ScoredScene(spec, parameters);
     const SceneRun run = RunScene(scene);
     const auto png = ctx.dir / fmt::format("contact_forces_{}.png", maps.size() + 1);
     DrawContactForceMap(scene, run.max_contact_force_n, png);
-    maps.push_back({"Largest contact force per zone at " + ParametersJson(parameters), png});
+    maps.push_back({"Largest contact force per zone at " + Described(parameters), png});
   }
   return maps;
 }

@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/run_command.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
@@ -200,6 +202,48 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   const auto gnuplot = RunShell("cd " + (at_.dir / "report").string() + " && gnuplot map_err.gp");
   EXPECT_EQ(gnuplot.exit_code, 0) << gnuplot.output;
   EXPECT_TRUE(std::filesystem::exists(at_.dir / "report" / "map_err.png"));
+}
+
+// A scene study named with markup: the report has its sections, the points with their swept
+// parameter as a column, the contact-force map, and shows the name as text.
+TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
+  Place at{std::filesystem::temp_directory_path() /
+               ("shockmap_scene_report_" + std::to_string(getpid())),
+           ""};
+  std::filesystem::remove_all(at.dir);
+  std::filesystem::create_directories(at.dir);
+  at.db = (at.dir / "s.db").string();
+  const nlohmann::json study = {
+      {"name", "<b>spring</b> & \"q\""},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
+      {"sweep", {{"solver.r_ftrunc", {10, 300}}}},
+      {"reference", {{"solver.r_ftrunc", 1000}}},
+      {"scoring", {{"displacement", "tip"}, {"zone", "tip_spring"}, {"rest_duration_s", 0.0052}}}};
+  WriteText((at.dir / "study.json").string(), study.dump());
+  const auto run =
+      RunShockmap("study run --quiet " + (at.dir / "study.json").string() + " --db " + at.db);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report =
+      RunShockmap("report --db " + at.db + " --out " + (at.dir / "report").string());
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const auto page = at.dir / "report" / "index.html";
+  const std::string html = ReadBytes(page.string());
+  EXPECT_EQ(html.find("<b>spring"), std::string::npos) << "the study name went in as markup";
+  EXPECT_NE(html.find("&lt;b&gt;spring&lt;/b&gt; &amp; &quot;q&quot;"), std::string::npos);
+  const std::string dom = Dom(at, page);
+  EXPECT_NE(dom.find("data-images-loaded=\"1/1\""), std::string::npos) << dom.substr(0, 400);
+  EXPECT_NE(dom.find("data-sortable-tables=\"3\""), std::string::npos);
+  EXPECT_NE(dom.find("<th data-sort-method=\"real\" role=\"columnheader\" "
+                     "tabindex=\"0\">solver.r_ftrunc</th>"),
+            std::string::npos)
+      << dom;
+  const auto points_table = dom.find("id=\"points-table\"");
+  const std::string rows =
+      dom.substr(points_table, dom.find("</table>", points_table) - points_table);
+  EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
+  EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
+  std::filesystem::remove_all(at.dir);
 }
 
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {

@@ -29,7 +29,8 @@ std::vector<std::size_t> ByForce(const std::vector<double>& force) {
 double HeightKey(double height_m) { return std::round(height_m * 1e6) / 1e6; }
 
 // What the zones file holds: lateral extent (mm), top (m), which kinds of zone are present,
-// the largest force between two beams and against a stop, the distinct zone heights.
+// the largest force between two beams and against a stop, the distinct heights of the zones
+// between beams (the stops have their own panel).
 struct ZoneExtent {
   double y_min = 0.0, y_max = 0.0, top = 0.0, largest_between = 0.0, largest_stop = 0.0;
   bool idle = false, between = false, stop = false;  // Present: never in contact, in contact.
@@ -51,7 +52,7 @@ ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n
                          between ? 1 : 0);
     e.y_min = std::min(e.y_min, 1e3 * z.y_m), e.y_max = std::max(e.y_max, 1e3 * z.y_m);
     e.top = std::max(e.top, z.height_m);
-    e.heights_m.insert(HeightKey(z.height_m));
+    if (between) e.heights_m.insert(HeightKey(z.height_m));
     const bool touched = max_force_n[i] > 0.0;
     e.idle = e.idle || !touched;
     e.between = e.between || (touched && between);

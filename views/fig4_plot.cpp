@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -60,6 +61,16 @@ std::string UnconvergedKey(const std::set<double>& r_k) {
                        "reference unconverged (not scored)'";
 }
 
+// The smallest and largest R_k of the curves.
+std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>, Curve>& curves) {
+  std::pair<double, double> range{INFINITY, 0.0};
+  for (const auto& [key, curve] : curves) {
+    range.first = std::min(range.first, curve.by_rk.begin()->first);
+    range.second = std::max(range.second, curve.by_rk.rbegin()->first);
+  }
+  return range;
+}
+
 // Writes one data block per curve (columns r_k err srf status) and returns the plot clauses
 // of the Err and the SRf panels.
 std::pair<std::string, std::string> WriteCurves(
@@ -98,10 +109,11 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
   AddCurves(explicit_points, "explicit", curves);
   AddCurves(implicit_points, "implicit", curves);
   if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");
-  TerminalFor(file, 1400, 600);  // Throws for a bad extension before any file is written.
+  TerminalFor(file, 1400, 700);  // Throws for a bad extension before any file is written.
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto [err_plot, srf_plot] =
       WriteCurves(curves, std::filesystem::path(file).replace_extension(".dat"));
+  const std::pair<double, double> range = RkRange(curves);
   const std::string script = fmt::format(
       R"gp(set terminal {terminal}
 set output {out}
@@ -109,18 +121,19 @@ set multiplot layout 1,2 title {title} noenhanced
 set logscale x
 set format x '10^{{%L}}'
 set xlabel 'R_k = k_s / K_{{bend}}'
+set xrange [{x0}:{x1}]
 set grid
-set key top left font ',10'
+set key below font ',10' maxrows 4
 {unconverged}set ylabel 'Err (paper eq. 8)'
 set yrange [0:*]
 plot {err_plot}, {err_max} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {err_max:g}'{unconverged_key}
 set ylabel 'SRf (paper eq. 9)'
 set yrange [0:1.05]
-set key bottom left font ',10'
 plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'{unconverged_key}
 unset multiplot
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1400, 600)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("terminal", TerminalFor(file, 1400, 700)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("x0", range.first / 2), fmt::arg("x1", range.second * 2),
       fmt::arg("title", GnuplotQuoted(study + ": the paper's Fig. 4 (finest time step per point)")),
       fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
       fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min),

@@ -99,7 +99,8 @@ std::string PointsTable(const QueryResult& results) {
         PointPagePath(std::get<std::int64_t>(row[PointIdColumn(results)])).generic_string());
   }
   return "<div class=\"scroll\">" +
-         SortableTable(shown, "points-table", "Every stored point (click a header to sort)", links) +
+         SortableTable(shown, "points-table", "Every stored point (click a header to sort)",
+                       links) +
          "</div>\n";
 }
 
