@@ -56,9 +56,11 @@ QueryResult PointsWithParameters(const SceneStudySpec& spec, const QueryResult& 
     const auto parameters =
         nlohmann::json::parse(CellText(row[ColumnOf(results, "parameters_json")]), nullptr, false);
     for (const std::string& path : paths) {
-      const bool known =
-          parameters.is_object() && parameters.contains(path) && parameters[path].is_number();
-      cells.push_back(known ? QueryCell(parameters[path].get<double>()) : QueryCell());
+      QueryCell value;  // NULL unless the point sets the parameter.
+      if (parameters.is_object() && parameters.contains(path) && parameters[path].is_number()) {
+        value = parameters[path].get<double>();
+      }
+      cells.push_back(value);
     }
     for (const std::string& name : kShown) {
       const std::size_t c = ColumnOf(results, name);
