@@ -51,7 +51,7 @@ document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {
     var d = cell.dataset;
     info.innerHTML = '';
     [['R_k', d.rk], ['R_ftrunc', d.rftrunc], ['dt', d.dt + ' s (' + d.dtRatio + ' dt_sharp)'],
-     ['Err', d.err], ['SRf', d.srf], ['status', d.status]].forEach(function (row) {
+     ['Err', d.err], ['SRf', d.srf], ['status', d.status + ' (' + d.outcome + ')']].forEach(function (row) {
       var line = document.createElement('div');
       line.textContent = row[0] + ': ' + row[1];
       info.appendChild(line);

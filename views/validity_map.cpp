@@ -92,8 +92,10 @@ MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
                   fmt::arg("t", th.srf_min)),
               "SRf", fmt::format("SRf (paper eq. 9), threshold {:g}", th.srf_min)};
     case MapMetric::kCost:
-      return {"set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n",
-              "wall time (s)", "wall time of the numerical run"};
+      return {
+          "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
+          "set format cb '10^{%L}'\n",
+          "wall time (s)", "wall time of the numerical run"};
     case MapMetric::kStatus:
       return {"unset colorbox\n", "", "outcome"};
   }
