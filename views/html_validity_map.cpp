@@ -83,8 +83,16 @@ std::string Axes(const MapGrid& grid, const Frame& f, const std::string& ylabel)
   return svg;
 }
 
-// The envelope C R_k^p above the knee, clipped to the frame; "" without a fit.
-std::string Boundary(const ValidityCriteria& criteria, const Frame& f) {
+// The line over the cells: on the R_ftrunc map the envelope C R_k^p above the knee (none
+// without a fit), on the dt map the sharp stability bound dt = dt_sharp; clipped to the frame.
+std::string Boundary(const ValidityCriteria& criteria, const Frame& f, MapAxis y) {
+  if (y == MapAxis::kDt) {
+    if (f.y_min > 1.0 || f.y_max < 1.0) return "";
+    return fmt::format(
+        "<line class=\"boundary\" x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" "
+        "stroke=\"#000\" stroke-width=\"3\" pointer-events=\"none\"/>\n",
+        f.left, f.Y(1.0), f.left + f.width, f.Y(1.0));
+  }
   if (!criteria.fit) return "";
   std::string points;
   const double from = std::max(criteria.fit->knee_r_k, f.x_min);
@@ -115,6 +123,9 @@ std::string Legend(const MapGrid& grid, const ValidityCriteria& criteria, MapAxi
         "{:.4g}, raised to cover the smallest passing R_ftrunc of every R_k</span>",
         criteria.fit->c_envelope, criteria.fit->p, criteria.fit->knee_r_k);
   }
+  if (y == MapAxis::kDt) {
+    items += "<span>black line: the sharp stability bound dt = 2 / omega_max</span>";
+  }
   return "<p class=\"legend\">" + items + "</p>\n";
 }
 
@@ -127,13 +138,13 @@ std::string HtmlValidityMap(const MapGrid& grid, MapAxis y, const ValidityCriter
   for (const MapCell& c : grid.cells) cells += CellRect(c, f, criteria.options);
   const std::string ylabel = y == MapAxis::kRFtrunc ? "R_ftrunc = f_trunc / f_1" : "dt / dt_sharp";
   return fmt::format(
-      "<svg class=\"map\" id=\"{id}\" viewBox=\"0 0 {w:.0f} {h:.0f}\" width=\"{w:.0f}\" "
-      "height=\"{h:.0f}\" xmlns=\"http://www.w3.org/2000/svg\">\n{cells}{boundary}{axes}</svg>\n"
+      "<svg class=\"map\" id=\"{id}\" viewBox=\"0 0 {w:.0f} {h:.0f}\" "
+      "xmlns=\"http://www.w3.org/2000/svg\">\n{cells}{boundary}{axes}</svg>\n"
       "{legend}",
       fmt::arg("id", HtmlEscaped(id)), fmt::arg("w", f.left + f.width + 20),
       fmt::arg("h", f.top + f.height + 75), fmt::arg("cells", cells),
-      fmt::arg("boundary", y == MapAxis::kRFtrunc ? Boundary(criteria, f) : ""),
-      fmt::arg("axes", Axes(grid, f, ylabel)), fmt::arg("legend", Legend(grid, criteria, y)));
+      fmt::arg("boundary", Boundary(criteria, f, y)), fmt::arg("axes", Axes(grid, f, ylabel)),
+      fmt::arg("legend", Legend(grid, criteria, y)));
 }
 
 }  // namespace shockmap

@@ -27,6 +27,7 @@ th { background: #eef3ee; cursor: pointer; user-select: none; }
 th[aria-sort=ascending]::after { content: ' \25B2'; } th[aria-sort=descending]::after { content: ' \25BC'; }
 td:first-child, th:first-child { text-align: left; }
 .scroll { max-height: 32em; overflow: auto; }
+svg.map { width: 100%; max-width: 1100px; height: auto; display: block; }
 svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
 svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
