@@ -11,6 +11,7 @@
 #include "app/exit_codes.h"
 #include "app/export_command.h"
 #include "app/map_command.h"
+#include "app/report_command.h"
 #include "app/simulate_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddViewCommands(app);
+  shockmap::AddReportCommand(app);
   shockmap::AddExportCommand(app);
   shockmap::AddCompletionCommand(app);
   // CLI11 would only say that a subcommand is required.

@@ -63,7 +63,7 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
 }
 
 // The longest name written into the output directory.
-constexpr const char* kLongestOutput = "contact_force_map.section.dat";
+constexpr const char* kLongestOutput = "contact_force_map.zones.dat";
 
 // Writes the outputs the scene asks for into f.out_dir; the files written.
 std::vector<std::filesystem::path> WriteOutputs(const SimulateFlags& f, const Scene& scene,

@@ -15,7 +15,6 @@
 #include "views/advice.h"
 #include "views/cost_front.h"
 #include "views/fig4_plot.h"
-#include "views/html_report.h"
 #include "views/scored_points.h"
 
 namespace shockmap {
@@ -122,19 +121,6 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
   });
 }
 
-void AddReportCommand(CLI::App& app, const Flags& flags) {
-  CLI::App* report = app.add_subcommand(
-      "report", "One self-contained HTML page: maps, Fig. 4, criteria, cost front, provenance");
-  AddCommon(report, *flags, true);
-  report->add_option("--out", flags->out, "directory for report.html and its figures")->required();
-  report->callback([flags] {
-    CheckPathLength(std::filesystem::path(flags->out) / "map_status_dt.png", "--out");
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
-    const auto page = WriteHtmlReport(flags->database_path, study, flags->thresholds, flags->out);
-    std::cout << "report written to " << page.string() << '\n';
-  });
-}
-
 }  // namespace
 
 void AddViewCommands(CLI::App& app) {
@@ -142,7 +128,6 @@ void AddViewCommands(CLI::App& app) {
   AddPlotCommand(app, flags);
   AddCostCommand(app, flags);
   AddAdviseCommand(app, flags);
-  AddReportCommand(app, flags);
 }
 
 }  // namespace shockmap

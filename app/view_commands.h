@@ -1,5 +1,5 @@
 #pragma once
-// Views of a stored study: `shockmap plot fig4`, `cost`, `advise` and `report`.
+// Views of a stored study: `shockmap plot fig4`, `cost` and `advise`.
 
 #include <CLI/CLI.hpp>
 

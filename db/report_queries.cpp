@@ -1,5 +1,9 @@
 #include "db/report_queries.h"
 
+#include <filesystem>
+
+#include "db/schema.h"
+
 namespace shockmap {
 
 ReportTables LoadReportTables(const std::string& database_path, const std::string& study) {
@@ -16,6 +20,44 @@ ReportTables LoadReportTables(const std::string& database_path, const std::strin
       {study});
   t.spec_json = StoredStudySpec(database_path, study).value_or("");
   return t;
+}
+
+QueryResult StudyResultRows(const std::string& database_path, const std::string& study,
+                            bool scene_study) {
+  return RunReadOnlyQuery(database_path,
+                          std::string("SELECT * FROM ") +
+                              (scene_study ? "scene_results" : "results") +
+                              " WHERE study = ?1 ORDER BY point_id",
+                          {study});
+}
+
+QueryResult PointKeys(const std::string& database_path, const std::string& study) {
+  return RunReadOnlyQuery(
+      database_path,
+      "SELECT p.point_id, p.point_key, p.reference_key FROM points p JOIN studies st USING "
+      "(study_id) WHERE st.name = ?1 ORDER BY p.point_id",
+      {study});
+}
+
+std::optional<ReferenceRow> StoredReference(const std::string& database_path,
+                                            const std::string& reference_key) {
+  if (!std::filesystem::is_regular_file(database_path)) {
+    throw DbError("no database at " + database_path);
+  }
+  Connection db(database_path, Connection::Mode::kReadOnly);
+  CheckSchema(db);
+  Statement s = db.Prepare(
+      "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, n_modes_free, "
+      "n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, force_n, shocks_json FROM "
+      "reference_runs WHERE reference_key = ?1");
+  s.Bind(1, reference_key);
+  if (!s.Step()) return std::nullopt;
+  ReferenceRow r;
+  r.reference_key = reference_key;
+  s.ReadColumns(r.reference_id, r.r_k, r.r_fref, r.r_fref_check, r.window_s, r.convergence,
+                r.n_modes_free, r.n_modes_contact, r.n_transitions, r.wall_s, r.output_dt_s,
+                r.tip_m, r.force_n, r.shocks_json);
+  return r;
 }
 
 std::optional<std::string> StoredStudySpec(const std::string& database_path,

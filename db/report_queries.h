@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "db/canonical_points.h"
 #include "db/read_only_query.h"
 
 namespace shockmap {
@@ -16,6 +17,19 @@ struct ReportTables {
 
 // Throws DbError as RunReadOnlyQuery does.
 ReportTables LoadReportTables(const std::string& database_path, const std::string& study);
+
+// Every column of the `results` view (canonical studies) or `scene_results` (scene studies)
+// for the points of `study`, by point_id.
+QueryResult StudyResultRows(const std::string& database_path, const std::string& study,
+                            bool scene_study);
+
+// The keys of each point of a canonical `study`: columns point_id, point_key, reference_key.
+QueryResult PointKeys(const std::string& database_path, const std::string& study);
+
+// The stored reference of that key, read on a read-only connection; nothing when none is
+// stored. Throws DbError as RunReadOnlyQuery does.
+std::optional<ReferenceRow> StoredReference(const std::string& database_path,
+                                            const std::string& reference_key);
 
 // The study file stored for `study`, or nothing when no study has that name.
 std::optional<std::string> StoredStudySpec(const std::string& database_path,

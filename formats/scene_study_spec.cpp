@@ -155,18 +155,17 @@ void CheckEveryPointsScene(const SceneStudySpec& spec) {
   }
 }
 
-}  // namespace
-
-SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
-                                   const SceneFileAccess& access) {
+// ParseSceneStudySpec with the scene's JSON given: read from `scene_file`, or as stored.
+SceneStudySpec ParseWithScene(const Json& json, const std::string& file, Json scene,
+                              const std::string& scene_file, const SceneFileAccess& access) {
   SceneStudySpec spec;
   spec.file = file;
   spec.access = access;
   JsonObjectReader r(json, file, "");
   std::tie(spec.name, spec.description) = ReadStudyTitle(r, "scene_sweep");
-  spec.scene_file =
-      (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
-  spec.scene = ReadJsonFile(spec.scene_file);
+  r.RequiredString("scene");
+  spec.scene_file = scene_file;
+  spec.scene = std::move(scene);
   const Scene base = ParseScene(spec.scene, spec.scene_file, access);
   const Axes axes = ParseSweep(r, spec.scene, file);
   if (const Json* reference = r.Get("reference")) {
@@ -187,6 +186,32 @@ SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
   stored["settings"] = Json::parse(SceneSettingsKey(spec));
   spec.spec_json = stored.dump();
   return spec;
+}
+
+}  // namespace
+
+SceneStudySpec ParseSceneStudySpec(const Json& json, const std::string& file,
+                                   const SceneFileAccess& access) {
+  std::string scene_path;
+  {
+    JsonObjectReader r(json, file, "");
+    ReadStudyTitle(r, "scene_sweep");
+    scene_path = r.RequiredString("scene");
+  }
+  const std::string scene_file =
+      (std::filesystem::path(file).parent_path() / scene_path).lexically_normal();
+  return ParseWithScene(json, file, ReadJsonFile(scene_file), scene_file, access);
+}
+
+SceneStudySpec ParseStoredSceneStudySpec(const Json& stored, const std::string& label) {
+  Json json = stored;
+  const Json scene = json.contains("scene_json") ? json["scene_json"] : Json();
+  json.erase("scene_json");
+  json.erase("settings");
+  const std::string scene_file = json.contains("scene") && json["scene"].is_string()
+                                     ? json["scene"].get<std::string>()
+                                     : std::string();
+  return ParseWithScene(json, label, scene, scene_file, {});
 }
 
 Scene ScoredScene(const SceneStudySpec& spec, const SceneParameters& parameters) {

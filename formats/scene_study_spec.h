@@ -42,6 +42,11 @@ struct SceneStudySpec {
 SceneStudySpec ParseSceneStudySpec(const nlohmann::json& json, const std::string& file,
                                    const SceneFileAccess& access = {});
 
+// A scene study as the database stores it (spec_json: the study with its scene embedded as
+// "scene_json"), parsed as ParseSceneStudySpec parses the file; `label` names it in messages.
+// The scene's own data files, if any, are read relative to the working directory.
+SceneStudySpec ParseStoredSceneStudySpec(const nlohmann::json& stored, const std::string& label);
+
 // The scene of a point, set up for scoring: the parameters applied, the end time at the window,
 // and only the scored displacement and zone recorded. Throws InputError.
 Scene ScoredScene(const SceneStudySpec& spec, const SceneParameters& parameters);

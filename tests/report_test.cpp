@@ -1,80 +1,316 @@
-// The report a user opens: every figure of the HTML page loads in a real browser (Debian's
-// headless Chromium), and the other views of a study answer.
+// The report a user opens: index.html in a real browser (Debian's headless Chromium) has its
+// tables, sorts them on a click, its map cells carry the stored values and link to point pages
+// whose `compare` command recomputes the stored score; the other views of a study answer; the
+// HTML pieces escape what comes from user files.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/run_command.h"
+#include "views/html_text.h"
+#include "views/map_grid.h"
 
 namespace shockmap {
 namespace {
 
+using testing::ReadBytes;
+using testing::RunShell;
 using testing::RunShockmap;
+using testing::WriteText;
+
+// Where a test's study, report and browser profile live.
+struct Place {
+  std::filesystem::path dir;
+  std::string db;
+};
+
+// The DOM of `page` after its scripts ran, from headless Chromium.
+std::string Dom(const Place& at, const std::filesystem::path& page) {
+  // Flags as the machine's own Chromium check uses them: no sandbox as root, no network.
+  const auto dom = RunShell(
+      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+      "--disable-background-networking --disable-component-update --disable-sync "
+      "--user-data-dir=" +
+      (at.dir / "chromium").string() + " --virtual-time-budget=10000 --dump-dom file://" +
+      page.string() + " 2>/dev/null");
+  EXPECT_EQ(dom.exit_code, 0) << "chromium did not run (is Debian's chromium installed?)";
+  return dom.output;
+}
+
+std::size_t Count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto i = text.find(what); i != std::string::npos; i = text.find(what, i + 1)) ++n;
+  return n;
+}
+
+// The stored value of one column of a point, as `query --format csv` prints it.
+std::string Stored(const Place& at, const std::string& column, const std::string& point_id) {
+  const auto q = RunShockmap("query --db " + at.db + " --format csv \"SELECT " + column +
+                             " FROM results WHERE point_id = " + point_id + "\"");
+  EXPECT_EQ(q.exit_code, 0) << q.output;
+  const auto line = q.output.find('\n');
+  return q.output.substr(line + 1, q.output.find('\n', line + 1) - line - 1);
+}
+
+// One report, checked in its parts (writing it takes most of the time).
+void CheckIndex(const Place& at) {
+  const auto page = at.dir / "report" / "index.html";
+  ASSERT_TRUE(std::filesystem::exists(page));
+  const std::string html = ReadBytes(page.string());
+  EXPECT_EQ(html.find("src=\"http"), std::string::npos) << "the page loads from the network";
+  const std::string dom = Dom(at, page);
+  const std::size_t images = Count(html, "<img ");
+  const std::size_t tables = Count(html, "<table class=\"sortable\"");
+  EXPECT_GE(images, 7u);  // Five maps, Fig. 4 and the cost front.
+  EXPECT_NE(dom.find(fmt::format("data-images-loaded=\"{0}/{0}\"", images)), std::string::npos)
+      << dom.substr(0, dom.find("<h1>"));
+  EXPECT_NE(dom.find(fmt::format("data-sortable-tables=\"{}\"", tables)), std::string::npos);
+  for (const char* id : {"outcomes", "points", "provenance"}) {
+    EXPECT_NE(dom.find(std::string("<table class=\"sortable\" id=\"") + id), std::string::npos)
+        << id;
+  }
+  for (const char* section : {"criteria", "maps", "fig4", "cost", "study-file"}) {
+    EXPECT_NE(dom.find(std::string("href=\"#") + section + "\""), std::string::npos) << section;
+  }
+  // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second.
+  EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u);
+}
+
+void CheckMapCells(const Place& at) {
+  const std::string dom = Dom(at, at.dir / "report" / "index.html");
+  const std::regex cell(
+      "<a href=\"(points/point_(\\d+)\\.html)\"><rect class=\"cell\"[^>]* data-rk=\"([^\"]+)\" "
+      "data-rftrunc=\"([^\"]+)\" data-dt=\"[^\"]+\" data-dt-ratio=\"([^\"]+)\" "
+      "data-err=\"([^\"]+)\" "
+      "data-srf=\"([^\"]+)\" data-status=\"([^\"]+)\"");
+  int checked = 0;
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), cell); it != std::sregex_iterator();
+       ++it, ++checked) {
+    const auto& m = *it;
+    if (checked % 9 != 0) continue;  // Every ninth cell against the database.
+    const std::string id = m[2];
+    EXPECT_NEAR(std::stod(m[3]), std::stod(Stored(at, "r_k", id)), 1e-5 * std::stod(m[3])) << id;
+    EXPECT_NEAR(std::stod(m[4]), std::stod(Stored(at, "r_ftrunc", id)), 1e-5 * std::stod(m[4]))
+        << id;
+    EXPECT_EQ(m[8].str(), Stored(at, "status", id)) << id;
+    const std::string err = Stored(at, "err", id);
+    if (err.empty()) {
+      EXPECT_EQ(m[6].str(), "not scored") << id;
+    } else {
+      EXPECT_NEAR(std::stod(m[6]), std::stod(err), 5e-5) << id;
+    }
+    EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / m[1].str())) << m[1];
+  }
+  EXPECT_EQ(checked, 11 * 7 + 11 * 4);
+}
+
+void CheckSortOnClick(const Place& at) {
+  // A copy of the page with a script that clicks the Err header twice, as a user would, and
+  // records the column after each click.
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  const std::string clicker = R"(<script>
+var table = document.getElementById('points-table');
+var headers = Array.from(table.tHead.rows[0].cells);
+var column = headers.findIndex(function (h) { return h.textContent === 'err'; });
+function values() {
+  return Array.from(table.tBodies[0].rows).map(function (r) {
+    return r.cells[column].getAttribute('data-sort') || '';
+  }).join(',');
+}
+headers[column].click();
+document.body.dataset.ascending = headers[column].getAttribute('aria-sort') + ':' + values();
+headers[column].click();
+document.body.dataset.descending = headers[column].getAttribute('aria-sort') + ':' + values();
+</script></body>)";
+  html.replace(html.rfind("</body>"), 7, clicker);
+  const auto copy = at.dir / "report" / "sort_check.html";
+  WriteText(copy.string(), html);
+  const std::string dom = Dom(at, copy);
+  for (const std::string order : {"ascending", "descending"}) {
+    const std::regex attribute("data-" + order + "=\"" + order + ":([^\"]*)\"");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(dom, m, attribute)) << order;
+    std::vector<double> column;
+    std::stringstream list(m[1].str());
+    for (std::string v; std::getline(list, v, ',');) {
+      if (!v.empty()) column.push_back(std::stod(v));
+    }
+    ASSERT_GT(column.size(), 100u) << order;
+    if (order == "descending") std::reverse(column.begin(), column.end());
+    EXPECT_TRUE(std::is_sorted(column.begin(), column.end())) << order << ": " << m[1];
+  }
+}
+
+void CheckPointPage(const Place& at) {
+  // A point with a drawn Fig. 3: its page embeds it and names the command.
+  std::string page_path;
+  for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
+    if (entry.is_directory() && std::filesystem::exists(entry.path() / "fig3.png")) {
+      page_path = entry.path().string() + ".html";
+      break;
+    }
+  }
+  ASSERT_FALSE(page_path.empty()) << "no Fig. 3 was drawn";
+  const std::string page = ReadBytes(page_path);
+  EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos);
+  std::smatch command;
+  ASSERT_TRUE(std::regex_search(page, command, std::regex("shockmap compare ([^<]*) --out ")))
+      << page;
+  const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
+  const auto run = RunShockmap("compare " + command[1].str() + " --json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  std::smatch err;
+  ASSERT_TRUE(std::regex_search(run.output, err, std::regex("\"err\": ([0-9.e+-]+)")))
+      << run.output;
+  EXPECT_NEAR(std::stod(err[1]), std::stod(Stored(at, "err", id)), 1e-9) << command[1];
+}
 
 class QuickStudyViews : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / ("shockmap_report_" + std::to_string(getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-    db_ = (dir_ / "study.db").string();
+    at_.dir =
+        std::filesystem::temp_directory_path() / ("shockmap_report_" + std::to_string(getpid()));
+    std::filesystem::remove_all(at_.dir);
+    std::filesystem::create_directories(at_.dir);
+    at_.db = (at_.dir / "study.db").string();
     const auto run = RunShockmap("study run " + std::string(SHOCKMAP_SOURCE_DIR) +
-                                 "/studies/quick.json --db " + db_ + " --quiet");
+                                 "/studies/quick.json --db " + at_.db + " --quiet");
     ASSERT_EQ(run.exit_code, 0) << run.output;
   }
-  static void TearDownTestSuite() { std::filesystem::remove_all(dir_); }
+  static void TearDownTestSuite() { std::filesystem::remove_all(at_.dir); }
 
-  static inline std::filesystem::path dir_;
-  static inline std::string db_;
+  static inline Place at_;
 };
 
-TEST_F(QuickStudyViews, ReportImagesAllLoadInHeadlessChromium) {
-  const auto out = dir_ / "report";
-  const auto report = RunShockmap("report --db " + db_ + " --out " + out.string());
+TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
+  const auto report =
+      RunShockmap("report --db " + at_.db + " --out " + (at_.dir / "report").string());
   ASSERT_EQ(report.exit_code, 0) << report.output;
-  const auto page = out / "report.html";
-  ASSERT_TRUE(std::filesystem::exists(page));
-  // Flags as the machine's own Chromium check uses them: no sandbox as root, no network.
-  const std::string chromium =
-      "chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-      "--disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" +
-      (dir_ / "chromium").string() + " --virtual-time-budget=10000 --dump-dom file://" +
-      page.string() + " 2>/dev/null";
-  FILE* pipe = popen(chromium.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string dom;
-  char buffer[4096];
-  while (fgets(buffer, sizeof buffer, pipe) != nullptr) dom += buffer;
-  ASSERT_EQ(pclose(pipe), 0) << "chromium did not run (is Debian's chromium installed?)";
-  // Five maps, Fig. 4 and the cost front.
-  EXPECT_NE(dom.find("data-images-loaded=\"7/7\""), std::string::npos)
-      << dom.substr(0, dom.find("<h1>"));
+  CheckIndex(at_);
+  CheckMapCells(at_);
+  CheckSortOnClick(at_);
+  CheckPointPage(at_);
+  // The maps' scripts run from their own folder.
+  std::filesystem::remove(at_.dir / "report" / "map_err.png");
+  const auto gnuplot = RunShell("cd " + (at_.dir / "report").string() + " && gnuplot map_err.gp");
+  EXPECT_EQ(gnuplot.exit_code, 0) << gnuplot.output;
+  EXPECT_TRUE(std::filesystem::exists(at_.dir / "report" / "map_err.png"));
+}
+
+// A scene study named with markup: the report has its sections, the points with their swept
+// parameter as a column, the contact-force map, and shows the name as text.
+TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
+  Place at{std::filesystem::temp_directory_path() /
+               ("shockmap_scene_report_" + std::to_string(getpid())),
+           ""};
+  std::filesystem::remove_all(at.dir);
+  std::filesystem::create_directories(at.dir);
+  at.db = (at.dir / "s.db").string();
+  const nlohmann::json study = {
+      {"name", "<b>spring</b> & \"q\""},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
+      {"sweep", {{"solver.r_ftrunc", {10, 300}}}},
+      {"reference", {{"solver.r_ftrunc", 1000}}},
+      {"scoring", {{"displacement", "tip"}, {"zone", "tip_spring"}, {"rest_duration_s", 0.0052}}}};
+  WriteText((at.dir / "study.json").string(), study.dump());
+  const auto run =
+      RunShockmap("study run --quiet " + (at.dir / "study.json").string() + " --db " + at.db);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report =
+      RunShockmap("report --db " + at.db + " --out " + (at.dir / "report").string());
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const auto page = at.dir / "report" / "index.html";
+  const std::string html = ReadBytes(page.string());
+  EXPECT_EQ(html.find("<b>spring"), std::string::npos) << "the study name went in as markup";
+  EXPECT_NE(html.find("&lt;b&gt;spring&lt;/b&gt; &amp; &quot;q&quot;"), std::string::npos);
+  const std::string dom = Dom(at, page);
+  EXPECT_NE(dom.find("data-images-loaded=\"1/1\""), std::string::npos) << dom.substr(0, 400);
+  EXPECT_NE(dom.find("data-sortable-tables=\"3\""), std::string::npos);
+  EXPECT_NE(dom.find("<th data-sort-method=\"real\" role=\"columnheader\" "
+                     "tabindex=\"0\">solver.r_ftrunc</th>"),
+            std::string::npos)
+      << dom;
+  const auto points_table = dom.find("id=\"points-table\"");
+  const std::string rows =
+      dom.substr(points_table, dom.find("</table>", points_table) - points_table);
+  EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
+  EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
+  std::filesystem::remove_all(at.dir);
+}
+
+TEST(ReportHtml, EscapesWhatComesFromUserFiles) {
+  EXPECT_EQ(HtmlEscaped("<script>alert('x') & \"y\"</script>"),
+            "&lt;script&gt;alert(&#39;x&#39;) &amp; &quot;y&quot;&lt;/script&gt;");
+  QueryResult r;
+  r.columns = {"name<", "value"};
+  r.rows = {{std::string("<b>study</b>"), 1.5e-3}, {std::string("a&b"), QueryCell()}};
+  const std::string table = SortableTable(r, "t\"1", "caption <i>");
+  EXPECT_EQ(table.find("<b>"), std::string::npos) << table;
+  EXPECT_EQ(table.find("<i>"), std::string::npos) << table;
+  EXPECT_NE(table.find("id=\"t&quot;1\""), std::string::npos) << table;
+  EXPECT_NE(table.find("<th data-sort-method=\"real\">value</th>"), std::string::npos) << table;
+  EXPECT_NE(table.find("data-sort=\"0.0015\""), std::string::npos) << table;
+}
+
+TEST(ReportHtml, Base64MatchesRfc4648) {
+  EXPECT_EQ(Base64(""), "");
+  EXPECT_EQ(Base64("f"), "Zg==");
+  EXPECT_EQ(Base64("fo"), "Zm8=");
+  EXPECT_EQ(Base64("foo"), "Zm9v");
+  EXPECT_EQ(Base64("foobar"), "Zm9vYmFy");
+  EXPECT_EQ(Base64(std::string("\xff\x00\x80", 3)), "/wCA");
+}
+
+TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
+  const auto& categories = OutcomeCategories();
+  ASSERT_EQ(categories.size(), kAllRunStatuses.size() + 1);
+  CriteriaOptions th;
+  ScoredPoint p;
+  p.status = RunStatus::kOk;
+  p.err = 0.01, p.srf = 0.95;
+  EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "passes");
+  p.err = 0.5;
+  EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "fails thresholds");
+  for (RunStatus s : kAllRunStatuses) {
+    if (s == RunStatus::kOk) continue;
+    p.status = s;
+    std::string label = ToString(s);
+    std::replace(label.begin(), label.end(), '_', ' ');
+    EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, label);
+  }
 }
 
 TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
-  const auto fig4 = RunShockmap("plot fig4 --db " + db_ + " --out " + (dir_ / "fig4.svg").string());
+  const auto fig4 =
+      RunShockmap("plot fig4 --db " + at_.db + " --out " + (at_.dir / "fig4.svg").string());
   ASSERT_EQ(fig4.exit_code, 0) << fig4.output;
-  EXPECT_GT(std::filesystem::file_size(dir_ / "fig4.svg"), 1000u);
+  EXPECT_GT(std::filesystem::file_size(at_.dir / "fig4.svg"), 1000u);
 
   const auto cost =
-      RunShockmap("cost --db " + db_ + " --rk 3000 --out " + (dir_ / "cost.png").string());
+      RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());
   ASSERT_EQ(cost.exit_code, 0) << cost.output;
   EXPECT_NE(cost.output.find("R_k = 3162"), std::string::npos) << cost.output;
   EXPECT_NE(cost.output.find("*"), std::string::npos) << "no Pareto point marked";
 
-  const auto inside = RunShockmap("advise --db " + db_ + " --rk 5000");
+  const auto inside = RunShockmap("advise --db " + at_.db + " --rk 5000");
   ASSERT_EQ(inside.exit_code, 0) << inside.output;
   EXPECT_EQ(inside.output.find("warning"), std::string::npos) << inside.output;
-  const auto outside = RunShockmap("advise --db " + db_ + " --rk 1e7");
+  const auto outside = RunShockmap("advise --db " + at_.db + " --rk 1e7");
   ASSERT_EQ(outside.exit_code, 0) << outside.output;
   EXPECT_NE(outside.output.find("outside the studied range"), std::string::npos) << outside.output;
 
-  const auto bad = RunShockmap("map --db " + db_ + " --metric speed");
+  const auto bad = RunShockmap("map --db " + at_.db + " --metric speed");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
-  const auto bad_out = RunShockmap("map --db " + db_ + " --out " + (dir_ / "map.jpg").string());
+  const auto bad_out =
+      RunShockmap("map --db " + at_.db + " --out " + (at_.dir / "map.jpg").string());
   EXPECT_EQ(bad_out.exit_code, 2) << bad_out.output;
   EXPECT_NE(bad_out.output.find(".png or .svg"), std::string::npos) << bad_out.output;
 }

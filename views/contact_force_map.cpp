@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 
 #include "core/input_error.h"
 #include "formats/output_file.h"
@@ -23,9 +25,16 @@ std::vector<std::size_t> ByForce(const std::vector<double>& force) {
   return order;
 }
 
-// What the zones file spans: lateral extent (mm), top (m), largest force between two beams.
+// A zone height rounded to the micrometre: zones at one wire height share a panel.
+double HeightKey(double height_m) { return std::round(height_m * 1e6) / 1e6; }
+
+// What the zones file holds: lateral extent (mm), top (m), which kinds of zone are present,
+// the largest force between two beams and against a stop, the distinct heights of the zones
+// between beams (the stops have their own panel).
 struct ZoneExtent {
-  double y_min = 0.0, y_max = 0.0, top = 0.0, largest_between = 0.0;
+  double y_min = 0.0, y_max = 0.0, top = 0.0, largest_between = 0.0, largest_stop = 0.0;
+  bool idle = false, between = false, stop = false;  // Present: never in contact, in contact.
+  std::set<double> heights_m;
 };
 
 // Columns: y (mm), z (mm), height (m), force (N), 1 between two beams / 0 against a stop; the
@@ -34,45 +43,68 @@ ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n
                       const std::filesystem::path& zones_file) {
   AtomicFile out(zones_file);
   std::ostream& zones = out.Stream();
+  zones << "# y_mm z_mm height_m max_force_n between_beams\n";
   ZoneExtent e;
   for (std::size_t i : ByForce(max_force_n)) {
     const SceneZone& z = scene.zones[i];
-    zones << 1e3 * z.y_m << ' ' << 1e3 * z.z_m << ' ' << z.height_m << ' ' << max_force_n[i] << ' '
-          << (z.beam_b >= 0 ? 1 : 0) << '\n';
+    const bool between = z.beam_b >= 0;
+    zones << fmt::format("{} {} {} {} {}\n", 1e3 * z.y_m, 1e3 * z.z_m, z.height_m, max_force_n[i],
+                         between ? 1 : 0);
     e.y_min = std::min(e.y_min, 1e3 * z.y_m), e.y_max = std::max(e.y_max, 1e3 * z.y_m);
     e.top = std::max(e.top, z.height_m);
-    if (z.beam_b >= 0) e.largest_between = std::max(e.largest_between, max_force_n[i]);
+    if (between) e.heights_m.insert(HeightKey(z.height_m));
+    const bool touched = max_force_n[i] > 0.0;
+    e.idle = e.idle || !touched;
+    e.between = e.between || (touched && between);
+    e.stop = e.stop || (touched && !between);
+    double& largest = between ? e.largest_between : e.largest_stop;
+    largest = std::max(largest, max_force_n[i]);
   }
   out.Commit();
   for (const SceneBeam& b : scene.beams) e.top = std::max(e.top, b.length_m);
   return e;
 }
 
-// Cross-section, index 0: the largest force over the heights at each location (y, z in mm,
-// force); index 1: the beams (y, z).
-void WriteSection(const Scene& scene, const std::vector<double>& max_force_n,
-                  const std::filesystem::path& section_file) {
-  std::map<std::pair<long long, long long>, std::pair<std::size_t, double>> at;
-  for (std::size_t i = 0; i < scene.zones.size(); ++i) {
-    const SceneZone& z = scene.zones[i];
-    const std::pair key{std::llround(z.y_m * 1e7), std::llround(z.z_m * 1e7)};
-    auto [it, fresh] = at.try_emplace(key, i, max_force_n[i]);
-    if (!fresh && max_force_n[i] > it->second.second) it->second = {i, max_force_n[i]};
+// The beams' positions in the cross-section (y, z in mm).
+void WriteBeams(const Scene& scene, const std::filesystem::path& beams_file) {
+  AtomicFile out(beams_file);
+  out.Stream() << "# y_mm z_mm\n";
+  for (const SceneBeam& b : scene.beams) {
+    out.Stream() << fmt::format("{} {}\n", 1e3 * b.y_m, 1e3 * b.z_m);
   }
-  std::vector<std::pair<double, std::size_t>> cells;
-  for (const auto& [key, cell] : at) cells.emplace_back(cell.second, cell.first);
-  std::stable_sort(cells.begin(), cells.end());
-  AtomicFile out(section_file);
-  std::ostream& section = out.Stream();
-  for (const auto& [force, i] : cells) {
-    section << 1e3 * scene.zones[i].y_m << ' ' << 1e3 * scene.zones[i].z_m << ' ' << force << '\n';
-  }
-  section << "\n\n";
-  for (const SceneBeam& b : scene.beams) section << 1e3 * b.y_m << ' ' << 1e3 * b.z_m << '\n';
   out.Commit();
 }
 
-std::string ProfilePlot(const ZoneExtent& e, const std::filesystem::path& zones_file) {
+// The clauses of the zones in one panel, only for the kinds present; `select` is the gnuplot
+// expression of the y coordinate (1/0 for zones outside the panel), `x` of the x coordinate.
+std::string ZoneClauses(const ZoneExtent& e, const std::string& zones, const std::string& x,
+                        const std::string& select) {
+  std::vector<std::string> clauses;
+  if (e.idle) {
+    clauses.push_back(
+        fmt::format("{} using {}:($4 > 0 ? 1/0 : {}) with points pt 6 ps 0.8 lc "
+                    "rgb '#bdbdbd' title 'never in contact'",
+                    zones, x, select));
+  }
+  if (e.between) {
+    clauses.push_back(
+        fmt::format("{} using {}:($4 > 0 && $5 == 1 ? {} : 1/0):4 with points pt 7 "
+                    "ps 1.4 lc palette title 'between beams (colour scale)'",
+                    zones, x, select));
+  }
+  if (e.stop) {
+    clauses.push_back(
+        fmt::format("{} using {}:($4 > 0 && $5 == 0 ? {} : 1/0) with points pt 5 "
+                    "ps 1.4 lc rgb '#000000' title 'against a stop (right panel)'",
+                    zones, x, select));
+  }
+  std::string joined;
+  for (const std::string& c : clauses) joined += (joined.empty() ? "" : ", \\\n     ") + c;
+  return joined;
+}
+
+// Planar scenes: the zones by height and lateral position.
+std::string ProfilePlot(const ZoneExtent& e, const std::string& zones) {
   const double margin = std::max(5.0, 0.08 * (e.y_max - e.y_min));
   return fmt::format(
       R"(set title 'zones by height and lateral position' font ',12'
@@ -81,27 +113,81 @@ set ylabel 'height (m)'
 set xrange [{x0}:{x1}]
 set yrange [0:{top}]
 set key top right opaque box font ',10'
-plot {zones} using 1:($4 > 0 ? 1/0 : $3) with points pt 6 ps 0.8 lc rgb '#bdbdbd' title 'never in contact', \
-     '' using 1:($4 > 0 && $5 == 1 ? $3 : 1/0):4 with points pt 7 ps 1.4 lc palette title 'between beams', \
-     '' using 1:($4 > 0 && $5 == 0 ? $3 : 1/0) with points pt 5 ps 1.6 lc rgb '#000000' title 'against a stop', \
-     '' using 1:($4 > 0 && $5 == 0 ? $3 : 1/0):(sprintf(' %.4g N', $4)) with labels left offset 1,0 font ',10' notitle
+plot {clauses}
 )",
-      fmt::arg("zones", GnuplotFileName(zones_file)), fmt::arg("x0", e.y_min - margin),
-      fmt::arg("x1", e.y_max + margin), fmt::arg("top", 1.05 * e.top));
+      fmt::arg("x0", e.y_min - margin), fmt::arg("x1", e.y_max + margin),
+      fmt::arg("top", 1.05 * e.top), fmt::arg("clauses", ZoneClauses(e, zones, "1", "$3")));
 }
 
-std::string SectionPlot(const std::filesystem::path& section_file) {
+// Scenes bending in both planes: the cross-section at one zone height.
+// The colour bar is drawn beside the last of these panels only.
+std::string SectionPlot(const ZoneExtent& e, const std::string& zones, const std::string& beams,
+                        double height_m, bool colorbox) {
+  const std::string at = fmt::format("(abs($3 - {}) < 5e-7 ? $2 : 1/0)", height_m);
   return fmt::format(
-      R"(set title 'cross-section: largest force over the heights' font ',12'
+      R"(set title 'zones at height {h:.4g} m' font ',11'
 set xlabel 'y (mm)'
 set ylabel 'z (mm)'
 set autoscale xy
 set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
 set size ratio -1
-plot {section} index 1 using 1:2 with points pt 6 ps 1.6 lc rgb '#969696' title 'beams', \
-     '' index 0 using 1:2:3 with points pt 7 ps 1.1 lc palette title 'zones'
+unset key
+{colorbox}
+plot {beams} using 1:2 with points pt 6 ps 1.2 lc rgb '#d9d9d9' notitle, \
+     {clauses}
 )",
-      fmt::arg("section", GnuplotFileName(section_file)));
+      fmt::arg("h", height_m), fmt::arg("beams", beams),
+      fmt::arg("colorbox", colorbox ? "set colorbox" : "unset colorbox"),
+      fmt::arg("clauses", ZoneClauses(e, zones, "1", at)));
+}
+
+// The stops on their own axis: largest force against height, each labelled with its value.
+std::string StopPlot(const ZoneExtent& e, const std::string& zones) {
+  return fmt::format(
+      R"(set title 'against a stop' font ',12'
+set size noratio
+set xlabel 'largest force (N)'
+set ylabel 'height (m)'
+set xrange [0:{x1}]
+set yrange [0:{top}]
+unset key
+unset colorbox
+plot {zones} using ($5 == 0 && $4 > 0 ? $4 : 1/0):3 with points pt 5 ps 1.6 lc rgb '#000000' notitle, \
+     '' using ($5 == 0 && $4 > 0 ? $4 : 1/0):3:(sprintf('%.4g N', $4)) with labels right offset -1,0 font ',10' notitle
+)",
+      fmt::arg("zones", zones), fmt::arg("x1", 1.15 * e.largest_stop),
+      fmt::arg("top", 1.05 * e.top));
+}
+
+// The panels' grid: rows and columns.
+struct Layout {
+  int rows = 1, columns = 1;
+};
+
+std::string MapScript(const Scene& scene, const std::vector<double>& max_force_n,
+                      const ZoneExtent& e, const std::filesystem::path& file, Layout layout,
+                      const std::string& panels) {
+  const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
+  const SceneZone& strongest = scene.zones[static_cast<std::size_t>(largest - max_force_n.begin())];
+  const std::string title =
+      fmt::format("{}: maximum contact force per zone (largest {:.4g} N at {})", scene.name,
+                  *largest, strongest.name);
+  return fmt::format(
+      R"(set terminal {terminal}
+set output {out}
+set palette defined (0 '#fff5eb', 0.25 '#fdae6b', 0.6 '#e6550d', 1 '#7f2704')
+set cbrange [0:{cb}]
+set cblabel 'maximum contact force between beams (N)'
+set grid lc rgb '#dddddd'
+set multiplot layout {rows},{columns} title {title} font ',13' noenhanced
+{panels}unset multiplot
+)",
+      fmt::arg("terminal", TerminalFor(file, layout.columns == 1 ? 900 : 480 * layout.columns + 200,
+                                       layout.rows * 560 + 80)),
+      fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("cb", e.largest_between > 0.0 ? e.largest_between : 1.0),
+      fmt::arg("rows", layout.rows), fmt::arg("columns", layout.columns),
+      fmt::arg("title", GnuplotQuoted(title)), fmt::arg("panels", panels));
 }
 
 }  // namespace
@@ -111,38 +197,28 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   assert(max_force_n.size() == scene.zones.size());
   if (scene.zones.empty()) throw InputError(scene.name + ": the scene has no contact zone to map");
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
-  const bool both = scene.planes == BendingPlanes::kBoth;
   const auto zones_file = std::filesystem::path(file).replace_extension(".zones.dat");
+  const auto beams_file = std::filesystem::path(file).replace_extension(".beams.dat");
   const ZoneExtent extent = WriteZones(scene, max_force_n, zones_file);
-  const auto section_file = std::filesystem::path(file).replace_extension(".section.dat");
-  if (both) WriteSection(scene, max_force_n, section_file);
-
-  const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
-  const SceneZone& strongest = scene.zones[static_cast<std::size_t>(largest - max_force_n.begin())];
-  // The colours span the zones between beams, whose forces a stop's (often far larger, and
-  // labelled with its value) would wash out.
-  const double cb_max = extent.largest_between > 0.0 ? extent.largest_between
-                        : *largest > 0.0             ? *largest
-                                                     : 1.0;
-  const std::string title =
-      fmt::format("{}: maximum contact force per zone (largest {:.4g} N at {})", scene.name,
-                  *largest, strongest.name);
-  const std::string script = fmt::format(
-      R"(set terminal {terminal}
-set output {out}
-set palette defined (0 '#fff5eb', 0.25 '#fdae6b', 0.6 '#e6550d', 1 '#7f2704')
-set cbrange [0:{cb}]
-set cblabel 'maximum contact force (N)'
-set grid lc rgb '#dddddd'
-set multiplot layout 1,{columns} title {title} font ',13' noenhanced
-{profile}{section}unset multiplot
-)",
-      fmt::arg("terminal", TerminalFor(file, both ? 1500 : 900, 800)),
-      fmt::arg("out", GnuplotFileName(file)), fmt::arg("cb", cb_max),
-      fmt::arg("columns", both ? 2 : 1), fmt::arg("title", GnuplotQuoted(title)),
-      fmt::arg("profile", ProfilePlot(extent, zones_file)),
-      fmt::arg("section", both ? SectionPlot(section_file) : ""));
-  RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
+  const bool both = scene.planes == BendingPlanes::kBoth;
+  if (both) WriteBeams(scene, beams_file);
+  const std::string zones = GnuplotFileName(zones_file);
+  std::string panels;
+  int count = 0;
+  if (both) {
+    for (double h : extent.heights_m) {
+      panels += SectionPlot(extent, zones, GnuplotFileName(beams_file), h,
+                            h == *extent.heights_m.rbegin());
+      ++count;
+    }
+  } else {
+    panels = ProfilePlot(extent, zones), count = 1;
+  }
+  if (extent.stop) panels += StopPlot(extent, zones), ++count;
+  const int columns = both ? std::min(count, 4) : count;
+  const int rows = (count + columns - 1) / columns;
+  RunGnuplot(MapScript(scene, max_force_n, extent, file, {rows, columns}, panels),
+             std::filesystem::path(file).replace_extension(".gp"), file);
 }
 
 }  // namespace shockmap

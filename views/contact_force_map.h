@@ -1,8 +1,10 @@
 #pragma once
 // The map of the maximum contact force in every zone of a scene over a run (paper Fig. 5b):
-// zones drawn where they sit, by height and lateral position, coloured by their largest force;
-// scenes bending in both planes get a second panel, the cross-section seen from above, each
-// location coloured by its largest force over the heights.
+// zones between beams drawn where they sit and coloured by their largest force. A planar scene
+// gets one panel by height and lateral position; a scene bending in both planes one
+// cross-section per zone height (a bundle's wire heights). Zones against a stop, whose forces
+// are often far larger, get their own panel and axis (force against height, each labelled).
+// The legend names only the kinds of zone present.
 
 #include <filesystem>
 #include <vector>
@@ -11,7 +13,8 @@
 
 namespace shockmap {
 
-// Draws the map into `file` (.png or .svg), with its data and gnuplot script beside it.
+// Draws the map into `file` (.png or .svg), with its data (FILE.zones.dat, and FILE.beams.dat
+// for both planes) and gnuplot script beside it; the script runs from its own folder.
 // Preconditions: one force per zone of the scene. Throws InputError when the scene has no
 // zones or the file cannot be written.
 void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_force_n,

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 #include "core/input_error.h"
 #include "formats/output_file.h"
@@ -21,26 +23,59 @@ void AddCurves(const std::vector<ScoredPoint>& points, const std::string& scheme
                std::map<std::pair<std::string, double>, Curve>& curves) {
   for (const auto& p : points) {
     Curve& c = curves[{scheme, p.r_ftrunc}];
-    c.title = fmt::format("{} R_{{ftrunc}} = {:g}", scheme, p.r_ftrunc);
+    c.title = fmt::format("{} R_{{ftrunc}} = {:.6g}", scheme, p.r_ftrunc);
     auto& slot = c.by_rk[p.r_k];
     if (slot == nullptr || p.DtRatio() < slot->DtRatio()) slot = &p;
   }
 }
 
-std::string Value(const std::optional<double>& v) { return v ? fmt::format("{:.6g}", *v) : "NaN"; }
+std::string Value(const std::optional<double>& v) { return v ? fmt::format("{}", *v) : "NaN"; }
 
-}  // namespace
+// The R_k at which some curve's point has no score because its reference did not converge:
+// drawn as dashed verticals, so that the curves' gaps there are not read as data.
+std::set<double> UnconvergedRk(const std::map<std::pair<std::string, double>, Curve>& curves) {
+  std::set<double> r_k;
+  for (const auto& [key, curve] : curves) {
+    for (const auto& [rk, p] : curve.by_rk) {
+      if (p->status == RunStatus::kReferenceUnconverged) r_k.insert(rk);
+    }
+  }
+  return r_k;
+}
 
-void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
-              const std::vector<ScoredPoint>& implicit_points, const CriteriaOptions& thresholds,
-              const std::filesystem::path& file) {
-  std::map<std::pair<std::string, double>, Curve> curves;
-  AddCurves(explicit_points, "explicit", curves);
-  AddCurves(implicit_points, "implicit", curves);
-  if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");
-  TerminalFor(file, 1400, 600);  // Throws for a bad extension before any file is written.
-  if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
-  const auto data_file = std::filesystem::path(file).replace_extension(".dat");
+std::string UnconvergedMarks(const std::set<double>& r_k) {
+  std::string marks;
+  for (double rk : r_k) {
+    marks += fmt::format(
+        "set arrow from first {0}, graph 0 to first {0}, graph 1 nohead dt 3 lw 2 lc rgb "
+        "'#969696' back\n",
+        rk);
+  }
+  return marks;
+}
+
+// A legend entry for the verticals, "" without any.
+std::string UnconvergedKey(const std::set<double>& r_k) {
+  return r_k.empty() ? ""
+                     : ", NaN with lines dt 3 lw 2 lc rgb '#969696' title 'R_k left out: "
+                       "reference unconverged (not scored)'";
+}
+
+// The smallest and largest R_k of the curves.
+std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>, Curve>& curves) {
+  std::pair<double, double> range{INFINITY, 0.0};
+  for (const auto& [key, curve] : curves) {
+    range.first = std::min(range.first, curve.by_rk.begin()->first);
+    range.second = std::max(range.second, curve.by_rk.rbegin()->first);
+  }
+  return range;
+}
+
+// Writes one data block per curve (columns r_k err srf status) and returns the plot clauses
+// of the Err and the SRf panels.
+std::pair<std::string, std::string> WriteCurves(
+    const std::map<std::pair<std::string, double>, Curve>& curves,
+    const std::filesystem::path& data_file) {
   AtomicFile data_out(data_file);
   std::ostream& data = data_out.Stream();
   std::string err_plot, srf_plot;
@@ -48,8 +83,7 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
   for (const auto& [key, curve] : curves) {
     data << "# " << curve.title << "\n# r_k err srf status\n";
     for (const auto& [r_k, p] : curve.by_rk) {
-      data << fmt::format("{:.10g} {} {} {}\n", r_k, Value(p->err), Value(p->srf),
-                          ToString(p->status));
+      data << fmt::format("{} {} {} {}\n", r_k, Value(p->err), Value(p->srf), ToString(p->status));
     }
     data << "\n\n";
     const bool is_implicit = key.first == "implicit";
@@ -63,6 +97,23 @@ void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit
     ++index;
   }
   data_out.Commit();
+  return {err_plot, srf_plot};
+}
+
+}  // namespace
+
+void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
+              const std::vector<ScoredPoint>& implicit_points, const CriteriaOptions& thresholds,
+              const std::filesystem::path& file) {
+  std::map<std::pair<std::string, double>, Curve> curves;
+  AddCurves(explicit_points, "explicit", curves);
+  AddCurves(implicit_points, "implicit", curves);
+  if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");
+  TerminalFor(file, 1400, 700);  // Throws for a bad extension before any file is written.
+  if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
+  const auto [err_plot, srf_plot] =
+      WriteCurves(curves, std::filesystem::path(file).replace_extension(".dat"));
+  const std::pair<double, double> range = RkRange(curves);
   const std::string script = fmt::format(
       R"gp(set terminal {terminal}
 set output {out}
@@ -70,21 +121,24 @@ set multiplot layout 1,2 title {title} noenhanced
 set logscale x
 set format x '10^{{%L}}'
 set xlabel 'R_k = k_s / K_{{bend}}'
+set xrange [{x0}:{x1}]
 set grid
-set key top left font ',10'
-set ylabel 'Err (paper eq. 8)'
+set key below font ',10' maxrows 4
+{unconverged}set ylabel 'Err (paper eq. 8)'
 set yrange [0:*]
-plot {err_plot}, {err_max} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {err_max:g}'
+plot {err_plot}, {err_max} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {err_max:g}'{unconverged_key}
 set ylabel 'SRf (paper eq. 9)'
 set yrange [0:1.05]
-set key bottom left font ',10'
-plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'
+plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'{unconverged_key}
 unset multiplot
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1400, 600)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("terminal", TerminalFor(file, 1400, 700)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("x0", range.first / 2), fmt::arg("x1", range.second * 2),
       fmt::arg("title", GnuplotQuoted(study + ": the paper's Fig. 4 (finest time step per point)")),
       fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
-      fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min));
+      fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min),
+      fmt::arg("unconverged", UnconvergedMarks(UnconvergedRk(curves))),
+      fmt::arg("unconverged_key", UnconvergedKey(UnconvergedRk(curves))));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 

@@ -2,8 +2,9 @@
 
 #include <fmt/format.h>
 
-#include <fstream>
-#include <sstream>
+#include <algorithm>
+#include <cmath>
+#include <set>
 
 #include "core/input_error.h"
 #include "db/report_queries.h"
@@ -11,176 +12,198 @@
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
-#include "views/query_output.h"
+#include "views/html_text.h"
+#include "views/html_validity_map.h"
 #include "views/scored_points.h"
 #include "views/validity_map.h"
 
 namespace shockmap {
 namespace {
 
-std::string Escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
+// The R_k of the paper's Fig. 3.
+constexpr double kFig3RK = 3000.0;
+
+// The index of the results view's point_id column.
+std::size_t PointIdColumn(const QueryResult& results) {
+  return static_cast<std::size_t>(std::ranges::find(results.columns, "point_id") -
+                                  results.columns.begin());
 }
 
-std::string Base64(const std::string& bytes) {
-  static constexpr char kAlphabet[] =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  std::size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const auto n = (static_cast<unsigned char>(bytes[i]) << 16) |
-                   (static_cast<unsigned char>(bytes[i + 1]) << 8) |
-                   static_cast<unsigned char>(bytes[i + 2]);
-    out += {kAlphabet[(n >> 18) & 63], kAlphabet[(n >> 12) & 63], kAlphabet[(n >> 6) & 63],
-            kAlphabet[n & 63]};
-  }
-  if (i < bytes.size()) {
-    const bool two = i + 1 < bytes.size();
-    const auto n = (static_cast<unsigned char>(bytes[i]) << 16) |
-                   (two ? static_cast<unsigned char>(bytes[i + 1]) << 8 : 0);
-    out += {kAlphabet[(n >> 18) & 63], kAlphabet[(n >> 12) & 63],
-            two ? kAlphabet[(n >> 6) & 63] : '=', '='};
-  }
-  return out;
+std::string Figure(const std::filesystem::path& png, const std::string& caption,
+                   const std::filesystem::path& dir) {
+  return EmbeddedFigure(png, caption, PlotFiles(png, dir));
 }
 
-std::string Figure(const std::filesystem::path& png, const std::string& caption) {
-  std::ifstream in(png, std::ios::binary);
-  std::stringstream bytes;
-  bytes << in.rdbuf();
+// The interactive maps: R_k by R_ftrunc at the finest dt, and R_k by dt at the largest R_ftrunc.
+std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
+                            const ValidityCriteria& criteria) {
+  const MapGrid by_rft = BuildMapGrid(points, MapAxis::kRFtrunc);
+  const MapGrid by_dt = BuildMapGrid(points, MapAxis::kDt);
   return fmt::format(
-      "<figure><img alt=\"{0}\" src=\"data:image/png;base64,{1}\"><figcaption>{0}</figcaption>"
-      "</figure>\n",
-      Escaped(caption), Base64(bytes.str()));
+      "<p>Hover a cell for its R_k, R_ftrunc, dt, Err, SRf and status; click it to open the "
+      "point: its stored values, its Fig. 3 and the <code>compare</code> command that "
+      "recomputes it.</p>\n<h3>Outcome over R_k and R_ftrunc, {}</h3>\n{}"
+      "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}",
+      HtmlEscaped(DtShown(by_rft)),
+      HtmlValidityMap(by_rft, MapAxis::kRFtrunc, criteria, "map-rftrunc"), by_dt.fixed_r_ftrunc,
+      HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"));
 }
 
-std::string Table(const QueryResult& r) {
-  std::ostringstream text;
-  WriteQueryResult(r, QueryFormat::kTable, text);
-  return "<pre>" + Escaped(text.str()) + "</pre>\n";
-}
-
-// The validity maps over R_ftrunc for each metric, then the outcome over dt, as figures.
-std::string MapFigures(const std::string& study, const std::vector<ScoredPoint>& points,
-                       const ValidityCriteria& criteria, const std::filesystem::path& dir) {
+// The gnuplot maps, Fig. 4 and the cost front, drawn into ctx.dir.
+std::string MapFigures(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
+                       const ValidityCriteria& criteria) {
   std::string figures;
   for (auto metric : {MapMetric::kErr, MapMetric::kSrf, MapMetric::kStatus, MapMetric::kCost}) {
-    const auto png = dir / ("map_" + ToString(metric) + ".png");
-    DrawValidityMap(study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
-    figures += Figure(png, "Validity map: " + ToString(metric) + " over R_k and R_ftrunc");
+    const auto png = ctx.dir / ("map_" + ToString(metric) + ".png");
+    DrawValidityMap(ctx.study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
+    figures += Figure(png, "Validity map: " + ToString(metric) + " over R_k and R_ftrunc", ctx.dir);
   }
-  const auto dt_png = dir / "map_status_dt.png";
-  DrawValidityMap(study, points, criteria, {MapMetric::kStatus, MapAxis::kDt, {}}, dt_png);
-  return figures + Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation");
+  const auto dt_png = ctx.dir / "map_status_dt.png";
+  DrawValidityMap(ctx.study, points, criteria, {MapMetric::kStatus, MapAxis::kDt, {}}, dt_png);
+  return figures +
+         Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation", ctx.dir);
 }
 
 // The cost front of the paper's Fig. 3 case when studied, else of the nearest R_k, with its
-// table; "" when no point is scored.
-std::string CostSection(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
-                        const std::vector<ScoredPoint>& implicit_points,
-                        const std::filesystem::path& dir) {
-  const auto tables = BuildCostTables(explicit_points, implicit_points, 3000.0);
-  if (tables.empty()) return "";
-  const auto cost_png = dir / "cost.png";
-  DrawCost(study, tables.front(), cost_png);
-  return Figure(cost_png,
-                fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k)) +
-         "<pre>" + Escaped(CostSummary(tables)) + "</pre>\n";
+// table; a sentence when no point is scored.
+std::string CostSection(const ReportContext& ctx, const std::vector<ScoredPoint>& explicit_points,
+                        const std::vector<ScoredPoint>& implicit_points) {
+  const auto tables = BuildCostTables(explicit_points, implicit_points, kFig3RK);
+  if (tables.empty()) return "<p>No scored point: no cost front.</p>\n";
+  const auto cost_png = ctx.dir / "cost.png";
+  DrawCost(ctx.study, tables.front(), cost_png);
+  return Figure(cost_png, fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k),
+                ctx.dir) +
+         Preformatted(CostSummary(tables));
 }
 
-// The parts of the page, already HTML.
-struct ReportParts {
-  std::string study, outcomes, criteria, figures, fig4, cost, provenance, spec;
-};
+// The points table (a chosen set of the results view's columns), each row linking its page.
+std::string PointsTable(const QueryResult& results) {
+  static const std::vector<std::string> kShown = {
+      "point_id", "r_k", "r_ftrunc", "scheme",  "dt_rule", "dt_factor", "dt_used_s",
+      "status",   "err", "srf",      "n_modes", "steps",   "wall_s",    "message"};
+  QueryResult shown;
+  std::vector<std::size_t> columns;
+  for (const std::string& name : kShown) {
+    const auto it = std::ranges::find(results.columns, name);
+    if (it != results.columns.end()) {
+      columns.push_back(static_cast<std::size_t>(it - results.columns.begin()));
+      shown.columns.push_back(name);
+    }
+  }
+  std::vector<std::string> links;
+  for (const auto& row : results.rows) {
+    auto& out = shown.rows.emplace_back();
+    for (std::size_t c : columns) out.push_back(row[c]);
+    links.push_back(
+        PointPagePath(std::get<std::int64_t>(row[PointIdColumn(results)])).generic_string());
+  }
+  return "<div class=\"scroll\">" +
+         SortableTable(shown, "points-table", "Every stored point (click a header to sort)",
+                       links) +
+         "</div>\n";
+}
 
-std::string Page(const ReportParts& p, const CriteriaOptions& thresholds) {
-  return fmt::format(
-      R"html(<!DOCTYPE html>
-<html lang="en"><head><meta charset="utf-8"><title>shockmap report: {study}</title>
-<style>
-body {{ font-family: 'DejaVu Sans', sans-serif; max-width: 1200px; margin: 2em auto; color: #222; }}
-figure {{ margin: 1.5em 0; }} img {{ max-width: 100%; border: 1px solid #ddd; }}
-figcaption {{ color: #555; font-size: 0.9em; }} pre {{ background: #f6f6f6; padding: 1em; white-space: pre-wrap; }}
-</style>
-<script>
-window.addEventListener('load', () => {{
-  const images = Array.from(document.images);
-  const loaded = images.filter(i => i.complete && i.naturalWidth > 0).length;
-  document.body.dataset.imagesLoaded = loaded + '/' + images.length;
-}});
-</script></head>
-<body>
-<h1>shockmap report: {study}</h1>
-<p>Validity of modal basis reduction with explicit integration for the beam-impact problem of
-the EURODYN 2017 paper: Err (eq. 8) and SRf (eq. 9) against the semi-analytical reference.
-Thresholds: Err &le; {err_max:g}, SRf &ge; {srf_min:g}.</p>
-<h2>Outcomes</h2>
-{outcomes}
-<h2>Validity criteria and the paper's rules</h2>
-<pre>{criteria}</pre>
-<h2>Validity maps</h2>
-{figures}
-<h2>The paper's Fig. 4</h2>
-{fig4}
-<h2>What accuracy costs</h2>
-{cost}
-<h2>Provenance</h2>
-{provenance}
-<h3>Study file</h3>
-<pre>{spec}</pre>
-</body></html>
-)html",
-      fmt::arg("study", p.study), fmt::arg("err_max", thresholds.err_max),
-      fmt::arg("srf_min", thresholds.srf_min), fmt::arg("outcomes", p.outcomes),
-      fmt::arg("criteria", p.criteria), fmt::arg("figures", p.figures), fmt::arg("fig4", p.fig4),
-      fmt::arg("cost", p.cost), fmt::arg("provenance", p.provenance), fmt::arg("spec", p.spec));
+// Writes points/point_ID.html for every row of `results`.
+void WritePointPages(const ReportContext& ctx, const StudySpec& spec, const QueryResult& results,
+                     const std::map<std::int64_t, PointFigure>& figures) {
+  const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
+  CreateOutputDirectory(ctx.dir / "points");
+  for (const auto& row : results.rows) {
+    PointPageInput in{ctx.study,
+                      std::get<std::int64_t>(row[PointIdColumn(results)]),
+                      &results.columns,
+                      &row,
+                      {},
+                      &spec,
+                      {}};
+    if (const auto p = stored.find(in.point_id); p != stored.end()) in.point = p->second.point;
+    if (const auto f = figures.find(in.point_id); f != figures.end()) in.figure = f->second;
+    WriteFileAtomically(ctx.dir / PointPagePath(in.point_id), PointPage(in));
+  }
+}
+
+// The facts of the header every kind shares.
+std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext& ctx,
+                                                             const QueryResult& provenance) {
+  std::set<std::string> versions;
+  for (const auto& row : provenance.rows) versions.insert(CellText(row[1]));
+  std::string computed;
+  for (const std::string& v : versions) computed += (computed.empty() ? "" : ", ") + v;
+  return {{"study", ctx.study},
+          {"kind", ctx.kind},
+          {"report written", UtcNow() + " (UTC)"},
+          {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version,
+                                          ctx.writer.compiler, ctx.writer.build_type)},
+          {"points computed by", computed.empty() ? "no run yet" : computed},
+          {"database", ctx.database_path},
+          {"thresholds", fmt::format("Err <= {:g} (paper eq. 8), SRf >= {:g} (paper eq. 9)",
+                                     ctx.thresholds.err_max, ctx.thresholds.srf_min)}};
 }
 
 }  // namespace
 
-std::filesystem::path WriteHtmlReport(const std::string& database_path, const std::string& study,
-                                      const CriteriaOptions& thresholds,
-                                      const std::filesystem::path& dir) {
-  const auto explicit_points = LoadScoredPoints(database_path, study, "explicit-modal");
-  const auto implicit_points = LoadScoredPoints(database_path, study, "implicit-full");
-  if (explicit_points.empty()) {
-    throw InputError("study \"" + study + "\" has no stored explicit-modal point to report on");
+std::vector<std::int64_t> PointsWorthFig3(const std::vector<ScoredPoint>& points,
+                                          const CriteriaOptions& thresholds) {
+  const ValidityCriteria criteria = DeriveCriteria(points, thresholds);
+  const MapGrid grid = BuildMapGrid(points, MapAxis::kRFtrunc);
+  std::map<double, std::vector<const MapCell*>> by_rk;  // Ascending R_ftrunc within each.
+  for (const MapCell& c : grid.cells) by_rk[c.r_k].push_back(&c);
+  std::set<std::int64_t> chosen;
+  for (const RkBoundary& b : criteria.boundary) {
+    const auto& column = by_rk[b.r_k];
+    if (column.empty()) continue;
+    auto at = std::ranges::find_if(
+        column, [&](const MapCell* c) { return b.r_ftrunc_min && c->y >= *b.r_ftrunc_min; });
+    if (at == column.end()) at = column.end() - 1;  // Nothing passes: the largest truncation.
+    chosen.insert((*at)->point->point_id);
+    if (at != column.begin()) chosen.insert((*(at - 1))->point->point_id);
   }
-  CreateOutputDirectory(dir);
-  const ValidityCriteria criteria = DeriveCriteria(explicit_points, thresholds);
-  ReportParts parts;
-  parts.study = Escaped(study);
-  parts.figures = MapFigures(study, explicit_points, criteria, dir);
-  const auto fig4_png = dir / "fig4.png";
-  DrawFig4(study, explicit_points, implicit_points, thresholds, fig4_png);
-  parts.fig4 = Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4");
-  parts.cost = CostSection(study, explicit_points, implicit_points, dir);
-  const ReportTables tables = LoadReportTables(database_path, study);
-  parts.outcomes = Table(tables.outcomes);
-  parts.provenance = Table(tables.provenance);
-  parts.spec = Escaped(tables.spec_json);
-  parts.criteria = Escaped(CriteriaSummary(study, criteria, explicit_points));
-  const auto page = dir / "report.html";
-  WriteFileAtomically(page, Page(parts, thresholds));
+  const auto nearest = std::ranges::min_element(
+      by_rk, {}, [](const auto& entry) { return std::abs(std::log(entry.first / kFig3RK)); });
+  if (nearest != by_rk.end()) {
+    chosen.insert(nearest->second.front()->point->point_id);
+    chosen.insert(nearest->second.back()->point->point_id);
+  }
+  return {chosen.begin(), chosen.end()};
+}
+
+std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const StudySpec& spec,
+                                             const std::map<std::int64_t, PointFigure>& figures) {
+  const auto explicit_points = LoadScoredPoints(ctx.database_path, ctx.study, "explicit-modal");
+  const auto implicit_points = LoadScoredPoints(ctx.database_path, ctx.study, "implicit-full");
+  if (explicit_points.empty()) {
+    throw InputError("study \"" + ctx.study + "\" has no stored explicit-modal point to report on");
+  }
+  const ValidityCriteria criteria = DeriveCriteria(explicit_points, ctx.thresholds);
+  const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
+  const QueryResult results = StudyResultRows(ctx.database_path, ctx.study, false);
+  WritePointPages(ctx, spec, results, figures);
+  const auto fig4_png = ctx.dir / "fig4.png";
+  DrawFig4(ctx.study, explicit_points, implicit_points, ctx.thresholds, fig4_png);
+  return {
+      {"outcomes", "Outcomes",
+       SortableTable(tables.outcomes, "outcomes-table", "Points by scheme and status")},
+      {"criteria", "Validity criteria and the paper's rules",
+       Preformatted(CriteriaSummary(ctx.study, criteria, explicit_points))},
+      {"maps", "Validity maps", InteractiveMaps(explicit_points, criteria)},
+      {"map-figures", "Validity maps as figures", MapFigures(ctx, explicit_points, criteria)},
+      {"fig4", "The paper's Fig. 4",
+       Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4", ctx.dir)},
+      {"cost", "What accuracy costs", CostSection(ctx, explicit_points, implicit_points)},
+      {"points", "Points", PointsTable(results)},
+      {"provenance", "Provenance",
+       SortableTable(tables.provenance, "provenance-table", "Runs of the study")},
+      {"study-file", "Study file", Preformatted(tables.spec_json)},
+  };
+}
+
+std::filesystem::path WriteReportIndex(const ReportContext& ctx,
+                                       const std::vector<ReportSection>& sections) {
+  const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
+  const ReportHeader header{"shockmap report: " + ctx.study, HeaderFacts(ctx, tables.provenance)};
+  const auto page = ctx.dir / "index.html";
+  WriteFileAtomically(page, ReportPage(header, sections));
   return page;
 }
 

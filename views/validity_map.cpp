@@ -33,65 +33,9 @@ std::optional<MapMetric> MapMetricFromString(std::string_view s) {
   return std::nullopt;
 }
 
-std::string ToString(MapAxis a) { return a == MapAxis::kRFtrunc ? "rftrunc" : "dt"; }
-
-std::optional<MapAxis> MapAxisFromString(std::string_view s) {
-  for (auto a : {MapAxis::kRFtrunc, MapAxis::kDt}) {
-    if (ToString(a) == s) return a;
-  }
-  return std::nullopt;
-}
-
 namespace {
 
-// Status classes drawn by the status map, in colour order.
-enum StatusClass { kPasses = 0, kFailsThresholds = 1, kDiverged = 2, kFailed = 3, kUnscored = 4 };
-
-StatusClass ClassOf(const ScoredPoint& p, const CriteriaOptions& o) {
-  if (p.status == RunStatus::kDiverged) return kDiverged;
-  if (p.status == RunStatus::kFailed) return kFailed;
-  if (p.status == RunStatus::kReferenceUnconverged) return kUnscored;
-  return o.Passes(p) ? kPasses : kFailsThresholds;
-}
-
-// Geometric half-cell around each grid value: the box of value v spans [v / a, v * b].
-std::map<double, std::pair<double, double>> LogCells(std::vector<double> values) {
-  std::ranges::sort(values);
-  values.erase(std::unique(values.begin(), values.end()), values.end());
-  std::map<double, std::pair<double, double>> cells;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const double below = i > 0 ? std::sqrt(values[i] / values[i - 1])
-                               : (values.size() > 1 ? std::sqrt(values[1] / values[0]) : 1.5);
-    const double above = i + 1 < values.size() ? std::sqrt(values[i + 1] / values[i]) : below;
-    cells[values[i]] = {values[i] / below, values[i] * above};
-  }
-  return cells;
-}
-
-// Rounds a dt ratio so points asked at the same factor share a row.
-double RatioKey(double r) { return std::round(r * 1e6) / 1e6; }
-
-// The points drawn, by (R_k, y): the finest time step on the R_ftrunc map; on the dt map only
-// the points at truncation `fixed_rft`.
-using Cells = std::map<std::pair<double, double>, const ScoredPoint*>;
-
-Cells PickCells(const std::vector<ScoredPoint>& points, const MapOptions& options,
-                double fixed_rft) {
-  Cells cell;
-  for (const auto& p : points) {
-    double y = p.r_ftrunc;
-    if (options.y == MapAxis::kDt) {
-      if (std::abs(p.r_ftrunc - fixed_rft) > 1e-9 * fixed_rft) continue;
-      y = RatioKey(p.DtRatio());
-    }
-    auto& slot = cell[{p.r_k, y}];
-    if (slot == nullptr || p.DtRatio() < slot->DtRatio()) slot = &p;
-  }
-  if (cell.empty()) throw InputError("nothing to draw: no stored point matches the map's axes");
-  return cell;
-}
-
-double CellValue(const ScoredPoint& p, MapMetric metric, const CriteriaOptions& th) {
+double CellValue(const ScoredPoint& p, MapMetric metric) {
   switch (metric) {
     case MapMetric::kErr:
       return p.err.value_or(NAN);
@@ -100,28 +44,30 @@ double CellValue(const ScoredPoint& p, MapMetric metric, const CriteriaOptions& 
     case MapMetric::kCost:
       return p.wall_s;
     case MapMetric::kStatus:
-      return ClassOf(p, th);
+      return NAN;
   }
   return NAN;
 }
 
-using CellBounds = std::map<double, std::pair<double, double>>;
-
-// One line per cell: r_k y x_low x_high y_low y_high value status_class.
-void WriteMapData(const Cells& cells, const CellBounds& xcells, const CellBounds& ycells,
-                  MapMetric metric, const CriteriaOptions& th,
+// Index 0, one line per cell: r_k y x_low x_high y_low y_high value category (the index in
+// OutcomeCategories()) valued (1 when value is a number; gnuplot skips a line whose used
+// column reads NaN). Index 1: the smallest passing R_ftrunc of each R_k (the criteria's
+// boundary points).
+void WriteMapData(const MapGrid& grid, const ValidityCriteria& criteria, MapMetric metric,
                   const std::filesystem::path& data_file) {
   AtomicFile file(data_file);
   std::ostream& data = file.Stream();
-  data << "# r_k y x_low x_high y_low y_high value status_class\n";
-  for (const auto& [key, p] : cells) {
-    const double value = CellValue(*p, metric, th);
-    const auto [xl, xh] = xcells.at(key.first);
-    const auto [yl, yh] = ycells.at(key.second);
-    data << fmt::format("{:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {:.10g} {} {}\n", key.first,
-                        key.second, xl, xh, yl, yh,
-                        std::isfinite(value) ? fmt::format("{:.6g}", value) : "NaN",
-                        static_cast<int>(ClassOf(*p, th)));
+  data << "# r_k y x_low x_high y_low y_high value category valued\n";
+  for (const MapCell& c : grid.cells) {
+    const double value = CellValue(*c.point, metric);
+    data << fmt::format("{} {} {} {} {} {} {} {} {}\n", c.r_k, c.y, c.x_low, c.x_high, c.y_low,
+                        c.y_high, std::isfinite(value) ? fmt::format("{}", value) : "NaN",
+                        OutcomeCategoryOf(*c.point, criteria.options),
+                        std::isfinite(value) ? 1 : 0);
+  }
+  data << "\n\n# r_k smallest_passing_r_ftrunc\n";
+  for (const RkBoundary& b : criteria.boundary) {
+    if (b.r_ftrunc_min) data << fmt::format("{} {}\n", b.r_k, *b.r_ftrunc_min);
   }
   file.Commit();
 }
@@ -138,41 +84,69 @@ MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
                   "set palette defined (0 '#1a9850', {t} '#a6d96a', {t} '#fdae61', 0.6 '#d73027')\n"
                   "set cbrange [0:0.6]\nset cbtics add ('{t:g}' {t})\n",
                   fmt::arg("t", th.err_max)),
-              "Err", fmt::format("Err (paper eq. 8); threshold {:g}", th.err_max)};
+              "Err", fmt::format("Err (paper eq. 8), threshold {:g}", th.err_max)};
     case MapMetric::kSrf:
       return {fmt::format(
                   "set palette defined (0.5 '#d73027', {t} '#fdae61', {t} '#a6d96a', 1 '#1a9850')\n"
                   "set cbrange [0.5:1]\nset cbtics add ('{t:g}' {t})\n",
                   fmt::arg("t", th.srf_min)),
-              "SRf", fmt::format("SRf (paper eq. 9); threshold {:g}", th.srf_min)};
+              "SRf", fmt::format("SRf (paper eq. 9), threshold {:g}", th.srf_min)};
     case MapMetric::kCost:
-      return {"set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n",
-              "wall time (s)", "wall time of the numerical run"};
-    case MapMetric::kStatus:
       return {
-          "set palette maxcolors 5\n"
-          "set palette defined (0 '#1a9850', 1 '#fdae61', 2 '#d73027', 3 '#000000', 4 "
-          "'#bdbdbd')\n"
-          "set cbrange [-0.5:4.5]\nset rmargin 26\n"
-          "set cbtics ('passes' 0, 'fails thresholds' 1, 'diverged' 2, 'failed' 3, "
-          "'reference unconverged' 4)\n",
-          "", "outcome"};
+          "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
+          "set format cb '10^{%L}'\n",
+          "wall time (s)", "wall time of the numerical run"};
+    case MapMetric::kStatus:
+      return {"unset colorbox\n", "", "outcome"};
   }
   return {};
 }
 
-// The curves drawn over the cells: the derived boundary and the paper's rules, or the
-// stability bound on the dt map.
+// The plot clauses of the cells: coloured by the metric's palette, except cells without a
+// value (no score, or the status map), drawn in their category's colour with one legend entry
+// per category present.
+std::string CellClauses(const MapGrid& grid, MapMetric metric, const CriteriaOptions& th,
+                        const std::string& data) {
+  std::vector<bool> present(OutcomeCategories().size(), false);
+  for (const MapCell& c : grid.cells) {
+    const bool valued = metric != MapMetric::kStatus && std::isfinite(CellValue(*c.point, metric));
+    if (!valued) present[OutcomeCategoryOf(*c.point, th)] = true;
+  }
+  std::string clauses =
+      metric == MapMetric::kStatus
+          ? ""
+          : data +
+                " index 0 using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb "
+                "'#ffffff' fc palette notitle";
+  for (std::size_t i = 0; i < present.size(); ++i) {
+    if (!present[i]) continue;
+    const OutcomeCategory& category = OutcomeCategories()[i];
+    const std::string label =
+        metric == MapMetric::kStatus ? category.label : category.label + " (no score)";
+    clauses += fmt::format(
+        "{}{} index 0 using 1:($8 == {} && $9 == 0 ? $2 : 1/0):3:4:5:6 with boxxyerror fs "
+        "solid 1.0 border lc rgb '#ffffff' fc rgb '{}' title {}",
+        clauses.empty() ? "" : ", \\\n     ", clauses.empty() ? data : "''", i, category.colour,
+        GnuplotQuoted(label));
+  }
+  return clauses;
+}
+
+// The curves drawn over the cells: the derived boundary with the points it envelopes and the
+// paper's rules, or the stability bound on the dt map.
 std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
   if (y == MapAxis::kDt) {
     return ", 1 with lines lw 3 lc rgb '#000000' title 'sharp stability bound 2/{/Symbol "
            "w}_{max}'";
   }
-  std::string overlays;
+  std::string overlays =
+      ", '' index 1 using 1:2 with points pt 9 ps 1.6 lc rgb '#000000' title 'smallest passing "
+      "R_{ftrunc} of each R_k'";
   if (criteria.fit) {
     overlays += fmt::format(
         ", (x >= {k} ? {c} * x**{p} : 1/0) with lines lw 3 dt 1 lc rgb '#000000' "
-        "title 'derived boundary R_{{ftrunc}} = {c:.3g} R_k^{{{p:.3f}}}'",
+        "title 'derived boundary: R_{{ftrunc}} = {c:.3g} R_k^{{{p:.3f}}}, the fit above the "
+        "knee R_k = {k:.4g} raised to cover every point'",
         fmt::arg("k", criteria.fit->knee_r_k), fmt::arg("c", criteria.fit->c_envelope),
         fmt::arg("p", criteria.fit->p));
   }
@@ -182,10 +156,18 @@ std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
          "eq. 11: R_{ftrunc} = 300 for R_k > 10^2'";
 }
 
+// "set xtics (...)": one tick per studied value, labelled with 4 significant digits.
+std::string Tics(const char* axis, const std::vector<double>& values) {
+  std::string tics;
+  for (double v : values) tics += fmt::format("{}'{:.4g}' {}", tics.empty() ? "" : ", ", v, v);
+  return fmt::format("set {}tics ({}){}\n", axis, tics,
+                     std::string(axis) == "x" ? " rotate by -35 offset 0,0" : "");
+}
+
 // What the script needs beyond the style: names, axes and ranges.
 struct MapFrame {
-  std::string study, ylabel, overlays;
-  std::filesystem::path image, data;
+  std::string title, ylabel, tics, cells, overlays;
+  std::filesystem::path image;
   double xmin, xmax, ymin, ymax;
 };
 
@@ -196,27 +178,22 @@ set output {out}
 set title {title} font ',13' noenhanced
 set logscale x
 set logscale y
-set format x '10^{{%L}}'
-set xlabel 'R_k = k_s / K_{{bend}}'
+{tics}set xlabel 'R_k = k_s / K_{{bend}} (the studied values ticked)'
 set ylabel {ylabel}
 set cblabel {cb}
 {palette}set xrange [{xmin}:{xmax}]
 set yrange [{ymin}:{ymax}]
-set key outside bottom center horizontal box opaque font ',10' samplen 3
+set key outside bottom center horizontal box opaque font ',10' samplen 3 maxcols 3
 set grid front lc rgb '#999999'
 set samples 400
-plot {data} using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb '#ffffff' fc palette notitle, \
-     '' using 1:($8 == 4 ? $2 : 1/0):3:4:5:6 with boxxyerror fs solid 1.0 border lc rgb '#ffffff' fc rgb '#bdbdbd' title 'reference unconverged (not scored)', \
-     '' using 1:($8 == 2 ? $2 : 1/0) with points pt 2 ps 2 lw 2 lc rgb '#000000' title 'diverged', \
-     '' using 1:($8 == 3 ? $2 : 1/0) with points pt 6 ps 2 lw 2 lc rgb '#000000' title 'failed'{overlays}
+plot {cells}{overlays}
 )",
-      fmt::arg("terminal", TerminalFor(f.image, 1100, 800)),
-      fmt::arg("out", GnuplotFileName(f.image)),
-      fmt::arg("title", GnuplotQuoted(f.study + ": " + style.title)),
-      fmt::arg("ylabel", GnuplotQuoted(f.ylabel)), fmt::arg("cb", GnuplotQuoted(style.cb)),
-      fmt::arg("palette", style.palette), fmt::arg("xmin", f.xmin), fmt::arg("xmax", f.xmax),
-      fmt::arg("ymin", f.ymin), fmt::arg("ymax", f.ymax), fmt::arg("data", GnuplotFileName(f.data)),
-      fmt::arg("overlays", f.overlays));
+      fmt::arg("terminal", TerminalFor(f.image, 1100, 850)),
+      fmt::arg("out", GnuplotFileName(f.image)), fmt::arg("title", GnuplotQuoted(f.title)),
+      fmt::arg("tics", f.tics), fmt::arg("ylabel", GnuplotQuoted(f.ylabel)),
+      fmt::arg("cb", GnuplotQuoted(style.cb)), fmt::arg("palette", style.palette),
+      fmt::arg("xmin", f.xmin), fmt::arg("xmax", f.xmax), fmt::arg("ymin", f.ymin),
+      fmt::arg("ymax", f.ymax), fmt::arg("cells", f.cells), fmt::arg("overlays", f.overlays));
 }
 
 }  // namespace
@@ -224,32 +201,27 @@ plot {data} using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb '#fff
 void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& points,
                      const ValidityCriteria& criteria, const MapOptions& options,
                      const std::filesystem::path& file) {
-  double r_ftrunc_max = 0.0;
-  for (const auto& p : points) r_ftrunc_max = std::max(r_ftrunc_max, p.r_ftrunc);
-  const double fixed_rft = options.r_ftrunc.value_or(r_ftrunc_max);
-  const Cells cells = PickCells(points, options, fixed_rft);
-  std::vector<double> xs, ys;
-  for (const auto& [key, p] : cells) xs.push_back(key.first), ys.push_back(key.second);
-  const CellBounds xcells = LogCells(xs);
-  const CellBounds ycells = LogCells(ys);
-
-  TerminalFor(file, 1100, 800);  // Throws for a bad extension before any file is written.
+  const MapGrid grid = BuildMapGrid(points, options.y, options.r_ftrunc.value_or(0.0));
+  TerminalFor(file, 1100, 850);  // Throws for a bad extension before any file is written.
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
-  WriteMapData(cells, xcells, ycells, options.metric, criteria.options, data_file);
-  const MapFrame frame{study,
-                       options.y == MapAxis::kRFtrunc
-                           ? "R_{ftrunc} = f_{trunc} / f_1"
-                           : fmt::format("dt / dt_{{sharp}} (R_{{ftrunc}} = {:g})", fixed_rft),
-                       Overlays(criteria, options.y),
-                       file,
-                       data_file,
-                       xcells.begin()->second.first,
-                       xcells.rbegin()->second.second,
-                       ycells.begin()->second.first,
-                       ycells.rbegin()->second.second};
-  RunGnuplot(MapScript(frame, StyleOf(options.metric, criteria.options)),
-             std::filesystem::path(file).replace_extension(".gp"), file);
+  WriteMapData(grid, criteria, options.metric, data_file);
+  const MetricStyle style = StyleOf(options.metric, criteria.options);
+  const bool by_dt = options.y == MapAxis::kDt;
+  const std::string shown =
+      by_dt ? fmt::format("at R_ftrunc = {:g}", grid.fixed_r_ftrunc) : "at " + DtShown(grid);
+  const MapFrame frame{
+      study + ": " + style.title + ", " + shown,
+      by_dt ? "dt / dt_{sharp}" : "R_{ftrunc} = f_{trunc} / f_1",
+      Tics("x", grid.r_k_values) + Tics("y", grid.y_values),
+      CellClauses(grid, options.metric, criteria.options, GnuplotFileName(data_file)),
+      Overlays(criteria, options.y),
+      file,
+      grid.cells.front().x_low,
+      grid.cells.back().x_high,
+      std::ranges::min(grid.cells, {}, &MapCell::y_low).y_low,
+      std::ranges::max(grid.cells, {}, &MapCell::y_high).y_high};
+  RunGnuplot(MapScript(frame, style), std::filesystem::path(file).replace_extension(".gp"), file);
 }
 
 }  // namespace shockmap

@@ -9,16 +9,13 @@
 #include <vector>
 
 #include "validation/validity_criteria.h"
+#include "views/map_grid.h"
 
 namespace shockmap {
 
 enum class MapMetric { kErr, kSrf, kCost, kStatus };
 std::string ToString(MapMetric m);
 std::optional<MapMetric> MapMetricFromString(std::string_view s);
-
-enum class MapAxis { kRFtrunc, kDt };
-std::string ToString(MapAxis a);
-std::optional<MapAxis> MapAxisFromString(std::string_view s);
 
 struct MapOptions {
   MapMetric metric = MapMetric::kErr;
@@ -29,7 +26,10 @@ struct MapOptions {
 };
 
 // Draws the map into `file` (.png or .svg, from the extension), with its gnuplot script and
-// data beside it. Throws InputError when there is nothing to draw or the file cannot be written.
+// data beside it; the script names its data relative to its own folder, so it runs from there.
+// The axes tick the studied values, the title states the dt shown, the status map has one
+// legend entry per outcome category present (views/map_grid.h). Throws InputError when there is
+// nothing to draw or the file cannot be written.
 void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& points,
                      const ValidityCriteria& criteria, const MapOptions& options,
                      const std::filesystem::path& file);

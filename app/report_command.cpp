@@ -1,0 +1,167 @@
+#include "app/report_command.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/flag_checks.h"
+#include "compare/comparison.h"
+#include "compare/scene_run.h"
+#include "core/input_error.h"
+#include "db/report_queries.h"
+#include "db/study_database.h"
+#include "engine/provenance.h"
+#include "engine/reference_store.h"
+#include "formats/history_csv.h"
+#include "formats/json_reader.h"
+#include "formats/output_file.h"
+#include "formats/study_file.h"
+#include "views/comparison_plot.h"
+#include "views/contact_force_map.h"
+#include "views/html_report.h"
+#include "views/scored_points.h"
+
+namespace shockmap {
+namespace {
+
+struct ReportFlags {
+  std::string database_path = kDefaultDatabasePath;
+  std::string study;
+  CriteriaOptions thresholds;
+  std::string out;
+};
+
+// Recomputes one stored point against its stored reference and draws its Fig. 3 into
+// ctx.dir/points/point_ID; nothing when its reference is not stored.
+std::optional<PointFigure> DrawFig3(const ReportContext& ctx, const StudySpec& spec,
+                                    std::int64_t point_id, const StoredStudyPoint& stored) {
+  const auto row = StoredReference(ctx.database_path, stored.reference_key);
+  if (!row) return std::nullopt;
+  const auto reference = std::make_shared<const ReferenceRun>(FromReferenceRow(*row));
+  const ComparisonResult r = ScoreAgainstReference(ProblemOf(spec, stored.point),
+                                                   OptionsOf(spec, stored.point), reference);
+  const auto dir = ctx.dir / "points" / fmt::format("point_{}", point_id);
+  CreateOutputDirectory(dir);
+  WriteComparisonCsv(r, dir);
+  return PointFigure{
+      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir), r.err,
+      r.srf};
+}
+
+std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::string& json) {
+  const StudySpec spec = ParseStudySpec(
+      ParseJsonText(json, ctx.database_path + ": stored study " + ctx.study), ctx.database_path);
+  const auto points = LoadScoredPoints(ctx.database_path, ctx.study, "explicit-modal");
+  if (points.empty()) {
+    throw InputError("study \"" + ctx.study + "\" has no stored explicit-modal point to report on");
+  }
+  const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
+  const auto chosen = PointsWorthFig3(points, ctx.thresholds);
+  std::map<std::int64_t, PointFigure> figures;
+  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
+  for (std::int64_t id : chosen) {
+    if (terminal)
+      fmt::print("  Fig. 3 of point {} ({}/{})\r", id, figures.size() + 1, chosen.size());
+    std::fflush(stdout);
+    const auto found = stored.find(id);
+    if (found == stored.end()) continue;
+    if (auto figure = DrawFig3(ctx, spec, id, found->second)) figures[id] = *figure;
+  }
+  fmt::print("  Fig. 3 drawn for {} of {} points; the other points' pages give the command\n",
+             figures.size(), stored.size());
+  return CanonicalSections(ctx, spec, figures);
+}
+
+// "bundle.wire.stiffness_n_per_m = 1e+05, solver.r_ftrunc = 1000"
+std::string Described(const SceneParameters& parameters) {
+  std::string text;
+  for (const auto& [path, value] : parameters) {
+    text += fmt::format("{}{} = {:g}", text.empty() ? "" : ", ", path, value);
+  }
+  return text;
+}
+
+// One contact-force map per combination of the swept parameters outside "solver.", at the
+// reference's settings.
+std::vector<SceneForceMap> DrawForceMaps(const ReportContext& ctx, const SceneStudySpec& spec) {
+  std::map<SceneParameters, SceneParameters> physical;  // Non-solver parameters -> point.
+  for (const SceneParameters& p : spec.points) {
+    SceneParameters key;
+    for (const auto& entry : p) {
+      if (!entry.first.starts_with("solver.")) key.push_back(entry);
+    }
+    physical.try_emplace(key, ReferenceParameters(spec, p));
+  }
+  std::vector<SceneForceMap> maps;
+  for (const auto& [key, parameters] : physical) {
+    fmt::print("  contact-force map {}/{} at {}\n", maps.size() + 1, physical.size(),
+               Described(parameters));
+    std::fflush(stdout);
+    Scene scene = ScoredScene(spec, parameters);
+    const SceneRun run = RunScene(scene);
+    const auto png = ctx.dir / fmt::format("contact_forces_{}.png", maps.size() + 1);
+    DrawContactForceMap(scene, run.max_contact_force_n, png);
+    maps.push_back({"Largest contact force per zone at " + Described(parameters), png});
+  }
+  return maps;
+}
+
+std::vector<ReportSection> SceneReport(const ReportContext& ctx, const std::string& json) {
+  const SceneStudySpec spec = ParseStoredSceneStudySpec(
+      ParseJsonText(json, ctx.database_path + ": stored study " + ctx.study),
+      ctx.database_path + ": stored study " + ctx.study);
+  return SceneSections(ctx, spec, DrawForceMaps(ctx, spec));
+}
+
+// The sections of the study's kind: the one place a new kind of study joins the report.
+std::vector<ReportSection> StudySections(const ReportContext& ctx, StudyFileKind kind,
+                                         const std::string& json) {
+  switch (kind) {
+    case StudyFileKind::kCanonical:
+      return CanonicalReport(ctx, json);
+    case StudyFileKind::kSceneSweep:
+      return SceneReport(ctx, json);
+  }
+  throw InputError("study \"" + ctx.study + "\": no report for its kind");
+}
+
+void Run(const ReportFlags& f) {
+  CheckPathLength(std::filesystem::path(f.out) / "points" / "point_1000000000" / "numerical.csv",
+                  "--out");
+  ReportContext ctx{f.database_path,
+                    ResolveStudyName(f.database_path, f.study),
+                    "",
+                    f.thresholds,
+                    CurrentProvenance(1),
+                    f.out};
+  const auto json = StoredStudySpec(ctx.database_path, ctx.study);
+  if (!json) throw InputError("no study named \"" + ctx.study + "\" in " + ctx.database_path);
+  const StudyFileKind kind = StudyKindOf(
+      ParseJsonText(*json, ctx.database_path + ": stored study " + ctx.study), ctx.database_path);
+  ctx.kind = ToString(kind);
+  CreateOutputDirectory(ctx.dir);
+  const auto page = WriteReportIndex(ctx, StudySections(ctx, kind, *json));
+  std::cout << "report written to " << page.string() << '\n';
+}
+
+}  // namespace
+
+void AddReportCommand(CLI::App& app) {
+  auto flags = std::make_shared<ReportFlags>();
+  CLI::App* report = app.add_subcommand(
+      "report",
+      "HTML report of a stored study (index.html): sortable tables, interactive validity maps, "
+      "a page per point with its Fig. 3, Fig. 4, criteria, cost front, contact-force maps of "
+      "scene studies, provenance");
+  report->add_option("STUDY", flags->study, "study name (default: the database's only study)");
+  report->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddThresholdFlags(report, flags->thresholds);
+  report->add_option("--out", flags->out, "directory for index.html, its figures and point pages")
+      ->required();
+  report->callback([flags] { Run(*flags); });
+}
+
+}  // namespace shockmap

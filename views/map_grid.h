@@ -1,0 +1,51 @@
+#pragma once
+// The cells of a validity map: which stored point each (R_k, y) cell shows, where its box lies
+// on the log axes, and the outcome category it is coloured by. Shared by the gnuplot maps
+// (views/validity_map.h) and the report's interactive maps (views/html_validity_map.h).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "validation/validity_criteria.h"
+
+namespace shockmap {
+
+enum class MapAxis { kRFtrunc, kDt };
+std::string ToString(MapAxis a);
+std::optional<MapAxis> MapAxisFromString(std::string_view s);
+
+// The outcome categories of the status map, in legend order: "passes" and "fails thresholds"
+// (status ok, split by the thresholds), then every other status of kAllRunStatuses
+// (core/run_status.h) by its stored name, so that a new status gets its own category.
+struct OutcomeCategory {
+  std::string label;   // "passes", "fails thresholds", "diverged", ...
+  std::string colour;  // "#rrggbb".
+};
+const std::vector<OutcomeCategory>& OutcomeCategories();
+// The index of p's category in OutcomeCategories().
+int OutcomeCategoryOf(const ScoredPoint& p, const CriteriaOptions& thresholds);
+
+struct MapCell {
+  const ScoredPoint* point = nullptr;
+  double r_k = 0.0, y = 0.0;  // y: R_ftrunc, or dt / dt_sharp rounded (see MapAxis).
+  double x_low = 0.0, x_high = 0.0, y_low = 0.0, y_high = 0.0;  // The box, geometric halves.
+};
+
+struct MapGrid {
+  std::vector<MapCell> cells;                // By R_k, then y.
+  std::vector<double> r_k_values, y_values;  // The studied values, ascending.
+  double fixed_r_ftrunc = 0.0;               // kDt: the truncation shown.
+};
+
+// kRFtrunc: each (R_k, R_ftrunc) cell shows its finest time step. kDt: dt / dt_sharp against
+// R_k at truncation `r_ftrunc` (the largest studied when 0). Throws InputError when no point
+// matches.
+MapGrid BuildMapGrid(const std::vector<ScoredPoint>& points, MapAxis y, double r_ftrunc = 0.0);
+
+// The dt / dt_sharp of the cells, as the map's title states it: "dt = 0.1 dt_sharp" when every
+// cell shows the same ratio, else "dt = 0.1 to 0.5 dt_sharp (the finest studied per cell)".
+std::string DtShown(const MapGrid& grid);
+
+}  // namespace shockmap

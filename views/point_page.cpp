@@ -1,0 +1,133 @@
+#include "views/point_page.h"
+
+#include <fmt/format.h>
+
+#include "db/report_queries.h"
+#include "views/html_text.h"
+#include "views/report_page.h"
+
+namespace shockmap {
+namespace {
+
+// The study's settings that `compare` cannot set, where they differ from its defaults.
+std::vector<std::string> Unmatched(const StudySpec& spec, const StudyPoint& point) {
+  const ComparisonOptions study = OptionsOf(spec, point), compare;
+  std::vector<std::string> out;
+  auto differs = [&](bool same, const std::string& what, const std::string& value,
+                     const std::string& default_value) {
+    if (!same) out.push_back(fmt::format("{} {} (compare: {})", what, value, default_value));
+  };
+  differs(point.mass_damping_per_s == 0.0, "mass damping",
+          fmt::format("{} /s", point.mass_damping_per_s), "0 /s");
+  differs(study.psd.n_samples == compare.psd.n_samples, "PSD samples",
+          std::to_string(study.psd.n_samples), std::to_string(compare.psd.n_samples));
+  differs(study.psd.zero_padding_factor == compare.psd.zero_padding_factor, "PSD zero padding",
+          std::to_string(study.psd.zero_padding_factor),
+          std::to_string(compare.psd.zero_padding_factor));
+  differs(study.psd.window == compare.psd.window && study.psd.one_sided == compare.psd.one_sided,
+          "PSD window or sidedness", "as in the study file", "Hann, one-sided");
+  differs(study.rest_duration_t1 == compare.rest_duration_t1, "shock rest duration",
+          fmt::format("{} T1", study.rest_duration_t1),
+          fmt::format("{} T1", compare.rest_duration_t1));
+  differs(study.srf_definition == compare.srf_definition, "SRf definition",
+          ToString(study.srf_definition), ToString(compare.srf_definition));
+  differs(
+      study.reference.crossing_samples_per_period == compare.reference.crossing_samples_per_period,
+      "reference crossing samples", std::to_string(study.reference.crossing_samples_per_period),
+      std::to_string(compare.reference.crossing_samples_per_period));
+  differs(study.reference_tolerance == compare.reference_tolerance, "reference tolerance",
+          fmt::format("{}", study.reference_tolerance),
+          fmt::format("{}", compare.reference_tolerance));
+  return out;
+}
+
+std::string DtFlags(const TimeStepRequest& dt) {
+  if (dt.dt_s) return fmt::format("--dt {}", *dt.dt_s);
+  return fmt::format("--dt-factor {} --dt-rule {}", dt.factor, ToString(dt.rule));
+}
+
+std::string StoredValues(const PointPageInput& in) {
+  QueryResult values;
+  values.columns = {"column", "value"};
+  for (std::size_t i = 0; i < in.columns->size(); ++i) {
+    values.rows.push_back({(*in.columns)[i], (*in.row)[i]});
+  }
+  return SortableTable(values, "stored-table", "Its row of the results view");
+}
+
+std::string FigureSection(const PointPageInput& in, const std::string& command) {
+  if (!in.figure) {
+    return "<p>The report draws Fig. 3 for the points around the derived boundary only. To draw "
+           "this one, run (from the report's folder):</p><pre>" +
+           HtmlEscaped(command) + "</pre>\n";
+  }
+  auto scored = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.4f}", *v) : std::string("not scored");
+  };
+  const auto dir = in.figure->png.parent_path();
+  return EmbeddedFigure(in.figure->png,
+                        fmt::format("Tip displacement and contact force against the stored "
+                                    "reference, recomputed: Err = {}, SRf = {}",
+                                    scored(in.figure->err), scored(in.figure->srf)),
+                        {{"image", dir.filename() / "fig3.png"},
+                         {"numerical history (CSV)", dir.filename() / "numerical.csv"},
+                         {"reference history (CSV)", dir.filename() / "reference.csv"},
+                         {"gnuplot script", dir.filename() / "fig3.gp"}});
+}
+
+}  // namespace
+
+std::map<std::int64_t, StoredStudyPoint> StudyPointsById(const std::string& database_path,
+                                                         const std::string& study,
+                                                         const StudySpec& spec) {
+  std::map<std::string, const StudyPoint*> by_key;
+  for (const StudyPoint& p : spec.points) by_key[PointKey(p)] = &p;
+  std::map<std::int64_t, StoredStudyPoint> points;
+  for (const auto& row : PointKeys(database_path, study).rows) {
+    const auto found = by_key.find(std::get<std::string>(row[1]));
+    if (found == by_key.end()) continue;
+    points[std::get<std::int64_t>(row[0])] = {*found->second, std::get<std::string>(row[2])};
+  }
+  return points;
+}
+
+std::string CompareCommand(const StudySpec& spec, const StudyPoint& point,
+                           const std::string& out_dir, std::vector<std::string>* unmatched) {
+  if (unmatched != nullptr) *unmatched = Unmatched(spec, point);
+  const ComparisonOptions o = OptionsOf(spec, point);
+  return fmt::format(
+      "shockmap compare --rk {} --rftrunc {} --scheme {} {} --window {} --rfref {}{} --out {} "
+      "--plot",
+      point.r_k, point.r_ftrunc, ToString(point.scheme), DtFlags(point.dt), point.window_s,
+      o.reference.r_fref,
+      point.n_elements > 0 ? fmt::format(" --elements {}", point.n_elements) : "", out_dir);
+}
+
+std::string PointPage(const PointPageInput& in) {
+  std::vector<ReportSection> sections;
+  std::string command = "(the point is not in the stored study file: no command)";
+  std::string caveats;
+  if (in.point && in.spec != nullptr) {
+    std::vector<std::string> unmatched;
+    command = CompareCommand(*in.spec, *in.point, fmt::format("points/point_{}", in.point_id),
+                             &unmatched);
+    for (const std::string& u : unmatched) caveats += "<li>" + HtmlEscaped(u) + "</li>";
+  }
+  sections.push_back({"fig3", "Fig. 3: the run against its reference", FigureSection(in, command)});
+  sections.push_back(
+      {"reproduce", "Reproduce it",
+       "<pre>" + HtmlEscaped(command) + "</pre>\n" +
+           (caveats.empty() ? "<p>It sets every setting of the study this point depends on.</p>\n"
+                            : "<p>compare has no flag for these settings of the study; its "
+                              "result can differ from the stored one by them:</p><ul>" +
+                                  caveats + "</ul>\n")});
+  sections.push_back(
+      {"values", "Stored values", "<div class=\"scroll\">" + StoredValues(in) + "</div>"});
+  ReportHeader header{fmt::format("{}: point {}", in.study, in.point_id),
+                      {{"study", in.study}, {"point", std::to_string(in.point_id)}}};
+  std::string page = ReportPage(header, sections);
+  const std::string back = "<p><a href=\"../index.html\">back to the report</a></p>\n";
+  return page.insert(page.find("</header>") + 9, back);
+}
+
+}  // namespace shockmap

@@ -1,0 +1,120 @@
+#include "views/report_page.h"
+
+#include <fmt/format.h>
+
+#include "views/html_text.h"
+#include "views/vendored_scripts.h"
+
+namespace shockmap {
+namespace {
+
+constexpr const char* kStyle = R"css(
+body { font-family: 'DejaVu Sans', sans-serif; max-width: 1250px; margin: 1.5em auto; padding: 0 1em; color: #222; }
+header dl { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1.2em; margin: 0.5em 0 1em; }
+header dt { color: #555; } header dd { margin: 0; font-family: 'DejaVu Sans Mono', monospace; }
+nav#contents { background: #f6f6f6; padding: 0.6em 1.2em; border-left: 4px solid #1a9850; }
+nav#contents ol { margin: 0.3em 0; }
+h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; margin-top: 1.8em; }
+figure { margin: 1.2em 0; } img { max-width: 100%; border: 1px solid #ddd; }
+figcaption { color: #555; font-size: 0.9em; } .files a { margin-left: 0.6em; }
+pre { background: #f6f6f6; padding: 0.8em; white-space: pre-wrap; font-size: 0.9em; }
+code { background: #f0f0f0; padding: 0 0.2em; }
+table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.88em; }
+caption { text-align: left; font-weight: bold; padding: 0.3em 0; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; white-space: nowrap; }
+td.long { white-space: normal; min-width: 24em; text-align: left; }
+th { background: #eef3ee; cursor: pointer; user-select: none; }
+th[aria-sort=ascending]::after { content: ' \25B2'; } th[aria-sort=descending]::after { content: ' \25BC'; }
+td:first-child, th:first-child { text-align: left; }
+.scroll { max-height: 32em; overflow: auto; }
+svg.map { width: 100%; max-width: 1100px; height: auto; display: block; }
+svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
+svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
+svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
+.legend span { display: inline-block; margin-right: 1.2em; }
+.legend i { display: inline-block; width: 1em; height: 1em; vertical-align: middle; margin-right: 0.3em; border: 1px solid #999; }
+#cell-info { position: fixed; display: none; background: #fff; border: 1px solid #333; padding: 0.4em 0.6em; font-size: 0.85em; pointer-events: none; box-shadow: 2px 2px 6px #aaa; }
+)css";
+
+// After the vendored tablesort: a numeric sort that reads exponents (empty cells sort as
+// -infinity), every sortable table taken, the map's hover box, and the page's load marks.
+constexpr const char* kScript = R"js(
+Tablesort.extend('real', function () { return false; }, function (a, b) {
+  var x = a.trim() === '' ? -Infinity : Number(a), y = b.trim() === '' ? -Infinity : Number(b);
+  if (x === y || (isNaN(x) && isNaN(y))) return 0;
+  return (isNaN(y) ? -Infinity : y) > (isNaN(x) ? -Infinity : x) ? 1 : -1;
+});
+var sortableTables = 0;
+document.querySelectorAll('table.sortable').forEach(function (t) { new Tablesort(t); ++sortableTables; });
+var info = document.getElementById('cell-info');
+document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {
+  cell.addEventListener('mousemove', function (e) {
+    var d = cell.dataset;
+    info.innerHTML = '';
+    [['R_k', d.rk], ['R_ftrunc', d.rftrunc], ['dt', d.dt + ' s (' + d.dtRatio + ' dt_sharp)'],
+     ['Err', d.err], ['SRf', d.srf], ['status', d.status + ' (' + d.outcome + ')']].forEach(function (row) {
+      var line = document.createElement('div');
+      line.textContent = row[0] + ': ' + row[1];
+      info.appendChild(line);
+    });
+    info.style.left = (e.clientX + 14) + 'px';
+    info.style.top = (e.clientY + 14) + 'px';
+    info.style.display = 'block';
+  });
+  cell.addEventListener('mouseleave', function () { info.style.display = 'none'; });
+});
+window.addEventListener('load', function () {
+  var images = Array.from(document.images);
+  var loaded = images.filter(function (i) { return i.complete && i.naturalWidth > 0; }).length;
+  document.body.dataset.imagesLoaded = loaded + '/' + images.length;
+  document.body.dataset.sortableTables = String(sortableTables);
+});
+)js";
+
+std::string Header(const ReportHeader& header) {
+  std::string facts;
+  for (const auto& [label, value] : header.facts) {
+    facts += fmt::format("<dt>{}</dt><dd>{}</dd>\n", HtmlEscaped(label), HtmlEscaped(value));
+  }
+  return fmt::format("<header><h1>{}</h1>\n<dl>\n{}</dl></header>\n", HtmlEscaped(header.title),
+                     facts);
+}
+
+std::string Contents(const std::vector<ReportSection>& sections) {
+  if (sections.size() < 2) return "";
+  std::string items;
+  for (const ReportSection& s : sections) {
+    items +=
+        fmt::format("<li><a href=\"#{}\">{}</a></li>", HtmlEscaped(s.id), HtmlEscaped(s.title));
+  }
+  return "<nav id=\"contents\"><strong>Contents</strong><ol>" + items + "</ol></nav>\n";
+}
+
+std::string Licences() {
+  return fmt::format(
+      "<details><summary>Third-party code in this page</summary><p>tablesort 5.7.1 (table "
+      "sorting), under this licence:</p><pre>{}</pre></details>\n",
+      HtmlEscaped(TablesortLicence()));
+}
+
+}  // namespace
+
+std::string ReportPage(const ReportHeader& header, const std::vector<ReportSection>& sections) {
+  std::string body;
+  for (const ReportSection& s : sections) {
+    body += fmt::format("<section id=\"{}\"><h2>{}</h2>\n{}</section>\n", HtmlEscaped(s.id),
+                        HtmlEscaped(s.title), s.html);
+  }
+  return fmt::format(
+      "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>{title}</title>\n<style>{style}</style></head>\n<body>\n{header}{contents}{body}"
+      "<footer>{licences}</footer>\n<div id=\"cell-info\"></div>\n"
+      "<script>{tablesort}</script>\n<script>{script}</script>\n</body></html>\n",
+      fmt::arg("title", HtmlEscaped(header.title)), fmt::arg("style", kStyle),
+      fmt::arg("header", Header(header)), fmt::arg("contents", Contents(sections)),
+      fmt::arg("body", body), fmt::arg("licences", Licences()),
+      fmt::arg("tablesort", TablesortScript()), fmt::arg("script", kScript));
+}
+
+}  // namespace shockmap
