@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "core/cpu_timer.h"
+#include "core/impact_tracker.h"
 #include "core/validity.h"
 
 namespace shockmap {
@@ -84,49 +84,6 @@ struct Recorder {
       result.energy.external_work_j.values.push_back(work_j);
     }
   }
-};
-
-// Feeds each contact's force and sliding speed to its accumulator after every step. The speed
-// is asked of the system only while the contact carries force (otherwise F v = 0), and never
-// for contacts whose tangential motion the system does not carry (NaN at the initial state).
-class ImpactTracker {
- public:
-  ImpactTracker(const SecondOrderSystem& system, const ImpactCounting& counting,
-                const Eigen::VectorXd& v0)
-      : system_(system) {
-    const auto forces = system.LastContactForces();
-    for (std::size_t c = 0; c < forces.size(); ++c) {
-      const double speed = system.SlidingSpeed(static_cast<int>(c), v0);
-      slides_.push_back(std::isfinite(speed));
-      accumulators_.emplace_back(counting, forces[c], forces[c] > 0.0 ? speed : Idle(c));
-    }
-  }
-
-  void Step(const Eigen::VectorXd& v, double dt_s) {
-    const auto forces = system_.LastContactForces();
-    for (std::size_t c = 0; c < forces.size(); ++c) {
-      const bool sliding_force = forces[c] > 0.0 && slides_[c];
-      const double speed = sliding_force ? system_.SlidingSpeed(static_cast<int>(c), v) : Idle(c);
-      accumulators_[c].Add(forces[c], speed, dt_s);
-    }
-  }
-
-  std::vector<ImpactStatistics> Finish(double duration_s) const {
-    std::vector<ImpactStatistics> statistics;
-    for (const auto& accumulator : accumulators_)
-      statistics.push_back(accumulator.Finish(duration_s));
-    return statistics;
-  }
-
- private:
-  // The speed passed without asking the system: 0 where it slides (the force is 0), else NaN.
-  double Idle(std::size_t c) const {
-    return slides_[c] ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-  }
-
-  const SecondOrderSystem& system_;
-  std::vector<bool> slides_;
-  std::vector<ImpactAccumulator> accumulators_;
 };
 
 }  // namespace
