@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/cpu_timer.h"
+#include "core/impact_tracker.h"
 #include "core/validity.h"
 
 namespace shockmap {
@@ -16,6 +18,7 @@ bool TransientOptions::IsValid(std::string* error) const {
       !RequireAtLeast("energy_growth_limit", energy_growth_limit, 1.0, error)) {
     return false;
   }
+  if (track_impact_statistics && !impact_counting.IsValid(error)) return false;
   const double steps = std::ceil(end_time_s / dt_s - 1e-9);
   if (steps > static_cast<double>(max_steps)) {
     if (error != nullptr) {
@@ -99,7 +102,11 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
 
   Recorder recorder{system, options, result};
   recorder.Start(dt * options.record_stride);
+  std::optional<ImpactTracker> impacts;
   auto finish = [&](RunStatus status, std::string message) {
+    if (impacts && summary.steps_taken > 0) {
+      result.impact_statistics = impacts->Finish(static_cast<double>(summary.steps_taken) * dt);
+    }
     summary.status = status;
     summary.message = std::move(message);
     summary.wall_s = timer.WallSeconds();
@@ -125,6 +132,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
     const auto forces = system.LastContactForces();
     result.max_contact_force_n.assign(forces.begin(), forces.end());
   }
+  if (options.track_impact_statistics) impacts.emplace(system, options.impact_counting, v0);
 
   for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
     if (!integrator.Step(dt)) {
@@ -140,6 +148,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
         result.max_contact_force_n[c] = std::max(result.max_contact_force_n[c], forces[c]);
       }
     }
+    if (impacts) impacts->Step(integrator.V(), dt);
     if (dissipates) {
       const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
       dissipated += 0.5 * dt * (power_before + power_now);

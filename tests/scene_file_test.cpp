@@ -277,6 +277,24 @@ TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {
   }
 }
 
+// The streamed impact statistics of the canonical scene group its contacts as the shocks of
+// its recorded force history do (the same rest duration), and a planar scene has no wear.
+TEST_F(SceneFiles, ImpactStatisticsAgreeWithTheShocksOfTheHistory) {
+  const std::string path = Variant([](Json& s) {
+    s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0.0052}};
+  });
+  const auto r = RunShockmap("simulate --json " + path + " --out " + Path("impacts"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json zone = Json::parse(r.output)["zone_results"][0];
+  const Json& impacts = zone["impact_statistics"];
+  ASSERT_GT(zone["shocks"]["count"].get<int>(), 0);
+  EXPECT_EQ(impacts["impacts"], zone["shocks"]["count"]);
+  EXPECT_EQ(impacts["contacts"].get<int>(),
+            zone["shocks"]["count"].get<int>() + zone["shocks"]["rebounds"].get<int>());
+  EXPECT_TRUE(impacts["wear_work_rate_w"].is_null());
+  EXPECT_TRUE(std::filesystem::exists(Path("impacts") + "/impact_statistics.csv"));
+}
+
 TEST_F(SceneFiles, SimulateRefusesBadInputWithExitCode2) {
   WriteText(Path("empty.json"), "");
   WriteText(Path("truncated.json"), "{\"name\": \"x\", \"beams\": [");
