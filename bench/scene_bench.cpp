@@ -9,7 +9,7 @@
 //                         undeclared effect must cost nothing
 // Counters: cpu_s_per_simulated_s, and ns_per_step_per_term = time / (steps * (coordinates +
 // zones)), flat when the cost grows linearly with the size of the scene. The growth exponent of
-// bundle time against pins is fitted from BundleHex by scripts/fit_growth.py (docs/performance.md).
+// bundle time against pins is fitted from BundleHex by scripts/bundle-growth (docs/performance.md).
 
 #include <benchmark/benchmark.h>
 

@@ -93,6 +93,7 @@ class ContactStations {
   std::vector<std::uint64_t> velocity_step_;  // The step a slot's velocity belongs to.
   std::uint64_t step_ = 0;
   std::vector<double> force_;
+  std::vector<int> closed_;  // The zones closed in this step, in zone order.
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
 };
