@@ -9,8 +9,8 @@
 // The forces are added zone by zone in zone order, not summed per station first: that is the
 // order of the zone-by-zone step this replaces, so results are equal bit for bit. The row
 // bundle's rattling amplifies a change of the last digit to 26 % in a zone's largest force over
-// 0.5 s (measured with per-station sums), and closed zones are few enough that the per-zone
-// projection costs about what per-station sums saved.
+// 0.5 s (measured with per-station sums); the per-zone projection measured 10 % dearer than
+// per-station sums on the 217-pin bundle (docs/performance.md).
 //
 // Per-zone quantities stay reachable: Forces() (zone order, the last step's), and
 // RelativeDisplacement / RelativeVelocity of a zone (u_a - u_b and v_a - v_b at its height, y
