@@ -307,8 +307,8 @@ double ContactStations::ContactEnergy(const Eigen::VectorXd& x) const {
   return e;
 }
 
-double ContactStations::DampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-  double p = 0.0;
+double ContactStations::AddDampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                        double p) const {
   for (int i : damped_) {
     const double d = NormalAt(i, x) - gap_[i];
     if (d <= 0.0) continue;

@@ -53,8 +53,9 @@ class ContactStations {
 
   // Sum over closed zones of the penalty energy k d^2 / 2 at x (J).
   double ContactEnergy(const Eigen::VectorXd& x) const;
-  // Power taken out by contact damping at (x, v): sum over closed damped zones of (F - k d) d'.
-  double DampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const;
+  // p plus the power taken out by contact damping at (x, v): the terms (F - k d) d' of the
+  // closed damped zones added to p one by one, in zone order.
+  double AddDampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double p) const;
   bool AnyDamping() const { return !damped_.empty(); }
   // y += sum_z k_z r_z r_z^T x: the stiffness of every zone closed, applied to x.
   void AddClosedStiffness(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;

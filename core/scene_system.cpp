@@ -46,7 +46,7 @@ bool SceneModalSystem::Dissipates() const { return modal_damping_ || contacts_.A
 
 double SceneModalSystem::DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
   const double p = modal_damping_ ? modal_damping_->dot(v.cwiseProduct(v)) : 0.0;
-  return p + contacts_.DampingPower(x, v);
+  return contacts_.AddDampingPower(x, v, p);
 }
 
 double SceneModalSystem::ExternalPower(double t_s, const Eigen::VectorXd& v) const {
