@@ -6,6 +6,9 @@
 //                                        acceleration, dt = (dt_tenths / 10) * sharp bound
 // Pairs of equal accuracy are read off `shockmap compare` (README, "What accuracy costs").
 //   ReferenceRun/R_fref        the piecewise-modal reference (solution + sampling, no check)
+//   ExplicitModalStep/R_ftrunc one central-difference step of the paper's method alone (no
+//                              recording), the state carried from step to step;
+//                              s_per_unknown_step = time / modes
 //   BundleStep/rings           one central-difference step of scenes/bundle_hex.json with
 //                              `rings` rings (8: 217 pins, 4 360 coordinates, 4 915 zones), the
 //                              state carried from step to step from the shipped initial state;
@@ -93,6 +96,22 @@ void ReferenceRun(benchmark::State& state) {
   state.counters["transitions"] = transitions;
 }
 BENCHMARK(ReferenceRun)->ArgName("rfref")->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+void ExplicitModalStep(benchmark::State& state) {
+  const ImpactModel model =
+      BuildImpactModel(kProblem, Scheme::kExplicitModal, static_cast<double>(state.range(0)));
+  const double dt = 0.1 * model.bounds.dt_sharp_s;
+  NewmarkIntegrator integrator(NewmarkParameters::CentralDifference(), *model.system);
+  if (!integrator.Init(model.x0, model.v0)) state.SkipWithError("initial acceleration failed");
+  for (auto _ : state) {
+    if (!integrator.Step(dt)) state.SkipWithError("step failed");
+  }
+  benchmark::DoNotOptimize(integrator.X()[0]);
+  state.counters["modes"] = model.n_modes;
+  state.counters["s_per_unknown_step"] = benchmark::Counter(
+      model.n_dofs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(ExplicitModalStep)->ArgName("rftrunc")->Arg(300)->Arg(3000);
 
 Scene HexBundle(int rings) {
   std::ifstream in(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex.json");
