@@ -6,12 +6,25 @@
 //                                        acceleration, dt = (dt_tenths / 10) * sharp bound
 // Pairs of equal accuracy are read off `shockmap compare` (README, "What accuracy costs").
 //   ReferenceRun/R_fref        the piecewise-modal reference (solution + sampling, no check)
+//   ExplicitModalStep/R_ftrunc one central-difference step of the paper's method alone (no
+//                              recording), the state carried from step to step;
+//                              s_per_unknown_step = time / modes
+//   BundleStep/rings           one central-difference step of scenes/bundle_hex.json with
+//                              `rings` rings (8: 217 pins, 4 360 coordinates, 4 915 zones), the
+//                              state carried from step to step from the shipped initial state;
+//                              s_per_step_per_term = time / (coordinates + zones)
 
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
 #include "compare/comparison.h"
 #include "core/cantilever_impact.h"
+#include "core/scene_model.h"
 #include "core/transient_run.h"
+#include "formats/scene_file.h"
 #include "reference/reference_solver.h"
 
 namespace shockmap {
@@ -83,6 +96,51 @@ void ReferenceRun(benchmark::State& state) {
   state.counters["transitions"] = transitions;
 }
 BENCHMARK(ReferenceRun)->ArgName("rfref")->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+void ExplicitModalStep(benchmark::State& state) {
+  const ImpactModel model =
+      BuildImpactModel(kProblem, Scheme::kExplicitModal, static_cast<double>(state.range(0)));
+  const double dt = 0.1 * model.bounds.dt_sharp_s;
+  NewmarkIntegrator integrator(NewmarkParameters::CentralDifference(), *model.system);
+  if (!integrator.Init(model.x0, model.v0)) state.SkipWithError("initial acceleration failed");
+  for (auto _ : state) {
+    if (!integrator.Step(dt)) state.SkipWithError("step failed");
+  }
+  benchmark::DoNotOptimize(integrator.X()[0]);
+  state.counters["modes"] = model.n_modes;
+  state.counters["s_per_unknown_step"] = benchmark::Counter(
+      model.n_dofs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(ExplicitModalStep)->ArgName("rftrunc")->Arg(300)->Arg(3000);
+
+Scene HexBundle(int rings) {
+  std::ifstream in(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex.json");
+  nlohmann::json json = nlohmann::json::parse(in);
+  json["bundle"]["rings"] = rings;
+  json["outputs"] = nlohmann::json::object();  // Its outputs name pins of the full bundle.
+  const auto path = std::filesystem::temp_directory_path() / "shockmap_solver_bench_hex.json";
+  std::ofstream(path) << json.dump();
+  return LoadScene(path.string());
+}
+
+void BundleStep(benchmark::State& state) {
+  const Scene scene = HexBundle(static_cast<int>(state.range(0)));
+  SceneModel model = BuildSceneModel(scene);
+  const double dt = scene.solver.dt.Resolve(model.bounds);
+  NewmarkIntegrator integrator(NewmarkParameters::CentralDifference(), *model.system);
+  if (!integrator.Init(model.x0, model.v0)) state.SkipWithError("initial acceleration failed");
+  for (auto _ : state) {
+    if (!integrator.Step(dt)) state.SkipWithError("step failed");
+  }
+  benchmark::DoNotOptimize(integrator.X()[0]);
+  const double terms = model.system->Size() + static_cast<double>(scene.zones.size());
+  state.counters["pins"] = static_cast<double>(scene.beams.size() - 1);
+  state.counters["coordinates"] = model.system->Size();
+  state.counters["zones"] = static_cast<double>(scene.zones.size());
+  state.counters["s_per_step_per_term"] = benchmark::Counter(
+      terms, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BundleStep)->ArgName("rings")->DenseRange(1, 8)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace shockmap

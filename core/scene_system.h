@@ -7,19 +7,11 @@
 #include <optional>
 #include <vector>
 
+#include "core/contact_stations.h"
 #include "core/scene.h"
 #include "core/second_order_system.h"
 
 namespace shockmap {
-
-// One zone in modal coordinates. Offsets are the first coordinate of each beam's block in y
-// and z (-1 when absent: planar scenes, or a stop instead of beam b).
-struct ZoneTerm {
-  int a_y = -1, a_z = -1, b_y = -1, b_z = -1;
-  std::vector<double> phi_a, phi_b;  // Mode shapes at the zone's height (1/sqrt(kg)).
-  double normal_y = 1.0, normal_z = 0.0;
-  double gap_m = 0.0, stiffness_n_per_m = 0.0, damping_n_s_per_m = 0.0;
-};
 
 // A time-dependent generalized force shape * amplitude(t), for base motion and point forces.
 struct TimeLoad {
@@ -40,7 +32,7 @@ class SceneModalSystem final : public SecondOrderSystem {
   bool SolveAcceleration(double t_s, double beta_dt2, double gamma_dt,
                          const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
                          Eigen::VectorXd& a) override;
-  std::span<const double> LastContactForces() const override { return forces_; }
+  std::span<const double> LastContactForces() const override { return contacts_.Forces(); }
   // |t . (v_a - v_b)| at the zone's height, t = (-n_z, n_y) the in-plane tangent: for zones
   // whose beam a bends in both planes; NaN otherwise (planar scenes).
   double SlidingSpeed(int contact, const Eigen::VectorXd& v) const override;
@@ -54,18 +46,20 @@ class SceneModalSystem final : public SecondOrderSystem {
   // iteration on the operator: the sharp central-difference bound is 2 / sqrt of it.
   double StiffestOmegaSquared() const;
   const std::vector<ZoneTerm>& Zones() const { return zones_; }
+  // The zones as the step evaluates them: per-zone forces, relative displacements and
+  // velocities (core/contact_stations.h).
+  const ContactStations& Contacts() const { return contacts_; }
   const Eigen::VectorXd& OmegaSquared() const { return omega_squared_; }
 
  private:
-  // Normal displacement (and velocity) of a zone: n . (u_a - u_b) at its height.
-  double Normal(const ZoneTerm& z, const Eigen::VectorXd& x) const;
-  void AddZoneForce(const ZoneTerm& z, double force, Eigen::VectorXd& a) const;
-
   Eigen::VectorXd omega_squared_;
   std::optional<Eigen::VectorXd> modal_damping_;
-  std::vector<ZoneTerm> zones_;
+  std::vector<ZoneTerm> zones_;  // As given; the step uses contacts_.
+  ContactStations contacts_;
   std::vector<TimeLoad> loads_;
-  std::vector<double> forces_;
+  // 1 + gamma_dt * damping, for the gamma_dt it was computed with.
+  Eigen::VectorXd damping_divisor_;
+  double divisor_gamma_dt_ = -1.0;
 };
 
 }  // namespace shockmap

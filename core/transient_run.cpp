@@ -38,9 +38,12 @@ struct Recorder {
   const TransientOptions& options;
   TransientResult& result;
 
-  void Start(double dt_record) {
+  // `records`: how many records a run to the end takes; the histories hold that much from the
+  // start, so that recording never moves them.
+  void Start(double dt_record, std::size_t records) {
     auto init = [&](std::vector<UniformSignal>& v, std::size_t n) {
       v.assign(n, UniformSignal{0.0, dt_record, {}});
+      for (auto& s : v) s.values.reserve(records);
     };
     init(result.displacement_m, options.observed_rows.size());
     init(result.velocity_m_s, options.observed_rows.size());
@@ -53,6 +56,7 @@ struct Recorder {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
                       &result.energy.dissipated_j, &result.energy.external_work_j}) {
         *s = UniformSignal{0.0, dt_record, {}};
+        s->values.reserve(records);
       }
     }
   }
@@ -101,7 +105,8 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   const double dt = summary.dt_used_s;
 
   Recorder recorder{system, options, result};
-  recorder.Start(dt * options.record_stride);
+  recorder.Start(dt * options.record_stride,
+                 static_cast<std::size_t>(summary.steps_requested / options.record_stride) + 1);
   std::optional<ImpactTracker> impacts;
   auto finish = [&](RunStatus status, std::string message) {
     if (impacts && summary.steps_taken > 0) {
@@ -134,6 +139,8 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   }
   if (options.track_impact_statistics) impacts.emplace(system, options.impact_counting, v0);
 
+  // Steps until the next record and the next check: counted down, no division per step.
+  int to_record = options.record_stride, to_check = options.divergence_check_stride;
   for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
     if (!integrator.Step(dt)) {
       summary.steps_taken = n - 1;
@@ -160,10 +167,12 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
       work_magnitude += 0.5 * dt * (std::abs(load_power_before) + std::abs(power_now));
       load_power_before = power_now;
     }
-    if (n % options.record_stride == 0) {
+    if (--to_record == 0) {
+      to_record = options.record_stride;
       recorder.Record(integrator.X(), integrator.V(), dissipated, work);
     }
-    if (n % options.divergence_check_stride == 0 || n == summary.steps_requested) {
+    if (--to_check == 0 || n == summary.steps_requested) {
+      to_check = options.divergence_check_stride;
       const double total = system.EnergyAt(integrator.X(), integrator.V()).Total() + dissipated;
       if (!std::isfinite(total) || !integrator.X().allFinite()) {
         std::ostringstream msg;

@@ -23,6 +23,7 @@
 #include "core/beam_fe.h"
 #include "core/beam_properties.h"
 #include "core/cantilever_impact.h"
+#include "core/contact_stations.h"
 #include "core/end_condition.h"
 #include "core/full_fe_contact_system.h"
 #include "core/modal_basis.h"
@@ -961,6 +962,70 @@ TEST(TransientOptions, EndTimeFarBelowDtStillTakesOneStep) {
     EXPECT_GE(r.summary.steps_requested, 1);
     EXPECT_TRUE(std::isfinite(r.summary.dt_used_s));
   }
+}
+
+// Contact stations against the zone-by-zone formulas: F = max(0, k d + c d'), d = n . (u_a - u_b)
+// - gap, each zone's force r_z F_z taken off a, r_z = n . (phi_a on a's blocks - phi_b on b's),
+// and the closed stiffness sum_z k_z r_z r_z^T x. Three zones: two beams touching at two heights
+// (one damped) and a stop sharing a station with them.
+TEST(ContactStations, MatchTheZoneByZoneFormulas) {
+  const std::vector<double> low = {0.3, -0.7, 1.1}, high = {0.9, 0.4, -0.2};
+  auto zone = [](const std::vector<double>& phi, bool with_b, double ny, double nz) {
+    ZoneTerm z;
+    z.a_y = 0, z.a_z = 3, z.phi_a = phi;
+    if (with_b) z.b_y = 6, z.b_z = 9, z.phi_b = phi;
+    z.normal_y = ny, z.normal_z = nz;
+    z.gap_m = 1e-3, z.stiffness_n_per_m = 2e5;
+    return z;
+  };
+  std::vector<ZoneTerm> zones = {zone(low, true, 0.6, 0.8), zone(high, true, 1.0, 0.0),
+                                 zone(low, false, 0.0, -1.0)};
+  zones[0].damping_n_s_per_m = 40.0;
+  zones[0].gap_m = zones[1].gap_m = -0.01;  // Preloaded: closed at any state below.
+  ContactStations stations(zones);
+  Eigen::VectorXd x(12), v(12);
+  for (int i = 0; i < 12; ++i) {
+    x[i] = 0.001 * std::sin(1.0 + 2.3 * i);
+    v[i] = 0.2 * std::cos(0.5 + 1.7 * i);
+  }
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(12), expected_a = a, stiffness = a, expected_k = a;
+  stations.AddForces(x, v, a);
+  stations.AddClosedStiffness(x, stiffness);
+  int closed = 0;
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const ZoneTerm& z = zones[i];
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(12);
+    for (int m = 0; m < 3; ++m) {
+      r[z.a_y + m] += z.normal_y * z.phi_a[m];
+      r[z.a_z + m] += z.normal_z * z.phi_a[m];
+      if (z.b_y >= 0) r[z.b_y + m] -= z.normal_y * z.phi_b[m];
+      if (z.b_z >= 0) r[z.b_z + m] -= z.normal_z * z.phi_b[m];
+    }
+    const double d = r.dot(x) - z.gap_m;
+    const double f =
+        d > 0 ? std::max(0.0, z.stiffness_n_per_m * d + z.damping_n_s_per_m * r.dot(v)) : 0.0;
+    closed += d > 0 ? 1 : 0;
+    EXPECT_NEAR(stations.Forces()[i], f, 1e-12 * z.stiffness_n_per_m) << "zone " << i;
+    expected_a -= f * r;
+    expected_k += z.stiffness_n_per_m * r * r.dot(x);
+    // u_a - u_b and v_a - v_b at the zone's height, per direction.
+    Eigen::VectorXd ry = r, rz = r;
+    for (int m = 0; m < 3; ++m) {
+      ry[z.a_y + m] = z.phi_a[m], ry[z.a_z + m] = 0.0, rz[z.a_y + m] = 0.0;
+      rz[z.a_z + m] = z.phi_a[m];
+      if (z.b_y >= 0) ry[z.b_y + m] = -z.phi_b[m], ry[z.b_z + m] = 0.0;
+      if (z.b_y >= 0) rz[z.b_y + m] = 0.0, rz[z.b_z + m] = -z.phi_b[m];
+    }
+    const auto u = stations.RelativeDisplacement(static_cast<int>(i));
+    const auto w = stations.RelativeVelocity(static_cast<int>(i), v);
+    EXPECT_NEAR(u[0], ry.dot(x), 1e-15) << "zone " << i;
+    EXPECT_NEAR(u[1], rz.dot(x), 1e-15) << "zone " << i;
+    EXPECT_NEAR(w[0], ry.dot(v), 1e-14) << "zone " << i;
+    EXPECT_NEAR(w[1], rz.dot(v), 1e-14) << "zone " << i;
+  }
+  EXPECT_GE(closed, 2) << "the state must close zones for the check to mean something";
+  EXPECT_LE((a - expected_a).norm(), 1e-12 * expected_a.norm());
+  EXPECT_LE((stiffness - expected_k).norm(), 1e-12 * expected_k.norm());
 }
 
 }  // namespace

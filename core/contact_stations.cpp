@@ -1,0 +1,346 @@
+#include "core/contact_stations.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <tuple>
+
+namespace shockmap {
+namespace {
+
+// Two doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic).
+using Pair = double __attribute__((vector_size(16)));
+
+Pair Load(const double* p) {
+  Pair r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+
+// phi . p[0 .. n), summed in the order of Eigen's reduction of row.dot(x) on 2-wide packets
+// (SSE2): two pairs of partial sums over blocks of four, folded, then the tail. A zone thus reads
+// the same displacement as a row of the same values does (the observed outputs, the canonical
+// problem's histories before it became a scene).
+double Dot(const double* f, const double* p, int n) {
+  if (n < 2) return n == 1 ? f[0] * p[0] : 0.0;
+  const int pairs_end = n & ~1, quads_end = n & ~3;
+  Pair s = Load(f) * Load(p);
+  if (pairs_end > 2) {
+    Pair t = Load(f + 2) * Load(p + 2);
+    for (int i = 4; i < quads_end; i += 4) {
+      s += Load(f + i) * Load(p + i);
+      t += Load(f + i + 2) * Load(p + i + 2);
+    }
+    s += t;
+    if (pairs_end > quads_end) s += Load(f + quads_end) * Load(p + quads_end);
+  }
+  double sum = s[0] + s[1];
+  for (int i = pairs_end; i < n; ++i) sum += f[i] * p[i];
+  return sum;
+}
+
+void Store(double* p, Pair v) { std::memcpy(p, &v, sizeof v); }
+
+// out[h] = sum_i s[i * stride + h] p[i] for the 2P stations h of one lane group, each sum in
+// Dot's order, so that a station reads exactly what Dot of its row gives; the sums of the group
+// proceed side by side, P pairs of stations per instruction stream.
+template <int P>
+void EvaluateLanes(const double* s, int stride, int n, const double* p, double* out) {
+  auto term = [&](int i, int k) { return Load(s + i * stride + 2 * k) * Pair{p[i], p[i]}; };
+  Pair s0[P], s1[P], t0[P], t1[P];
+  if (n < 2) {
+    for (int k = 0; k < P; ++k) Store(out + 2 * k, n == 1 ? term(0, k) : Pair{0.0, 0.0});
+    return;
+  }
+  const int pairs_end = n & ~1, quads_end = n & ~3;
+  for (int k = 0; k < P; ++k) {
+    s0[k] = term(0, k);
+    s1[k] = term(1, k);
+  }
+  if (pairs_end > 2) {
+    for (int k = 0; k < P; ++k) {
+      t0[k] = term(2, k);
+      t1[k] = term(3, k);
+    }
+    for (int i = 4; i < quads_end; i += 4) {
+      for (int k = 0; k < P; ++k) {
+        s0[k] += term(i, k);
+        s1[k] += term(i + 1, k);
+        t0[k] += term(i + 2, k);
+        t1[k] += term(i + 3, k);
+      }
+    }
+    for (int k = 0; k < P; ++k) {
+      s0[k] += t0[k];
+      s1[k] += t1[k];
+    }
+    if (pairs_end > quads_end) {
+      for (int k = 0; k < P; ++k) {
+        s0[k] += term(quads_end, k);
+        s1[k] += term(quads_end + 1, k);
+      }
+    }
+  }
+  for (int k = 0; k < P; ++k) s0[k] += s1[k];
+  for (int i = pairs_end; i < n; ++i) {
+    for (int k = 0; k < P; ++k) s0[k] += term(i, k);
+  }
+  for (int k = 0; k < P; ++k) Store(out + 2 * k, s0[k]);
+}
+
+// Lanes per group for a beam with `count` stations: its width is a multiple of it.
+int LanesFor(int count) { return count <= 2 ? count : 4; }
+
+// The `width` stations of one beam at p (its block in one direction), in groups of lanes.
+void EvaluateBlock(const double* shapes, int modes, int width, const double* p, double* out) {
+  const int lanes = LanesFor(width);
+  if (lanes == 1) {
+    out[0] = Dot(shapes, p, modes);
+    return;
+  }
+  for (int g = 0; g < width; g += lanes) {
+    if (lanes == 2) {
+      EvaluateLanes<1>(shapes + g, width, modes, p, out + g);
+    } else {
+      EvaluateLanes<2>(shapes + g, width, modes, p, out + g);
+    }
+  }
+}
+
+// A station being collected: the beam's block and its distinct shapes in order of appearance.
+struct BlockDraft {
+  std::vector<const std::vector<double>*> shapes;
+  std::map<std::vector<double>, int> index;
+  int Add(const std::vector<double>& phi) {
+    const auto [it, added] = index.emplace(phi, static_cast<int>(shapes.size()));
+    if (added) shapes.push_back(&phi);
+    return it->second;
+  }
+};
+
+}  // namespace
+
+ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
+  // Blocks keyed by their coordinates (beam order); each zone side names (block, station).
+  std::map<std::pair<int, int>, BlockDraft> drafts;
+  std::vector<std::array<std::tuple<int, int, int>, 2>> sides;
+  for (const ZoneTerm& z : zones) {
+    std::array<std::tuple<int, int, int>, 2> side{std::tuple{-1, -1, -1}, std::tuple{-1, -1, -1}};
+    side[0] = {z.a_y, z.a_z, drafts[{z.a_y, z.a_z}].Add(z.phi_a)};
+    if (z.b_y >= 0 || z.b_z >= 0) side[1] = {z.b_y, z.b_z, drafts[{z.b_y, z.b_z}].Add(z.phi_b)};
+    sides.push_back(side);
+  }
+  std::map<std::pair<int, int>, int> first_slot;
+  std::map<std::vector<double>, int> shared;  // Shape matrices already stored.
+  int slots = 1;                              // Slot 0: the base.
+  slot_row_ = {-1};
+  slot_y_ = {-1};
+  slot_z_ = {-1};
+  slot_modes_ = {0};
+  for (const auto& [coordinates, draft] : drafts) {
+    Block b;
+    b.y = coordinates.first;
+    b.z = coordinates.second;
+    b.modes = static_cast<int>(draft.shapes.front()->size());
+    b.count = static_cast<int>(draft.shapes.size());
+    const int lanes = LanesFor(b.count);
+    b.width = (b.count + lanes - 1) / lanes * lanes;
+    b.first = slots;
+    std::vector<double> matrix(static_cast<std::size_t>(b.modes) * b.width, 0.0);
+    for (int h = 0; h < b.count; ++h) {
+      for (int i = 0; i < b.modes; ++i) matrix[i * b.width + h] = (*draft.shapes[h])[i];
+    }
+    matrix.push_back(b.modes);  // The key also holds the shape of the matrix.
+    const auto [it, added] = shared.emplace(matrix, static_cast<int>(shapes_.size()));
+    if (added) shapes_.insert(shapes_.end(), matrix.begin(), matrix.end() - 1);
+    b.shapes = it->second;
+    for (int h = 0; h < b.width; ++h) {
+      slot_row_.push_back(h < b.count ? static_cast<int>(rows_.size()) : -1);
+      if (h < b.count) rows_.insert(rows_.end(), draft.shapes[h]->begin(), draft.shapes[h]->end());
+      slot_y_.push_back(b.y);
+      slot_z_.push_back(b.z);
+      slot_modes_.push_back(b.modes);
+    }
+    first_slot[coordinates] = b.first;
+    slots += b.width;
+    blocks_.push_back(b);
+  }
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const ZoneTerm& z = zones[i];
+    auto slot_of = [&](const std::tuple<int, int, int>& s) {
+      const auto [y, zz, station] = s;
+      return station < 0 ? 0 : first_slot.at({y, zz}) + station;
+    };
+    slot_a_.push_back(slot_of(sides[i][0]));
+    slot_b_.push_back(slot_of(sides[i][1]));
+    normal_y_.push_back(z.normal_y);
+    normal_z_.push_back(z.normal_z);
+    gap_.push_back(z.gap_m);
+    stiffness_.push_back(z.stiffness_n_per_m);
+    damping_.push_back(z.damping_n_s_per_m);
+    if (z.damping_n_s_per_m != 0.0) damped_.push_back(static_cast<int>(i));
+  }
+  for (Slots* s : {&displacement_, &velocity_, &scratch_}) {
+    s->y.assign(slots, 0.0);
+    s->z.assign(slots, 0.0);
+  }
+  velocity_step_.assign(slots, 0);
+  force_.assign(zones.size(), 0.0);
+  closed_.assign(zones.size(), 0);
+}
+
+void ContactStations::Evaluate(const Eigen::VectorXd& x, Slots& out) const {
+  for (const Block& b : blocks_) {
+    const double* shapes = shapes_.data() + b.shapes;
+    if (b.y >= 0) EvaluateBlock(shapes, b.modes, b.width, x.data() + b.y, out.y.data() + b.first);
+    if (b.z >= 0) EvaluateBlock(shapes, b.modes, b.width, x.data() + b.z, out.z.data() + b.first);
+  }
+}
+
+// n . (u_a - u_b), in the order the zone-by-zone sum used (the base reads zero).
+double ContactStations::Normal(int zone, const Slots& u) const {
+  const int a = slot_a_[zone], b = slot_b_[zone];
+  const double ny = normal_y_[zone], nz = normal_z_[zone];
+  return ny * u.y[a] + nz * u.z[a] - ny * u.y[b] - nz * u.z[b];
+}
+
+std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& state) const {
+  if (slot == 0) return {0.0, 0.0};
+  const double* row = rows_.data() + slot_row_[slot];
+  const int n = slot_modes_[slot];
+  return {Dot(row, state.data() + slot_y_[slot], n),
+          slot_z_[slot] >= 0 ? Dot(row, state.data() + slot_z_[slot], n) : 0.0};
+}
+
+double ContactStations::NormalAt(int zone, const Eigen::VectorXd& state) const {
+  const auto ua = SlotAt(slot_a_[zone], state), ub = SlotAt(slot_b_[zone], state);
+  const double ny = normal_y_[zone], nz = normal_z_[zone];
+  return ny * ua[0] + nz * ua[1] - ny * ub[0] - nz * ub[1];
+}
+
+void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
+  if (velocity_step_[slot] == step_) return;
+  velocity_step_[slot] = step_;
+  const auto w = SlotAt(slot, v);
+  velocity_.y[slot] = w[0];
+  velocity_.z[slot] = w[1];
+}
+
+// Inlined: it runs twice for every closed zone at every step.
+[[gnu::always_inline]] inline void ContactStations::AddToSlot(int slot, double force_y,
+                                                              double force_z,
+                                                              Eigen::VectorXd& a) const {
+  if (slot == 0) return;
+  const double* row = rows_.data() + slot_row_[slot];
+  const int n = slot_modes_[slot];
+  if (slot_y_[slot] >= 0) {
+    double* p = a.data() + slot_y_[slot];
+    for (int i = 0; i < n; ++i) p[i] += force_y * row[i];
+  }
+  if (slot_z_[slot] >= 0) {
+    double* p = a.data() + slot_z_[slot];
+    for (int i = 0; i < n; ++i) p[i] += force_z * row[i];
+  }
+}
+
+void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                Eigen::VectorXd& a) {
+  Evaluate(x, displacement_);
+  ++step_;
+  // Plain pointers: the loop is the step's hottest, and the stores into a must not make the
+  // compiler reload the arrays.
+  const int* const slot_a = slot_a_.data();
+  const int* const slot_b = slot_b_.data();
+  const double* const ny = normal_y_.data();
+  const double* const nz = normal_z_.data();
+  const double* const gap = gap_.data();
+  const double* const k = stiffness_.data();
+  const double* const c = damping_.data();
+  const double* const uy = displacement_.y.data();
+  const double* const uz = displacement_.z.data();
+  double* const force = force_.data();
+  // First the penalty forces and the list of closed zones, without a branch on contact (zones
+  // open and close at random, a branch would be mispredicted half the time); then the closed
+  // zones' damping and projection, in zone order.
+  int* const closed = closed_.data();
+  int n_closed = 0;
+  const int zones = static_cast<int>(force_.size());
+  for (int i = 0; i < zones; ++i) {
+    const int sa = slot_a[i], sb = slot_b[i];
+    // n . (u_a - u_b) as Normal() sums it.
+    const double penetration =
+        ny[i] * uy[sa] + nz[i] * uz[sa] - ny[i] * uy[sb] - nz[i] * uz[sb] - gap[i];
+    force[i] = k[i] * std::max(0.0, penetration);  // 0 when open (or not a number).
+    closed[n_closed] = i;
+    n_closed += static_cast<int>(penetration > 0.0);
+  }
+  for (int j = 0; j < n_closed; ++j) {
+    const int i = closed[j], sa = slot_a[i], sb = slot_b[i];
+    if (c[i] != 0.0) {
+      VelocityAt(sa, v);
+      VelocityAt(sb, v);
+      force[i] = std::max(0.0, force[i] + c[i] * Normal(i, velocity_));
+    }
+    const double f = force[i];
+    AddToSlot(sa, -f * ny[i], -f * nz[i], a);
+    AddToSlot(sb, f * ny[i], f * nz[i], a);
+  }
+}
+
+std::array<double, 2> ContactStations::RelativeDisplacement(int zone) const {
+  const int a = slot_a_[zone], b = slot_b_[zone];
+  return {displacement_.y[a] - displacement_.y[b], displacement_.z[a] - displacement_.z[b]};
+}
+
+std::array<double, 2> ContactStations::RelativeVelocity(int zone, const Eigen::VectorXd& v) const {
+  const auto wa = SlotAt(slot_a_[zone], v), wb = SlotAt(slot_b_[zone], v);
+  return {wa[0] - wb[0], wa[1] - wb[1]};
+}
+
+double ContactStations::ContactEnergy(const Eigen::VectorXd& x) const {
+  Evaluate(x, scratch_);
+  double e = 0.0;
+  for (std::size_t i = 0; i < force_.size(); ++i) {
+    const double d = Normal(static_cast<int>(i), scratch_) - gap_[i];
+    if (d > 0.0) e += 0.5 * stiffness_[i] * d * d;
+  }
+  return e;
+}
+
+double ContactStations::AddDampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                                        double p) const {
+  for (int i : damped_) {
+    const double d = NormalAt(i, x) - gap_[i];
+    if (d <= 0.0) continue;
+    // d/dt (kinetic + strain + spring) = (k d - F) d': what leaves is (F - k d) d'.
+    const double rate = NormalAt(i, v);
+    const double force = std::max(0.0, stiffness_[i] * d + damping_[i] * rate);
+    p += (force - stiffness_[i] * d) * rate;
+  }
+  return p;
+}
+
+void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  Evaluate(x, scratch_);
+  // Per station, the generalized force k_z (r_z . x) n with the sign of its side.
+  Slots g;
+  g.y.assign(scratch_.y.size(), 0.0);
+  g.z.assign(scratch_.z.size(), 0.0);
+  for (std::size_t i = 0; i < force_.size(); ++i) {
+    const double f = stiffness_[i] * Normal(static_cast<int>(i), scratch_);
+    g.y[slot_a_[i]] += f * normal_y_[i];
+    g.z[slot_a_[i]] += f * normal_z_[i];
+    g.y[slot_b_[i]] -= f * normal_y_[i];
+    g.z[slot_b_[i]] -= f * normal_z_[i];
+  }
+  for (std::size_t s = 1; s < g.y.size(); ++s) {
+    if (slot_row_[s] < 0) continue;
+    const double* row = rows_.data() + slot_row_[s];
+    for (int i = 0; i < slot_modes_[s]; ++i) {
+      y[slot_y_[s] + i] += g.y[s] * row[i];
+      if (slot_z_[s] >= 0) y[slot_z_[s] + i] += g.z[s] * row[i];
+    }
+  }
+}
+
+}  // namespace shockmap
