@@ -17,8 +17,9 @@ ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const Referenc
   run.convergence = MeasureReferenceConvergence(problem, solve_options, solution, window_s);
   // The output step, shortened so that the last sample falls on the window's end.
   const double dt = window_s / std::ceil(window_s / solution.OutputStep());
-  run.tip_m = solution.SampleTipDisplacement(dt, window_s);
-  run.force_n = solution.SampleContactForce(dt, window_s);
+  ReferenceHistories histories = solution.SampleHistories(dt, window_s);
+  run.tip_m = std::move(histories.tip_m);
+  run.force_n = std::move(histories.force_n);
   run.shocks = SegmentShocks(run.force_n, shocks, window_s);
   run.wall_s = timer.WallSeconds();
   return run;
