@@ -1,6 +1,7 @@
 #include "compare/reference_run.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/cpu_timer.h"
 
@@ -22,6 +23,16 @@ ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const Referenc
   run.force_n = std::move(histories.force_n);
   run.shocks = SegmentShocks(run.force_n, shocks, window_s);
   run.wall_s = timer.WallSeconds();
+  return run;
+}
+
+ReferenceRun WithTipSpectrum(ReferenceRun run, const PsdOptions& options, double window_s) {
+  try {
+    run.tip_spectrum =
+        ReferenceSpectrum{options, window_s, OneSidedPsd(run.tip_m, 0.0, window_s, options)};
+  } catch (const std::invalid_argument&) {
+    // Left unset: each point scored against it meets the same error and reports it.
+  }
   return run;
 }
 
