@@ -54,9 +54,14 @@ void RotatingModalSum::Start(const Eigen::VectorXd& cos_weight, const Eigen::Vec
 void RotatingModalSum::Anchor() {
   const double tau = tau0_s_ + static_cast<double>(k_) * step_s_;
   const double decay = std::exp(-decay_per_s_ * tau);
-  const Eigen::ArrayXd c = (omega_ * tau).cos(), s = (omega_ * tau).sin();
-  z_re_ = decay * (weight_re_ * c - weight_im_ * s);
-  z_im_ = decay * (weight_re_ * s + weight_im_ * c);
+  z_re_.resize(omega_.size());
+  z_im_.resize(omega_.size());
+  for (Eigen::Index i = 0; i < omega_.size(); ++i) {
+    const double w = omega_[i] * tau;
+    const double c = std::cos(w), s = std::sin(w);  // One sincos.
+    z_re_[i] = decay * (weight_re_[i] * c - weight_im_[i] * s);
+    z_im_[i] = decay * (weight_re_[i] * s + weight_im_[i] * c);
+  }
 }
 
 double RotatingModalSum::Next() {

@@ -17,7 +17,7 @@ namespace shockmap {
 
 class RotatingModalSum {
  public:
-  static constexpr int kAnchorEvery = 256;
+  static constexpr int kAnchorEvery = 512;
 
   // omega_rad_s: the terms' angular frequencies; decay_per_s: d >= 0; step_s: h > 0.
   RotatingModalSum(const Eigen::VectorXd& omega_rad_s, double decay_per_s, double step_s);
