@@ -15,12 +15,12 @@ ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const Referenc
   const ReferenceSolution solution = SolveReference(problem, solve_options);
   ReferenceRun run;
   run.summary = solution.Summary();
-  run.convergence = MeasureReferenceConvergence(problem, solve_options, solution, window_s);
   // The output step, shortened so that the last sample falls on the window's end.
   const double dt = window_s / std::ceil(window_s / solution.OutputStep());
   ReferenceHistories histories = solution.SampleHistories(dt, window_s);
   run.tip_m = std::move(histories.tip_m);
   run.force_n = std::move(histories.force_n);
+  run.convergence = MeasureReferenceConvergence(problem, solve_options, run.tip_m, window_s);
   run.shocks = SegmentShocks(run.force_n, shocks, window_s);
   run.wall_s = timer.WallSeconds();
   return run;
