@@ -68,8 +68,12 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
     result.message = "the reference truncations differ by more than reference_tolerance";
     return result;
   }
-  result.err = SpectralError(result.histories.displacement_m[0], result.reference->tip_m, 0.0,
-                             options.window_s, options.psd);
+  const UniformSignal& tip = result.histories.displacement_m[0];
+  const std::optional<ReferenceSpectrum>& spectrum = result.reference->tip_spectrum;
+  result.err =
+      spectrum && spectrum->options == options.psd && spectrum->window_s == options.window_s
+          ? SpectralError(tip, spectrum->psd, 0.0, options.window_s, options.psd)
+          : SpectralError(tip, result.reference->tip_m, 0.0, options.window_s, options.psd);
   result.srf = DefinedImpulseRatio(options.srf_definition, result.histories.contact_force_n[0],
                                    result.shocks_numerical, result.reference->force_n,
                                    result.reference->shocks, shocks, options.window_s);

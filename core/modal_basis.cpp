@@ -64,21 +64,20 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz) {
 }
 
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n) {
-  return FirstModes(AllModes(model), n);
+  ModalBasis all = AllModes(model);
+  return n >= all.NumModes() ? all : FirstModes(all, n);
 }
 
-ModalBasis ModesBelow(ModalBasis basis, double f_trunc_hz) {
+ModalBasis ModesBelow(const ModalBasis& basis, double f_trunc_hz) {
   const double omega_trunc = 2.0 * std::numbers::pi * f_trunc_hz;
   int n = 0;
   while (n < basis.NumModes() && basis.omega_rad_s[n] <= omega_trunc) ++n;
-  return FirstModes(std::move(basis), n);
+  return FirstModes(basis, n);
 }
 
-ModalBasis FirstModes(ModalBasis basis, int n) {
+ModalBasis FirstModes(const ModalBasis& basis, int n) {
   const int kept = std::min(n, basis.NumModes());
-  basis.omega_rad_s.conservativeResize(kept);
-  basis.shapes.conservativeResize(Eigen::NoChange, kept);
-  return basis;
+  return {basis.omega_rad_s.head(kept), basis.shapes.leftCols(kept)};
 }
 
 }  // namespace shockmap

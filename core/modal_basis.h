@@ -28,8 +28,9 @@ ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);
 
 // The same selections from a basis already solved for (one eigensolution serving several):
 // the modes with f <= f_trunc_hz, and the first n (all of them when n exceeds its size).
-ModalBasis ModesBelow(ModalBasis basis, double f_trunc_hz);
-ModalBasis FirstModes(ModalBasis basis, int n);
+// Only the kept modes are copied.
+ModalBasis ModesBelow(const ModalBasis& basis, double f_trunc_hz);
+ModalBasis FirstModes(const ModalBasis& basis, int n);
 
 // What the dense generalized eigenproblem behind ComputeModalBasis and ComputeLowestModes costs
 // on a model of `unknowns` unknowns: about four unknowns^2 matrices of doubles held at once and

@@ -10,6 +10,7 @@
 
 #include "core/beam_fe.h"
 #include "core/modal_basis.h"
+#include "core/modal_basis_cache.h"
 
 namespace shockmap {
 namespace {
@@ -46,15 +47,22 @@ struct Truncation {
   double Hz(double f1_hz) const { return hz ? *hz : ratio * f1_hz; }
 };
 
+// Beams with equal keys have one FE model.
+std::string ModelKey(const SceneBeam& b) {
+  std::ostringstream key;
+  key.precision(17);
+  key << b.length_m << ' ' << b.ei_n_m2 << ' ' << b.rho_a_kg_per_m << ' ' << b.n_elements << ' '
+      << ToString(b.at_zero) << ' ' << ToString(b.at_length) << ' ' << b.spring_at_zero_n_per_m
+      << ' ' << b.spring_at_length_n_per_m;
+  return key.str();
+}
+
 // Beams with equal keys share one modal basis.
 std::string BasisKey(const SceneBeam& b, const Truncation& t,
                      const std::vector<double>& static_heights) {
   std::ostringstream key;
   key.precision(17);
-  key << b.length_m << ' ' << b.ei_n_m2 << ' ' << b.rho_a_kg_per_m << ' ' << b.n_elements << ' '
-      << ToString(b.at_zero) << ' ' << ToString(b.at_length) << ' ' << b.spring_at_zero_n_per_m
-      << ' ' << b.spring_at_length_n_per_m << ' ' << (t.hz ? "hz " : "ratio ")
-      << (t.hz ? *t.hz : t.ratio);
+  key << ModelKey(b) << ' ' << (t.hz ? "hz " : "ratio ") << (t.hz ? *t.hz : t.ratio);
   for (double h : static_heights) key << ' ' << h;
   return key.str();
 }
@@ -85,8 +93,10 @@ BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
   m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
   AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
   AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
-  // One eigensolution gives the first elastic frequency and the truncated basis.
-  const ModalBasis all = ComputeLowestModes(m.fe, m.fe.Size());
+  // One eigensolution (per mesh and thread) gives the first elastic frequency and the
+  // truncated basis.
+  const std::shared_ptr<const ModalBasis> solved = AllModesCached(ModelKey(b), m.fe);
+  const ModalBasis& all = *solved;
   const double f1 = FirstElasticFrequencyHz(all.omega_rad_s);
   m.f_trunc_hz = truncation.Hz(f1);
   m.basis = ModesBelow(all, m.f_trunc_hz);

@@ -105,8 +105,10 @@ double CanonicalStudy::ReferenceCost(const Point& point) const {
 CanonicalStudy::Reference CanonicalStudy::ComputeReference(const Point& point) const {
   const ComparisonOptions o = OptionsOf(spec_, point);
   return {ReferenceKey(spec_, point), point.r_k, point.window_s,
-          std::make_shared<const ReferenceRun>(ComputeReferenceRun(
-              ProblemOf(spec_, point), o.reference, o.window_s, o.Shocks(spec_.problem.F1Hz())))};
+          std::make_shared<const ReferenceRun>(
+              WithTipSpectrum(ComputeReferenceRun(ProblemOf(spec_, point), o.reference, o.window_s,
+                                                  o.Shocks(spec_.problem.F1Hz())),
+                              o.psd, o.window_s))};
 }
 
 std::optional<StoredReference<CanonicalStudy::Reference>> CanonicalStudy::FindReference(
@@ -115,7 +117,9 @@ std::optional<StoredReference<CanonicalStudy::Reference>> CanonicalStudy::FindRe
   if (!row) return std::nullopt;
   return StoredReference<Reference>{
       row->reference_id,
-      {key, row->r_k, row->window_s, std::make_shared<const ReferenceRun>(FromReferenceRow(*row))}};
+      {key, row->r_k, row->window_s,
+       std::make_shared<const ReferenceRun>(
+           WithTipSpectrum(FromReferenceRow(*row), spec_.scoring.psd, row->window_s))}};
 }
 
 std::int64_t CanonicalStudy::StoreReference(StudyDatabase& db, const Reference& reference,
@@ -180,7 +184,8 @@ CanonicalStudy::Reference CanonicalStudy::DecodeReference(ByteReader& in) const 
     *v = in.Get<double>();
   }
   run.wall_s = in.Get<double>();
-  reference.run = std::make_shared<const ReferenceRun>(std::move(run));
+  reference.run = std::make_shared<const ReferenceRun>(
+      WithTipSpectrum(std::move(run), spec_.scoring.psd, reference.window_s));
   return reference;
 }
 

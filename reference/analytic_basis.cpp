@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_integration.h>
 
+#include <cassert>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -63,6 +64,7 @@ AnalyticBasis MakeAnalyticBasis(const BeamProperties& beam, double kappa, double
       beam.rho_a_kg_per_m * beam.length_m *
       (raw.array().square().colwise() * Weights(quadrature).array()).colwise().sum().transpose();
   basis.scale = norm2.cwiseSqrt().cwiseInverse();
+  basis.on_nodes = raw * basis.scale.asDiagonal();  // phi_j = scale_j W_j, as Phi computes it.
   basis.tip.resize(n);
   for (int i = 0; i < n; ++i) basis.tip[i] = basis.Phi(i, 1.0);
   return basis;
@@ -70,10 +72,10 @@ AnalyticBasis MakeAnalyticBasis(const BeamProperties& beam, double kappa, double
 
 Eigen::MatrixXd MassProjection(const BeamProperties& beam, const AnalyticBasis& to,
                                const AnalyticBasis& from, const BeamQuadrature& quadrature) {
-  const Eigen::MatrixXd s_to = SampleShapes(to, quadrature);
-  const Eigen::MatrixXd s_from = SampleShapes(from, quadrature);
+  assert(to.on_nodes.rows() == static_cast<Eigen::Index>(quadrature.xi.size()) &&
+         from.on_nodes.rows() == to.on_nodes.rows());
   return beam.rho_a_kg_per_m * beam.length_m *
-         (s_to.transpose() * Weights(quadrature).asDiagonal() * s_from);
+         (to.on_nodes.transpose() * Weights(quadrature).asDiagonal() * from.on_nodes);
 }
 
 Eigen::VectorXd ProjectDeflection(const BeamProperties& beam, const AnalyticBasis& basis,
@@ -83,8 +85,8 @@ Eigen::VectorXd ProjectDeflection(const BeamProperties& beam, const AnalyticBasi
   for (std::size_t k = 0; k < quadrature.xi.size(); ++k) {
     weighted_u[static_cast<Eigen::Index>(k)] = quadrature.weight[k] * u_of_xi(quadrature.xi[k]);
   }
-  return beam.rho_a_kg_per_m * beam.length_m *
-         (SampleShapes(basis, quadrature).transpose() * weighted_u);
+  assert(basis.on_nodes.rows() == weighted_u.size());
+  return beam.rho_a_kg_per_m * beam.length_m * (basis.on_nodes.transpose() * weighted_u);
 }
 
 }  // namespace shockmap

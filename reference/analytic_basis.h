@@ -26,6 +26,9 @@ struct AnalyticBasis {
   // phi_i(x) = scale_i W_i(b_i x / L) has integral of rho A phi_i^2 over the beam equal to 1.
   Eigen::VectorXd scale;  // 1 / sqrt(kg)
   Eigen::VectorXd tip;    // phi_i(L), 1 / sqrt(kg)
+  // phi_j at node k of the quadrature the basis was made with (nodes x modes), sampled once
+  // for its normalization and every projection.
+  Eigen::MatrixXd on_nodes;
 
   int NumModes() const { return static_cast<int>(shapes.size()); }
   double Phi(int i, double xi) const { return scale[i] * shapes[i].Value(xi); }
@@ -36,10 +39,12 @@ AnalyticBasis MakeAnalyticBasis(const BeamProperties& beam, double kappa, double
                                 const BeamQuadrature& quadrature);
 
 // P_ij = integral of rho A phi^to_i phi^from_j: maps modal coordinates of `from` onto `to`.
+// Both bases were made with `quadrature`.
 Eigen::MatrixXd MassProjection(const BeamProperties& beam, const AnalyticBasis& to,
                                const AnalyticBasis& from, const BeamQuadrature& quadrature);
 
-// c_i = integral of rho A phi_i(x) u(x) dx for a deflection u given as a function of xi = x / L.
+// c_i = integral of rho A phi_i(x) u(x) dx for a deflection u given as a function of xi = x / L;
+// the basis was made with `quadrature`.
 Eigen::VectorXd ProjectDeflection(const BeamProperties& beam, const AnalyticBasis& basis,
                                   const std::function<double(double)>& u_of_xi,
                                   const BeamQuadrature& quadrature);

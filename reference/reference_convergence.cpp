@@ -7,20 +7,18 @@ namespace shockmap {
 
 ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
                                                  const ReferenceOptions& options,
-                                                 const ReferenceSolution& reference,
-                                                 double window_s, double ratio) {
+                                                 const UniformSignal& tip, double window_s,
+                                                 double ratio) {
   ReferenceOptions check_options = options;
   check_options.r_fref = std::max(1.0, options.r_fref / ratio);
   check_options.end_time_s = window_s;
   const ReferenceSolution check = SolveReference(problem, check_options);
 
-  const double dt = reference.OutputStep();
-  const UniformSignal a = reference.SampleTipDisplacement(dt, window_s);
-  const UniformSignal b = check.SampleTipDisplacement(dt, window_s);
+  const UniformSignal b = check.SampleTipDisplacement(tip.dt_s, tip.EndTime());
   double max_diff = 0.0, max_abs = 0.0;
-  for (std::size_t i = 0; i < a.values.size(); ++i) {
-    max_diff = std::max(max_diff, std::abs(a.values[i] - b.values[i]));
-    max_abs = std::max(max_abs, std::abs(a.values[i]));
+  for (std::size_t i = 0; i < tip.values.size(); ++i) {
+    max_diff = std::max(max_diff, std::abs(tip.values[i] - b.values[i]));
+    max_abs = std::max(max_abs, std::abs(tip.values[i]));
   }
   return {options.r_fref, check_options.r_fref, max_abs > 0.0 ? max_diff / max_abs : 0.0,
           check.Summary().wall_s};

@@ -15,10 +15,12 @@ struct ReferenceConvergence {
 };
 
 // The coarser truncation is r_fref / ratio; its error dominates the difference, so the figure
-// is an upper estimate of the finer reference's own error.
+// is an upper estimate of the finer reference's own error. `tip`: the reference's tip over
+// [0, window_s], as sampled for its output; the check is sampled at the same instants, so the
+// reference is not sampled twice.
 ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
                                                  const ReferenceOptions& options,
-                                                 const ReferenceSolution& reference,
-                                                 double window_s, double ratio = 3.0);
+                                                 const UniformSignal& tip, double window_s,
+                                                 double ratio = 3.0);
 
 }  // namespace shockmap

@@ -15,6 +15,7 @@
 #include "core/cpu_timer.h"
 #include "core/validity.h"
 #include "reference/analytic_basis.h"
+#include "reference/rotating_modal_sum.h"
 
 namespace shockmap {
 
@@ -93,21 +94,48 @@ double ReferenceSolution::ContactForce(double t_s) const {
   return std::max(0.0, stiffness_n_per_m_ * (gap_m_ - contact_->Tip(p, t_s - p.start_s)));
 }
 
-UniformSignal ReferenceSolution::Sample(double (ReferenceSolution::*value)(double) const,
-                                        double dt_s, double end_s) const {
-  UniformSignal s{0.0, dt_s, {}};
+void ReferenceSolution::Sample(double dt_s, double end_s, UniformSignal& tip,
+                               UniformSignal* force) const {
+  tip = {0.0, dt_s, {}};
   const auto n = static_cast<std::size_t>(std::floor(end_s / dt_s + 1e-9)) + 1;
-  s.values.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) s.values.push_back((this->*value)(s.TimeAt(i)));
-  return s;
+  tip.values.resize(n);
+  if (force != nullptr) *force = {0.0, dt_s, std::vector<double>(n, 0.0)};
+  const RotatingModalSum free_template(free_->omega_d, free_->half_alpha, dt_s);
+  const RotatingModalSum contact_template(contact_->omega_d, contact_->half_alpha, dt_s);
+  RotatingModalSum free_sum = free_template, contact_sum = contact_template;
+  std::size_t i = 0;
+  for (std::size_t j = 0; j < phases_.size() && i < n; ++j) {
+    // Sample i belongs to the last phase starting at or before it, as in PhaseAt.
+    const double next_start =
+        j + 1 < phases_.size() ? phases_[j + 1].start_s : std::numeric_limits<double>::infinity();
+    std::size_t end = i;
+    while (end < n && tip.TimeAt(end) < next_start) ++end;
+    if (end == i) continue;
+    const ReferencePhase& p = phases_[j];
+    const Configuration& c = ConfigurationOf(p);
+    RotatingModalSum& sum = p.in_contact ? contact_sum : free_sum;
+    sum.Start(c.basis.tip.cwiseProduct(p.a), c.basis.tip.cwiseProduct(p.b),
+              tip.TimeAt(i) - p.start_s);
+    for (; i < end; ++i) {
+      const double u = c.tip_offset_m + sum.Next();
+      tip.values[i] = u;
+      if (force != nullptr && p.in_contact) {
+        force->values[i] = std::max(0.0, stiffness_n_per_m_ * (gap_m_ - u));
+      }
+    }
+  }
 }
 
 UniformSignal ReferenceSolution::SampleTipDisplacement(double dt_s, double end_s) const {
-  return Sample(&ReferenceSolution::TipDisplacement, dt_s, end_s);
+  UniformSignal tip;
+  Sample(dt_s, end_s, tip, nullptr);
+  return tip;
 }
 
-UniformSignal ReferenceSolution::SampleContactForce(double dt_s, double end_s) const {
-  return Sample(&ReferenceSolution::ContactForce, dt_s, end_s);
+ReferenceHistories ReferenceSolution::SampleHistories(double dt_s, double end_s) const {
+  ReferenceHistories h;
+  Sample(dt_s, end_s, h.tip_m, &h.force_n);
+  return h;
 }
 
 namespace {
@@ -133,14 +161,53 @@ std::shared_ptr<Configuration> MakeConfiguration(const CantileverImpact& problem
   return c;
 }
 
+// The tip's walk over tau = k step, k >= 1, of phase p (RotatingModalSum).
+class TipWalk {
+ public:
+  TipWalk(const Configuration& c, double step)
+      : c_(c), sum_(c.omega_d, c.half_alpha, step), step_(step) {}
+  void Start(const ReferencePhase& p) {
+    sum_.Start(c_.basis.tip.cwiseProduct(p.a), c_.basis.tip.cwiseProduct(p.b), step_);
+  }
+  double Next() { return c_.tip_offset_m + sum_.Next(); }
+
+ private:
+  const Configuration& c_;
+  RotatingModalSum sum_;
+  double step_;
+};
+
+// Brent's root of s in [lo, hi], returning the end of the final bracket on hi's side.
+template <typename F>
+double RefineCrossing(const F& s, double lo, double hi) {
+  struct Ctx {
+    const F* f;
+  } ctx{&s};
+  gsl_function fn;
+  fn.function = [](double t, void* x) { return (*static_cast<Ctx*>(x)->f)(t); };
+  fn.params = &ctx;
+  std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
+      gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
+  gsl_root_fsolver_set(solver.get(), &fn, lo, hi);
+  for (int iter = 0; iter < 200; ++iter) {
+    gsl_root_fsolver_iterate(solver.get());
+    lo = gsl_root_fsolver_x_lower(solver.get());
+    hi = gsl_root_fsolver_x_upper(solver.get());
+    if (gsl_root_test_interval(lo, hi, 1e-15, 1e-14) == GSL_SUCCESS) break;
+  }
+  return hi;
+}
+
 // First tau in (0, tau_max] where the tip leaves the phase's side of the gap, or nullopt.
-// A phase that starts inside is watched from its first instant (step / 1000), so that a
-// re-contact shorter than one sample right after a transition is bracketed too. A phase that
-// starts on the wrong side (the projection on a truncated basis puts the tip a hair off the
-// gap) is watched from the first sample inside; if none comes within one shortest period the
-// phase is a graze and ends at once (tau = 0).
-std::optional<double> FindExit(const Configuration& c, const ReferencePhase& p, double gap,
-                               double step, double tau_max) {
+// The tip is sampled at tau = k step (by `walk`, step = shortest period / samples per period)
+// and at tau_max; a sign change is refined by Brent on the exact sum. A phase that starts
+// inside is watched from its first instant (step / 1000), so that a re-contact shorter than
+// one sample right after a transition is bracketed too. A phase that starts on the wrong side
+// (the projection on a truncated basis puts the tip a hair off the gap) is watched from the
+// first sample inside; if none comes within one shortest period the phase is a graze and ends
+// at once (tau = 0).
+std::optional<double> FindExit(const Configuration& c, TipWalk& walk, const ReferencePhase& p,
+                               double gap, double step, double tau_max) {
   auto s = [&](double tau) { return c.Tip(p, tau) - gap; };
   auto inside = [&](double v) { return p.in_contact ? v < 0.0 : v > 0.0; };
   auto outside = [&](double v) { return p.in_contact ? v > 0.0 : v < 0.0; };
@@ -148,9 +215,11 @@ std::optional<double> FindExit(const Configuration& c, const ReferencePhase& p, 
   const double first = std::min(1e-3 * step, tau_max);
   bool seen_inside = inside(s(first));
   double prev = seen_inside ? first : 0.0;
+  walk.Start(p);
   for (long k = 1;; ++k) {
-    const double tau = std::min(static_cast<double>(k) * step, tau_max);
-    const double v = s(tau);
+    const double tau_k = static_cast<double>(k) * step;
+    const double tau = std::min(tau_k, tau_max);
+    const double v = tau_k < tau_max ? walk.Next() - gap : s(tau);
     if (!seen_inside) {
       if (inside(v)) {
         seen_inside = true;
@@ -158,23 +227,7 @@ std::optional<double> FindExit(const Configuration& c, const ReferencePhase& p, 
         return 0.0;
       }
     } else if (outside(v)) {
-      struct Ctx {
-        const decltype(s)* f;
-      } ctx{&s};
-      gsl_function fn;
-      fn.function = [](double t, void* x) { return (*static_cast<Ctx*>(x)->f)(t); };
-      fn.params = &ctx;
-      std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
-          gsl_root_fsolver_alloc(gsl_root_fsolver_brent), gsl_root_fsolver_free);
-      gsl_root_fsolver_set(solver.get(), &fn, prev, tau);
-      double lo = prev, hi = tau;
-      for (int iter = 0; iter < 200; ++iter) {
-        gsl_root_fsolver_iterate(solver.get());
-        lo = gsl_root_fsolver_x_lower(solver.get());
-        hi = gsl_root_fsolver_x_upper(solver.get());
-        if (gsl_root_test_interval(lo, hi, 1e-15, 1e-14) == GSL_SUCCESS) break;
-      }
-      return hi;  // The outside end, so the next phase starts across the gap.
+      return RefineCrossing(s, prev, tau);  // The outside end: the next phase starts across.
     }
     prev = tau;
     if (tau >= tau_max) return std::nullopt;
@@ -233,10 +286,12 @@ ReferenceSolution SolveReference(const CantileverImpact& problem, const Referenc
     free->StartPhase(q, qd, phases[0]);
   }
 
+  TipWalk free_walk(*free, step), contact_walk(*contact, step);
   while (true) {
     const ReferencePhase& p = phases.back();
     const Configuration& c = p.in_contact ? *contact : *free;
-    const auto exit = FindExit(c, p, problem.gap_m, step, options.end_time_s - p.start_s);
+    TipWalk& walk = p.in_contact ? contact_walk : free_walk;
+    const auto exit = FindExit(c, walk, p, problem.gap_m, step, options.end_time_s - p.start_s);
     if (!exit) break;
     if (summary.n_transitions >= options.max_transitions) {
       std::ostringstream msg;

@@ -43,6 +43,12 @@ struct ReferenceSummary {
   double wall_s = 0.0;
 };
 
+// The sampled histories of a reference, on one grid.
+struct ReferenceHistories {
+  UniformSignal tip_m;
+  UniformSignal force_n;  // ContactForce at the same samples.
+};
+
 class ReferenceSolution {
  public:
   struct Configuration;
@@ -50,12 +56,15 @@ class ReferenceSolution {
                     std::shared_ptr<const Configuration> free,
                     std::shared_ptr<const Configuration> contact, ReferenceSummary summary);
 
+  // Exact evaluation at any t: the phase by binary search, a cosine and a sine per mode.
   double TipDisplacement(double t_s) const;
   // k_s (g - u(L, t)) during contact phases, 0 otherwise (N).
   double ContactForce(double t_s) const;
-  // Samples at t = 0, dt, ... up to end_s inclusive.
+  // Samples at t = 0, dt, ... up to end_s inclusive, walking the phases in order with one
+  // rotation per mode per sample (RotatingModalSum); within ~1e-13 of the amplitude of
+  // TipDisplacement and ContactForce at the same times.
   UniformSignal SampleTipDisplacement(double dt_s, double end_s) const;
-  UniformSignal SampleContactForce(double dt_s, double end_s) const;
+  ReferenceHistories SampleHistories(double dt_s, double end_s) const;
   // Output step fine enough for every retained mode: shortest period / 8.
   double OutputStep() const { return summary_.shortest_period_s / 8.0; }
 
@@ -64,8 +73,8 @@ class ReferenceSolution {
 
  private:
   const ReferencePhase& PhaseAt(double t_s) const;
-  UniformSignal Sample(double (ReferenceSolution::*value)(double) const, double dt_s,
-                       double end_s) const;
+  // The tip, and the force unless null, in one pass.
+  void Sample(double dt_s, double end_s, UniformSignal& tip, UniformSignal* force) const;
   const Configuration& ConfigurationOf(const ReferencePhase& p) const;
 
   double gap_m_;

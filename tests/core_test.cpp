@@ -17,6 +17,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "core/end_condition.h"
 #include "core/full_fe_contact_system.h"
 #include "core/modal_basis.h"
+#include "core/modal_basis_cache.h"
 #include "core/newmark.h"
 #include "core/point_contact.h"
 #include "core/run_status.h"
@@ -1026,6 +1028,26 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
   EXPECT_GE(closed, 2) << "the state must close zones for the check to mean something";
   EXPECT_LE((a - expected_a).norm(), 1e-12 * expected_a.norm());
   EXPECT_LE((stiffness - expected_k).norm(), 1e-12 * expected_k.norm());
+}
+
+// A worker reuses the eigensolution of a mesh it has solved: the same object for the same key
+// on one thread, each thread its own, and every one equal bit for bit to a fresh solve.
+TEST(ModalBasisCache, ReusesTheSolutionPerThreadAndEqualsAFreshSolve) {
+  const BeamProperties beam;
+  const FeBeamModel fe = AssembleBeam(beam, 30, EndCondition::kClamped, EndCondition::kFree);
+  const FeBeamModel other = AssembleBeam(beam, 31, EndCondition::kClamped, EndCondition::kFree);
+  const ModalBasis fresh = ComputeLowestModes(fe, fe.Size());
+  const auto first = AllModesCached("core_test 30", fe);
+  EXPECT_EQ(AllModesCached("core_test 30", fe), first);
+  EXPECT_NE(AllModesCached("core_test 31", other), first);
+  EXPECT_EQ(AllModesCached("core_test 31", other)->NumModes(), other.Size());
+  std::shared_ptr<const ModalBasis> on_other_thread;
+  std::thread([&] { on_other_thread = AllModesCached("core_test 30", fe); }).join();
+  EXPECT_NE(on_other_thread, first);
+  for (const auto& cached : {first, on_other_thread}) {
+    EXPECT_TRUE(cached->omega_rad_s == fresh.omega_rad_s);
+    EXPECT_TRUE(cached->shapes == fresh.shapes);
+  }
 }
 
 }  // namespace

@@ -26,10 +26,12 @@ namespace shockmap {
 namespace {
 
 using testing::Count;
+using testing::kSlowStudy;
 using testing::ReadBytes;
 using testing::Rows;
 using testing::RunShell;
 using testing::RunShockmap;
+using testing::WriteText;
 
 constexpr const char* kMpiexec = SHOCKMAP_MPIEXEC;  // Empty without MPI.
 // What a container on a 2-core machine needs (docs/cluster.md).
@@ -188,7 +190,9 @@ TEST_F(MpiStudy, RankZeroKilledWithSigkillResumesLikeALocalRun) {
 }
 
 TEST_F(MpiStudy, SecondJobOnTheDatabaseIsRefusedNamingTheHolder) {
-  const std::string spec = Source("studies/paper_fig4.json"), db = Path("l.db");
+  // The slow study: the first job must still hold the database when the second one starts.
+  const std::string spec = Path("slow.json"), db = Path("l.db");
+  WriteText(spec, kSlowStudy);
   const pid_t launcher =
       Start(MpiRun(3, "study run " + spec + " --db " + db + " --quiet"), Path("first.log"));
   pid_t holder = -1;

@@ -2,7 +2,10 @@
 // engine (commit 4816a50), and a database written at schema version 2 by that code reads back
 // every stored point after migration.
 //
-// The paper's problem is equal bit for bit. Scene studies are equal in status, size and steps,
+// The paper's problem is equal bit for bit in everything but its scores: the reference is
+// sampled by a rotation recurrence since (docs/performance.md, "References and study points"),
+// within ~1e-14 of the exact sum it was evaluated with, which moves Err by up to 2e-14 and SRf
+// by 1e-14 relative; they are compared to 1e-12. Scene studies are equal in status, size and steps,
 // and their forces (SRf, the largest force, the first shock's peak) to 1e-12 relative: the one
 // reduced model sums a zone's displacement in the order the canonical model did, which moves
 // the last digit of a sum over a bundle's modes. On the stiff-wire points (1e6 N/m) the rattling
@@ -103,7 +106,23 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheCodeBeforeTheEngine) {
   const auto run = RunShockmap("study run " + Source("studies/quick.json") + " --db " +
                                Path("q.db") + " --quiet");
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  ExpectSameRows(Rows(Path("q.db"), kCanonicalRows), "tests/data/quick_results.txt");
+  const std::vector<std::string> actual = Rows(Path("q.db"), kCanonicalRows);
+  const std::vector<std::string> expected = Lines(Source("tests/data/quick_results.txt"));
+  ASSERT_EQ(actual.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const auto a = Fields(actual[i]), e = Fields(expected[i]);
+    ASSERT_EQ(a.size(), 10u) << actual[i];
+    for (int exact : {0, 1, 2, 3, 4, 5, 8, 9}) EXPECT_EQ(a[exact], e[exact]) << expected[i];
+    for (int score : {6, 7}) {
+      ASSERT_EQ(a[score] == "NULL", e[score] == "NULL") << expected[i];
+      if (e[score] == "NULL") continue;
+      if (score == 6) {
+        EXPECT_LE(std::abs(std::stod(a[6]) - std::stod(e[6])), 1e-12) << "Err of " << expected[i];
+      } else {
+        ExpectClose(a[7], e[7], 1e-12, "SRf of " + expected[i]);
+      }
+    }
+  }
 }
 
 TEST_F(RefactorParity, SceneStudyOutcomesAreThoseOfTheCodeBeforeTheEngine) {

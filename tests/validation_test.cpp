@@ -274,6 +274,22 @@ TEST(OneSidedPsdTest, ConcurrentCallsMatchSerialResult) {
 // ---------------------------------------------------------------------------------------------
 // SpectralError, paper eq. (8)
 
+// A reference scored against many runs passes its spectrum once: the same Err bit for bit as
+// passing its signal, with either window.
+TEST(SpectralErrorTest, AgainstAStoredSpectrumEqualsAgainstTheSignal) {
+  const UniformSignal s = GenericDisplacement();
+  UniformSignal other = s;
+  for (std::size_t i = 0; i < other.values.size(); ++i) other.values[i] *= 1.0 + 1e-3 * (i % 7);
+  for (const PsdWindow window : {PsdWindow::kRectangular, PsdWindow::kHann}) {
+    PsdOptions options;
+    options.window = window;
+    const PowerSpectrum stored = OneSidedPsd(s, 0.01, 0.5, options);
+    const double err = SpectralError(other, s, 0.01, 0.5, options);
+    EXPECT_GT(err, 0.0);
+    EXPECT_EQ(SpectralError(other, stored, 0.01, 0.5, options), err) << ToString(window);
+  }
+}
+
 TEST(SpectralErrorTest, SignalAgainstItselfIsExactlyZero) {
   const UniformSignal s = GenericDisplacement();
   for (const PsdWindow window : {PsdWindow::kRectangular, PsdWindow::kHann}) {

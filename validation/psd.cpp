@@ -144,6 +144,70 @@ std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, dou
   return x;
 }
 
+namespace {
+
+// One thread's transform of one length and window: its FFTW plan, its aligned arrays and its
+// window weights, made on first use and reused by every later spectrum of that shape on the
+// thread, so that planning (and the twiddle factors it computes) is paid once per thread.
+struct Transform {
+  int n_samples = 0;
+  int n_fft = 0;
+  PsdWindow window = PsdWindow::kHann;
+  std::unique_ptr<double, FftwFree> in;
+  std::unique_ptr<fftw_complex, FftwFree> out;
+  std::unique_ptr<fftw_plan_s, FftwPlanDestroy> plan;
+  std::vector<double> weights;
+  double sum_w2 = 0.0;
+};
+
+std::unique_ptr<Transform> MakeTransform(int n_samples, int n_fft, PsdWindow window) {
+  auto t = std::make_unique<Transform>();
+  t->n_samples = n_samples;
+  t->n_fft = n_fft;
+  t->window = window;
+  const auto n_bins = static_cast<std::size_t>(n_fft) / 2 + 1;
+  t->in.reset(fftw_alloc_real(static_cast<std::size_t>(n_fft)));
+  t->out.reset(fftw_alloc_complex(n_bins));
+  if (!t->in || !t->out) throw std::bad_alloc();
+  {
+    const std::lock_guard<std::mutex> lock(FftwPlannerMutex());
+    t->plan.reset(fftw_plan_dft_r2c_1d(n_fft, t->in.get(), t->out.get(), FFTW_ESTIMATE));
+  }
+  if (!t->plan) {
+    throw std::runtime_error("FFTW could not plan an r2c transform of length " +
+                             std::to_string(n_fft));
+  }
+  const auto n = static_cast<double>(n_samples);
+  t->weights.resize(static_cast<std::size_t>(n_samples));
+  for (std::size_t i = 0; i < t->weights.size(); ++i) {
+    const double w =
+        window == PsdWindow::kHann
+            ? 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) / n))
+            : 1.0;
+    t->weights[i] = w;
+    t->sum_w2 += w * w;
+  }
+  return t;
+}
+
+// This thread's transform of that shape; the few most recently used shapes are kept.
+Transform& TransformFor(int n_samples, int n_fft, PsdWindow window) {
+  constexpr std::size_t kKept = 4;
+  thread_local std::vector<std::unique_ptr<Transform>> kept;  // Most recently used last.
+  for (auto it = kept.begin(); it != kept.end(); ++it) {
+    const Transform& t = **it;
+    if (t.n_samples == n_samples && t.n_fft == n_fft && t.window == window) {
+      std::rotate(it, it + 1, kept.end());
+      return *kept.back();
+    }
+  }
+  if (kept.size() == kKept) kept.erase(kept.begin());
+  kept.push_back(MakeTransform(n_samples, n_fft, window));
+  return *kept.back();
+}
+
+}  // namespace
+
 PowerSpectrum OneSidedPsd(const UniformSignal& s, double t_begin_s, double t_end_s,
                           const PsdOptions& options) {
   std::string error;
@@ -153,44 +217,21 @@ PowerSpectrum OneSidedPsd(const UniformSignal& s, double t_begin_s, double t_end
   const std::vector<double> x = ResampleForPsd(s, t_begin_s, t_end_s, options.n_samples);
   const std::size_t n = x.size();
   const double fs_hz = static_cast<double>(n) / (t_end_s - t_begin_s);
-  const int n_fft = options.FftLength();
-  const std::size_t n_bins = static_cast<std::size_t>(n_fft) / 2 + 1;
-
-  const std::unique_ptr<double, FftwFree> in(fftw_alloc_real(static_cast<std::size_t>(n_fft)));
-  const std::unique_ptr<fftw_complex, FftwFree> out(fftw_alloc_complex(n_bins));
-  if (!in || !out) {
-    throw std::bad_alloc();
-  }
-  double sum_w2 = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = options.window == PsdWindow::kHann
-                         ? 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * static_cast<double>(i) /
-                                                 static_cast<double>(n)))
-                         : 1.0;
-    in.get()[i] = w * x[i];
-    sum_w2 += w * w;
-  }
-  std::fill(in.get() + n, in.get() + n_fft, 0.0);
-
-  std::unique_ptr<fftw_plan_s, FftwPlanDestroy> plan;
-  {
-    const std::lock_guard<std::mutex> lock(FftwPlannerMutex());
-    // FFTW_ESTIMATE does not touch the arrays while planning, so `in` keeps its data.
-    plan.reset(fftw_plan_dft_r2c_1d(n_fft, in.get(), out.get(), FFTW_ESTIMATE));
-  }
-  if (!plan) {
-    throw std::runtime_error("FFTW could not plan an r2c transform of length " +
-                             std::to_string(n_fft));
-  }
-  fftw_execute(plan.get());
+  Transform& t = TransformFor(options.n_samples, options.FftLength(), options.window);
+  const std::size_t n_bins = static_cast<std::size_t>(t.n_fft) / 2 + 1;
+  double* in = t.in.get();
+  for (std::size_t i = 0; i < n; ++i) in[i] = t.weights[i] * x[i];
+  std::fill(in + n, in + t.n_fft, 0.0);
+  fftw_execute(t.plan.get());
 
   PowerSpectrum psd;
-  psd.df_hz = fs_hz / n_fft;
+  psd.df_hz = fs_hz / t.n_fft;
   psd.density.resize(n_bins);
-  const double scale = 1.0 / (fs_hz * sum_w2);
+  const double scale = 1.0 / (fs_hz * t.sum_w2);
+  const fftw_complex* out = t.out.get();
   for (std::size_t k = 0; k < n_bins; ++k) {
-    const double re = out.get()[k][0];
-    const double im = out.get()[k][1];
+    const double re = out[k][0];
+    const double im = out[k][1];
     const bool unpaired = (k == 0 || k == n_bins - 1);  // DC and Nyquist have no mirror bin.
     psd.density[k] = (unpaired || !options.one_sided ? 1.0 : 2.0) * (re * re + im * im) * scale;
   }

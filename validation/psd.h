@@ -56,6 +56,7 @@ struct PsdOptions {
   int FftLength() const;
   // n_samples >= 2, zero_padding_factor >= 1, known window, N <= 2^30 (FFTW takes an int).
   bool IsValid(std::string* error) const;
+  bool operator==(const PsdOptions&) const = default;
 };
 
 struct PowerSpectrum {
@@ -76,8 +77,10 @@ std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, dou
 
 // One-sided periodogram of s over [t_begin_s, t_end_s] as described at the top of this file.
 // Throws std::invalid_argument on invalid options or on the conditions of ResampleForPsd.
-// Thread-safe: FFTW plan creation and destruction are serialized by a process-wide mutex
-// (the FFTW planner is not re-entrant); the transform itself runs concurrently.
+// Thread-safe: each thread plans a transform of a given length and window once and reuses it
+// (its plan, arrays and window weights) for every later spectrum of that shape; FFTW plan
+// creation and destruction are serialized by a process-wide mutex (the FFTW planner is not
+// re-entrant); the transforms themselves run concurrently.
 PowerSpectrum OneSidedPsd(const UniformSignal& s, double t_begin_s, double t_end_s,
                           const PsdOptions& options);
 

@@ -8,9 +8,14 @@ namespace shockmap {
 
 double SpectralError(const UniformSignal& numerical, const UniformSignal& reference,
                      double t_begin_s, double t_end_s, const PsdOptions& options) {
+  return SpectralError(numerical, OneSidedPsd(reference, t_begin_s, t_end_s, options), t_begin_s,
+                       t_end_s, options);
+}
+
+double SpectralError(const UniformSignal& numerical, const PowerSpectrum& g_ref, double t_begin_s,
+                     double t_end_s, const PsdOptions& options) {
   const PowerSpectrum g_num = OneSidedPsd(numerical, t_begin_s, t_end_s, options);
-  const PowerSpectrum g_ref = OneSidedPsd(reference, t_begin_s, t_end_s, options);
-  // Same options and window give the same bins; anything else is a bug in OneSidedPsd.
+  // Same options and window give the same bins; anything else is a bug in the caller.
   assert(g_num.density.size() == g_ref.density.size() && g_num.df_hz == g_ref.df_hz);
 
   double max_difference = 0.0;

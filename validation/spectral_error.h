@@ -15,4 +15,9 @@ namespace shockmap {
 double SpectralError(const UniformSignal& numerical, const UniformSignal& reference,
                      double t_begin_s, double t_end_s, const PsdOptions& options);
 
+// The same against the reference's spectrum, computed once by OneSidedPsd with these options
+// over this window (a reference scored against many runs); equal to the above bit for bit.
+double SpectralError(const UniformSignal& numerical, const PowerSpectrum& reference,
+                     double t_begin_s, double t_end_s, const PsdOptions& options);
+
 }  // namespace shockmap

@@ -1,0 +1,50 @@
+// Cost of the semi-analytical reference of a study point (docs/performance.md, "References and
+// study points"): the piecewise-modal solution at R_fref = max(2000, 30 sqrt(R_k)) f1, its check
+// at R_fref / 3, both sampled at the output step over a 0.06 s window, and the shocks, as a
+// study computes it once per (R_k, window).
+//   Reference/R_k   R_k = 1, 10, ..., 1e6 (the goal row is R_k = 1e6, R_fref = 30 000);
+//                   modes = retained modes of the contact basis, samples = output samples,
+//                   s_per_mode_sample = time / (modes * samples)
+// The cost growth against R_k is the slope of log(time) against log(R_k): modes grow as
+// R_k^(1/4), samples as R_k^(1/2).
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "compare/reference_run.h"
+#include "core/cantilever_impact.h"
+
+namespace shockmap {
+namespace {
+
+constexpr double kWindowS = 0.06;
+
+void Reference(benchmark::State& state) {
+  CantileverImpact problem;
+  problem.r_k = std::pow(10.0, static_cast<double>(state.range(0)));
+  ReferenceOptions options;
+  options.r_fref = std::max(2000.0, 30.0 * std::sqrt(problem.r_k));
+  ShockSegmentationOptions shocks;
+  shocks.rest_duration_s = 0.1 / problem.F1Hz();
+  ReferenceRun run;
+  for (auto _ : state) {
+    run = ComputeReferenceRun(problem, options, kWindowS, shocks);
+    benchmark::DoNotOptimize(run.tip_m.values.back());
+  }
+  const auto samples = static_cast<double>(run.tip_m.values.size());
+  state.counters["rfref"] = options.r_fref;
+  state.counters["modes"] = run.summary.n_modes_contact;
+  state.counters["transitions"] = run.summary.n_transitions;
+  state.counters["samples"] = samples;
+  state.counters["s_per_mode_sample"] = benchmark::Counter(
+      samples * run.summary.n_modes_contact,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(Reference)->ArgName("log10_rk")->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace shockmap
+
+BENCHMARK_MAIN();

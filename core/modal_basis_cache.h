@@ -1,0 +1,25 @@
+#pragma once
+// Eigensolutions of FE beams kept per thread (docs/performance.md, "References and study
+// points"): the points of a study share few meshes, and the clamped-free basis does not depend
+// on the contact stiffness, so each worker thread solves the eigenproblem (paper eq. 6) once
+// per mesh instead of once per point. A cached solution is the one a fresh solve returns, bit
+// for bit.
+
+#include <memory>
+#include <string>
+
+#include "core/beam_fe.h"
+#include "core/modal_basis.h"
+
+namespace shockmap {
+
+// The most recently used solutions a thread keeps, by their shapes' size.
+inline constexpr double kModalBasisCacheBytes = 64e6;
+
+// Every mode of `model` (ComputeLowestModes(model, model.Size())), from this thread's cache
+// when `model_key` is in it. The key must name everything the model depends on: beam
+// properties, elements, end conditions and end springs.
+std::shared_ptr<const ModalBasis> AllModesCached(const std::string& model_key,
+                                                 const FeBeamModel& model);
+
+}  // namespace shockmap

@@ -1,0 +1,44 @@
+#pragma once
+// A damped modal sum sampled on a uniform grid by rotation (docs/performance.md, "References
+// and study points"):
+//   u(tau) = sum_i e^{-d tau} (c_i cos(omega_i tau) + s_i sin(omega_i tau)),
+//   tau = tau0 + k h, k = 0, 1, 2, ...
+// Each term is Re(z_i) with z_i(tau) = (c_i - j s_i) e^{(-d + j omega_i) tau}, and
+// z_i(tau + h) = z_i(tau) r_i with r_i = e^{(-d + j omega_i) h}: one complex multiplication per
+// mode per sample instead of a cosine and a sine, four modes per instruction where the CPU has
+// AVX2 (the same operations in the same order otherwise, so the sums are equal bit for bit on
+// any x86-64). Rounding grows by about one ulp per multiplication, so every kAnchorEvery
+// samples z is set again from exact trigonometry at tau0 + k h: the sum stays within ~1e-13
+// of the exact one relative to sum_i |c_i - j s_i|.
+
+#include <Eigen/Dense>
+
+namespace shockmap {
+
+class RotatingModalSum {
+ public:
+  static constexpr int kAnchorEvery = 512;
+
+  // omega_rad_s: the terms' angular frequencies; decay_per_s: d >= 0; step_s: h > 0.
+  RotatingModalSum(const Eigen::VectorXd& omega_rad_s, double decay_per_s, double step_s);
+
+  // Starts the walk at tau0_s with the weights c (of the cosines) and s (of the sines), both of
+  // the size of omega_rad_s.
+  void Start(const Eigen::VectorXd& cos_weight, const Eigen::VectorXd& sin_weight, double tau0_s);
+
+  // u at the current sample; then moves to the next one.
+  double Next();
+
+ private:
+  void Anchor();
+
+  // Every array holds the modes, then zeros up to a multiple of four (kLanes).
+  Eigen::ArrayXd omega_, rotation_re_, rotation_im_;
+  double decay_per_s_ = 0.0, step_s_ = 0.0;
+  Eigen::ArrayXd weight_re_, weight_im_;  // c_i - j s_i
+  Eigen::ArrayXd z_re_, z_im_;
+  double tau0_s_ = 0.0;
+  long k_ = 0;
+};
+
+}  // namespace shockmap
