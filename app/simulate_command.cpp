@@ -8,6 +8,8 @@
 
 #include "app/flag_checks.h"
 #include "core/input_error.h"
+#include "engine/progress_reporter.h"
+#include "formats/counted.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
 #include "formats/scene_outputs.h"
@@ -20,6 +22,7 @@ struct SimulateFlags {
   std::string scene_file;
   std::string out_dir;
   bool json = false;
+  bool quiet = false;
   SceneFileAccess access;
 };
 
@@ -31,10 +34,11 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
   fmt::print("  status            {}{} (max energy ratio {:.4g})\n", ToString(s.status),
              s.message.empty() ? "" : " (" + s.message + ")", s.max_energy_ratio);
   fmt::print(
-      "  model             {} beams, {} zones, {} modal coordinates ({}-{} modes per beam and "
-      "plane, R_ftrunc = {:g}), {} distinct modal bases\n",
-      scene.beams.size(), scene.zones.size(), run.coordinates, *fewest, *most,
-      scene.solver.r_ftrunc, run.distinct_bases);
+      "  model             {}, {}, {} ({}-{} modes per beam and plane, R_ftrunc = {:g}), {}\n",
+      Counted(static_cast<long long>(scene.beams.size()), "beam"),
+      Counted(static_cast<long long>(scene.zones.size()), "zone"),
+      Counted(run.coordinates, "modal coordinate"), *fewest, *most, scene.solver.r_ftrunc,
+      Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", s.dt_used_s,
              s.dt_requested_s, s.steps_taken);
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
@@ -87,8 +91,12 @@ void Run(const SimulateFlags& f) {
                     "--out (with the names of the files written into it)");
   }
   SceneRun run;
+  ProgressReporter progress("simulate " + scene.name, "s simulated", scene.solver.end_time_s,
+                            stderr, !f.quiet);
   try {
-    run = RunScene(scene);
+    run = RunScene(scene, [&](double t_s) { progress.Update(t_s); });
+    progress.Finish(run.result.summary.dt_used_s *
+                    static_cast<double>(run.result.summary.steps_taken));
   } catch (const InputError& e) {
     throw InputError(f.scene_file + ": " + e.what());
   }
@@ -117,6 +125,7 @@ void AddSimulateCommand(CLI::App& app) {
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");
   cmd->add_flag("--json", flags->json, "print the summary as one JSON object");
+  cmd->add_flag("--quiet", flags->quiet, "no progress on stderr");
   AddAllowPathFlag(cmd, flags->access);
   cmd->callback([flags] { Run(*flags); });
 }

@@ -41,7 +41,7 @@ void CheckAffordable(const Scene& scene, const TransientOptions& options,
 
 }  // namespace
 
-SceneRun RunScene(const Scene& scene) {
+SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progress) {
   SceneRun run;
   const auto start = std::chrono::steady_clock::now();
   SceneModel model = BuildSceneModel(scene);
@@ -62,6 +62,7 @@ SceneRun RunScene(const Scene& scene) {
   options.recorded_contacts = out.contact_force_zones;
   options.track_max_contact_force = out.max_contact_force;
   options.observed_rows = std::move(model.observed_rows);
+  options.on_progress = std::move(on_progress);
   CheckAffordable(scene, options, model.bounds);
   run.result = RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0,
                             model.v0, options);

@@ -11,7 +11,7 @@ QueryResult StudyProgress(const std::string& database_path) {
       database_path,
       "SELECT st.name AS study, count(*) AS points, "
       "sum(p.status = 'ok') AS ok, sum(p.status = 'diverged') AS diverged, "
-      "sum(p.status = 'failed') AS failed, "
+      "sum(p.status = 'unstable') AS unstable, sum(p.status = 'failed') AS failed, "
       "sum(p.status = 'reference_unconverged') AS reference_unconverged, "
       "sum(p.status = 'pending') AS pending, sum(p.status = 'running') AS running, "
       "max(p.updated_utc) AS last_update "

@@ -45,10 +45,18 @@ std::optional<MapAxis> MapAxisFromString(std::string_view s) {
 namespace {
 
 // Status classes drawn by the status map, in colour order.
-enum StatusClass { kPasses = 0, kFailsThresholds = 1, kDiverged = 2, kFailed = 3, kUnscored = 4 };
+enum StatusClass {
+  kPasses = 0,
+  kFailsThresholds = 1,
+  kDiverged = 2,
+  kFailed = 3,
+  kUnscored = 4,
+  kUnstable = 5  // Reached the end undamped with its energy grown past the limit.
+};
 
 StatusClass ClassOf(const ScoredPoint& p, const CriteriaOptions& o) {
   if (p.status == RunStatus::kDiverged) return kDiverged;
+  if (p.status == RunStatus::kUnstable) return kUnstable;
   if (p.status == RunStatus::kFailed) return kFailed;
   if (p.status == RunStatus::kReferenceUnconverged) return kUnscored;
   return o.Passes(p) ? kPasses : kFailsThresholds;
@@ -150,12 +158,12 @@ MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
               "wall time (s)", "wall time of the numerical run"};
     case MapMetric::kStatus:
       return {
-          "set palette maxcolors 5\n"
+          "set palette maxcolors 6\n"
           "set palette defined (0 '#1a9850', 1 '#fdae61', 2 '#d73027', 3 '#000000', 4 "
-          "'#bdbdbd')\n"
-          "set cbrange [-0.5:4.5]\nset rmargin 26\n"
+          "'#bdbdbd', 5 '#762a83')\n"
+          "set cbrange [-0.5:5.5]\nset rmargin 26\n"
           "set cbtics ('passes' 0, 'fails thresholds' 1, 'diverged' 2, 'failed' 3, "
-          "'reference unconverged' 4)\n",
+          "'reference unconverged' 4, 'unstable (energy grew)' 5)\n",
           "", "outcome"};
   }
   return {};
@@ -208,7 +216,8 @@ set samples 400
 plot {data} using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb '#ffffff' fc palette notitle, \
      '' using 1:($8 == 4 ? $2 : 1/0):3:4:5:6 with boxxyerror fs solid 1.0 border lc rgb '#ffffff' fc rgb '#bdbdbd' title 'reference unconverged (not scored)', \
      '' using 1:($8 == 2 ? $2 : 1/0) with points pt 2 ps 2 lw 2 lc rgb '#000000' title 'diverged', \
-     '' using 1:($8 == 3 ? $2 : 1/0) with points pt 6 ps 2 lw 2 lc rgb '#000000' title 'failed'{overlays}
+     '' using 1:($8 == 3 ? $2 : 1/0) with points pt 6 ps 2 lw 2 lc rgb '#000000' title 'failed', \
+     '' using 1:($8 == 5 ? $2 : 1/0) with points pt 4 ps 2 lw 2 lc rgb '#762a83' title 'unstable (energy grew > {unstable:g}x)'{overlays}
 )",
       fmt::arg("terminal", TerminalFor(f.image, 1100, 800)),
       fmt::arg("out", GnuplotFileName(f.image)),
@@ -216,7 +225,7 @@ plot {data} using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb '#fff
       fmt::arg("ylabel", GnuplotQuoted(f.ylabel)), fmt::arg("cb", GnuplotQuoted(style.cb)),
       fmt::arg("palette", style.palette), fmt::arg("xmin", f.xmin), fmt::arg("xmax", f.xmax),
       fmt::arg("ymin", f.ymin), fmt::arg("ymax", f.ymax), fmt::arg("data", GnuplotFileName(f.data)),
-      fmt::arg("overlays", f.overlays));
+      fmt::arg("overlays", f.overlays), fmt::arg("unstable", kUnstableEnergyRatio));
 }
 
 }  // namespace
