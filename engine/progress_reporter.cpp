@@ -59,10 +59,11 @@ void ProgressReporter::Print(double done, std::string_view detail, bool final_li
       fmt::format("{} {:.4g}/{:.4g} {}, {:.3g}/s, {}", phase_, done, total_, unit_, rate, eta);
   if (!detail.empty()) line += fmt::format(", {}", detail);
   if (terminal_) {
-    const int filled = static_cast<int>(kBarWidth * std::clamp(done / total_, 0.0, 1.0));
+    // The tolerance fills the bar at the end of a phase whose done is a sum of floats.
+    const int filled = static_cast<int>(kBarWidth * std::clamp(done / total_, 0.0, 1.0) + 1e-6);
     const std::string bar = std::string(filled, '#') + std::string(kBarWidth - filled, '.');
-    // Trailing blanks cover a longer previous line; the bar is redrawn in place.
-    std::fprintf(out_, "\r[%s] %s   %s", bar.c_str(), line.c_str(), final_line ? "\n" : "");
+    // Redrawn in place: carriage return, then erase what a longer previous line left.
+    std::fprintf(out_, "\r\033[K[%s] %s%s", bar.c_str(), line.c_str(), final_line ? "\n" : "");
   } else {
     std::fprintf(out_, "progress: %s\n", line.c_str());
   }

@@ -35,14 +35,28 @@ const RkBoundary& Passing(const RkBoundary& b) {
   return b;
 }
 
-// Between two studied R_k: the larger truncation and the smaller time step of the two, so the
-// advice is never less than either side needed (the boundary grows with R_k, eqs. 10-11).
-Basis Between(const RkBoundary& below, const RkBoundary& above, double r_k) {
+// The largest studied dt / dt_sharp below `ratio`, or `ratio` when none is.
+double FinerStudiedRatio(const std::vector<ScoredPoint>& points, double ratio) {
+  double finer = 0.0;
+  for (const auto& p : points) {
+    if (p.DtRatio() < ratio * (1 - 1e-6)) finer = std::max(finer, p.DtRatio());
+  }
+  return finer > 0.0 ? finer : ratio;
+}
+
+// Between two studied R_k: the larger truncation of the two, so the advice is never less than
+// either side needed (the boundary grows with R_k, eqs. 10-11), and the studied time step one
+// finer than the smaller of their largest passing ones: near the sharp bound Err varies with
+// R_k by more than the threshold (measured on quick: R_ftrunc 215, 0.9 dt_sharp passes at
+// R_k = 3.16e4 and 1e5, Err 0.046 and 0.050, and fails between them, Err 0.28 at 5.62e4).
+Basis Between(const RkBoundary& below, const RkBoundary& above, double r_k,
+              const std::vector<ScoredPoint>& points) {
   Basis b{std::max(*below.r_ftrunc_min, *above.r_ftrunc_min),
-          std::min(*below.dt_ratio_max, *above.dt_ratio_max),
+          FinerStudiedRatio(points, std::min(*below.dt_ratio_max, *above.dt_ratio_max)),
           {below.r_k, above.r_k},
-          fmt::format("the larger R_ftrunc_min and the smaller dt/dt_sharp max of the studied "
-                      "R_k = {:g} and {:g} around it",
+          fmt::format("the larger R_ftrunc_min of the studied R_k = {:g} and {:g} around it, and "
+                      "the studied dt/dt_sharp one finer than the smaller of their largest "
+                      "passing ones",
                       below.r_k, above.r_k),
           {}};
   if (!Same(*below.r_ftrunc_min, *above.r_ftrunc_min) ||
@@ -79,7 +93,7 @@ Basis Beyond(const ValidityCriteria& c, const RkBoundary& last, double r_k) {
 }
 
 // Throws InputError when the study has no scored points.
-Basis Choose(const ValidityCriteria& c, double r_k) {
+Basis Choose(const ValidityCriteria& c, const std::vector<ScoredPoint>& points, double r_k) {
   const auto& all = c.boundary;  // Ascending R_k.
   if (all.empty()) throw InputError("the study has no scored explicit-modal points to advise from");
   const auto above =
@@ -104,7 +118,7 @@ Basis Choose(const ValidityCriteria& c, double r_k) {
             {fmt::format("R_k = {:g} lies outside the studied range [{:g}, {:g}], below it", r_k,
                          b.r_k, all.back().r_k)}};
   }
-  return Between(Passing(*std::prev(above)), Passing(*above), r_k);
+  return Between(Passing(*std::prev(above)), Passing(*above), r_k, points);
 }
 
 // At each studied R_k of the basis, the points at the studied truncations on either side of
@@ -153,7 +167,7 @@ std::string Optional(const std::optional<double>& v) { return v ? fmt::format("{
 
 Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
               const std::vector<ScoredPoint>& points, double r_k) {
-  Basis basis = Choose(criteria, r_k);
+  Basis basis = Choose(criteria, points, r_k);
   Advice a;
   a.r_k = r_k;
   a.r_ftrunc = basis.r_ftrunc;
