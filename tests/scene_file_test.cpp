@@ -243,8 +243,8 @@ TEST_F(SceneFiles, CanonicalSceneFileGivesTheComparisonsHistoriesBitForBit) {
 TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {
   for (const char* name : {"bundle_row", "cantilever_spring"}) {
     const auto out = Path(name);
-    const auto r =
-        RunShockmap(std::string("simulate --json ") + kScenes + name + ".json --out " + out);
+    const auto r = RunShockmap(std::string("simulate --json --quiet ") + kScenes + name +
+                               ".json --out " + out);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const Json summary = Json::parse(r.output);
     EXPECT_EQ(summary["status"], "ok");
