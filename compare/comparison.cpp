@@ -51,13 +51,15 @@ double Median(std::vector<double> v) {
 }  // namespace
 
 RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOptions& options,
-                         const RunSummary& first, double min_total_s, int max_repeats) {
+                         const RunSummary& first, double min_total_s, int min_repeats,
+                         int max_repeats) {
   std::vector<double> wall{first.wall_s}, cpu{first.cpu_s};
   double total = first.wall_s;
   const ImpactModel model =
       BuildImpactModel(problem, options.scheme, options.r_ftrunc, options.n_elements);
   const TransientOptions run = NumericalRun(options, model);
-  while (total < min_total_s && static_cast<int>(wall.size()) < max_repeats) {
+  auto runs = [&] { return static_cast<int>(wall.size()); };
+  while ((total < min_total_s || runs() < min_repeats) && runs() < max_repeats) {
     const RunSummary s =
         RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run)
             .summary;

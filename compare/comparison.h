@@ -76,10 +76,12 @@ struct RunTiming {
   int repeats = 1;
 };
 
-// Runs the numerical run of (problem, options) again, model built once, until the runs'
-// total wall time reaches min_total_s or max_repeats runs were made (the first one included,
-// given as `first`); the median of all. Preconditions as RunComparison's.
+// Runs the numerical run of (problem, options) again, model built once, until at least
+// min_repeats runs were made and their total wall time reaches min_total_s, or max_repeats
+// runs were made (the first one included, given as `first`); the median of all, so that a run
+// the scheduler preempted once does not set the cost. Preconditions as RunComparison's.
 RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOptions& options,
-                         const RunSummary& first, double min_total_s, int max_repeats);
+                         const RunSummary& first, double min_total_s, int min_repeats,
+                         int max_repeats);
 
 }  // namespace shockmap

@@ -57,7 +57,7 @@ QueryResult ScoredPointRows(const std::string& database_path, const std::string&
   return RunReadOnlyQuery(
       database_path,
       "SELECT point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s, "
-      "wall_s, n_modes, steps FROM results WHERE study = ?1 AND scheme = ?2 "
+      "wall_s, n_modes, steps, cpu_s FROM results WHERE study = ?1 AND scheme = ?2 "
       "AND dt_requested_s IS NOT NULL ORDER BY point_id",
       {study, scheme});
 }

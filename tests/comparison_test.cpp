@@ -144,12 +144,18 @@ TEST(RunTiming, ShortRunsAreTimedRepeatedlyUntilTheTotal) {
   run.dt_s = o.dt.Resolve(model.bounds);
   const RunSummary first =
       RunTransient(*model.system, NewmarkParametersOf(o.scheme), model.x0, model.v0, run).summary;
-  const RunTiming t = TimeRepeatedly(problem, o, first, 0.005, 1000);
+  const RunTiming t = TimeRepeatedly(problem, o, first, 0.005, 1, 1000);
   EXPECT_GT(t.repeats, 1);
   EXPECT_GE(t.repeats * t.wall_s, 0.25 * 0.005) << t.repeats << " runs, median " << t.wall_s;
-  const RunTiming once = TimeRepeatedly(problem, o, first, 0.0, 1000);
+  const RunTiming once = TimeRepeatedly(problem, o, first, 0.0, 1, 1000);
   EXPECT_EQ(once.repeats, 1);
   EXPECT_EQ(once.wall_s, first.wall_s);
+  // A first run that took the whole budget (preempted) is still run the minimum number of times.
+  RunSummary preempted = first;
+  preempted.wall_s = 1.0;
+  const RunTiming five = TimeRepeatedly(problem, o, preempted, 0.005, 5, 1000);
+  EXPECT_EQ(five.repeats, 5);
+  EXPECT_LT(five.wall_s, 1.0);
 }
 
 // The progress callback sees the simulated time at every divergence check, rising to the end.

@@ -23,6 +23,9 @@ struct ScoredPoint {
   double dt_sharp_s = 0.0;
   double dt_paper_s = 0.0;
   double wall_s = 0.0;
+  // CPU time of the single-threaded numerical run: unlike wall time, not inflated when the
+  // machine is shared (docs/physics.md §4.4).
+  double cpu_s = 0.0;
   int n_modes = 0;
   std::int64_t steps = 0;
 

@@ -153,7 +153,7 @@ double MedianSecondsPerModeStep(const std::vector<ScoredPoint>& points) {
   std::vector<double> per_mode_step;
   for (const auto& p : points) {
     if (p.status == RunStatus::kOk && p.steps > 0 && p.n_modes > 0) {
-      per_mode_step.push_back(p.wall_s / (static_cast<double>(p.steps) * p.n_modes));
+      per_mode_step.push_back(p.cpu_s / (static_cast<double>(p.steps) * p.n_modes));
     }
   }
   if (per_mode_step.empty()) return 0.0;
@@ -181,7 +181,7 @@ Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
   a.window_s = spec.scoring.window_s;
   a.steps = static_cast<std::int64_t>(std::ceil(a.window_s / a.dt_s));
   a.seconds_per_mode_step = MedianSecondsPerModeStep(points);
-  a.expected_wall_s = a.seconds_per_mode_step * static_cast<double>(a.steps) * a.n_modes;
+  a.expected_cpu_s = a.seconds_per_mode_step * static_cast<double>(a.steps) * a.n_modes;
   a.nearest = NearestPoints(points, basis);
   a.studied_r_k = std::move(basis.studied_r_k);
   a.basis = std::move(basis.words);
@@ -196,9 +196,9 @@ std::string AdviceSummary(const Advice& a) {
       "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s\n"
       "  basis        {}\n"
       "  cost         {} steps over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
-      "step (median of the stored runs)\n",
+      "step (CPU time, median of the stored runs)\n",
       a.r_k, a.r_ftrunc, a.n_modes, a.dt_s, a.dt_ratio, a.dt_sharp_s, a.basis, a.steps, a.window_s,
-      a.expected_wall_s, 1e9 * a.seconds_per_mode_step);
+      a.expected_cpu_s, 1e9 * a.seconds_per_mode_step);
   if (!a.nearest.empty()) {
     s += fmt::format("  nearest stored points\n  {:>10}  {:>9}  {:>11}  {:<22}  {:>6}  {:>6}\n",
                      "R_k", "R_ftrunc", "dt/dt_sharp", "status", "Err", "SRf");
@@ -232,7 +232,7 @@ nlohmann::json AdviceToJson(const Advice& a) {
           {"steps", a.steps},
           {"window_s", a.window_s},
           {"seconds_per_mode_step", a.seconds_per_mode_step},
-          {"expected_wall_s", a.expected_wall_s},
+          {"expected_cpu_s", a.expected_cpu_s},
           {"studied_r_k", a.studied_r_k},
           {"basis", a.basis},
           {"nearest", nearest},

@@ -22,8 +22,8 @@ struct Advice {
   int n_modes = 0;
   std::int64_t steps = 0;  // Over the study's observation window.
   double window_s = 0.0;
-  double seconds_per_mode_step = 0.0;  // Median of the study's stored explicit runs.
-  double expected_wall_s = 0.0;
+  double seconds_per_mode_step = 0.0;  // CPU time, median of the stored explicit runs.
+  double expected_cpu_s = 0.0;
   // The studied R_k the advice rests on: the asked one, the two around it, or the nearest.
   std::vector<double> studied_r_k;
   std::string basis;  // How r_ftrunc and dt_ratio were chosen, in words.

@@ -1,5 +1,5 @@
 #pragma once
-// What accuracy costs in time: for each R_k, Err and SRf against the wall time of every
+// What accuracy costs in time: for each R_k, Err and SRf against the CPU time of every
 // (R_ftrunc, dt, scheme) point, the Pareto front (no other point both faster and more accurate)
 // and the implicit/explicit time ratio at equal accuracy.
 
@@ -23,7 +23,7 @@ struct CostTable {
   double r_k = 0.0;
   std::optional<double> asked_r_k;  // The --rk this studied R_k is the nearest to.
   std::vector<CostRow> rows;        // Scored points, fastest first.
-  // Median over implicit points of wall(implicit) / wall(cheapest explicit point at least as
+  // Median over implicit points of cpu(implicit) / cpu(cheapest explicit point at least as
   // accurate); nullopt when no implicit point has an explicit match.
   std::optional<double> implicit_over_explicit;
   int ratio_pairs = 0;
@@ -38,7 +38,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
                                        std::optional<double> r_k,
                                        const CriteriaOptions& thresholds = {});
 std::string CostSummary(const std::vector<CostTable>& tables);
-// Err against wall time of one table, the Pareto front joined. Throws InputError when empty.
+// Err against CPU time of one table, the Pareto front joined. Throws InputError when empty.
 void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file);
 
 }  // namespace shockmap

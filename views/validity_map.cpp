@@ -106,7 +106,7 @@ double CellValue(const ScoredPoint& p, MapMetric metric, const CriteriaOptions& 
     case MapMetric::kSrf:
       return p.srf.value_or(NAN);
     case MapMetric::kCost:
-      return p.wall_s;
+      return p.cpu_s;
     case MapMetric::kStatus:
       return ClassOf(p, th);
   }
@@ -155,7 +155,7 @@ MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
               "SRf", fmt::format("SRf (paper eq. 9); threshold {:g}", th.srf_min)};
     case MapMetric::kCost:
       return {"set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n",
-              "wall time (s)", "wall time of the numerical run"};
+              "CPU time (s)", "CPU time of the numerical run"};
     case MapMetric::kStatus:
       return {
           "set palette maxcolors 6\n"
@@ -217,7 +217,7 @@ plot {data} using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb '#fff
      '' using 1:($8 == 4 ? $2 : 1/0):3:4:5:6 with boxxyerror fs solid 1.0 border lc rgb '#ffffff' fc rgb '#bdbdbd' title 'reference unconverged (not scored)', \
      '' using 1:($8 == 2 ? $2 : 1/0) with points pt 2 ps 2 lw 2 lc rgb '#000000' title 'diverged', \
      '' using 1:($8 == 3 ? $2 : 1/0) with points pt 6 ps 2 lw 2 lc rgb '#000000' title 'failed', \
-     '' using 1:($8 == 5 ? $2 : 1/0) with points pt 4 ps 2 lw 2 lc rgb '#762a83' title 'unstable (energy grew > {unstable:g}x)'{overlays}
+     '' using 1:($8 == 5 ? $2 : 1/0) with points pt 4 ps 2 lw 2 lc rgb '#000000' title 'unstable (energy grew > {unstable:g}x)'{overlays}
 )",
       fmt::arg("terminal", TerminalFor(f.image, 1100, 800)),
       fmt::arg("out", GnuplotFileName(f.image)),
