@@ -39,8 +39,8 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
       Counted(static_cast<long long>(scene.zones.size()), "zone"),
       Counted(run.coordinates, "modal coordinate"), *fewest, *most, scene.solver.r_ftrunc,
       Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
-  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", s.dt_used_s,
-             s.dt_requested_s, s.steps_taken);
+  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {}\n", s.dt_used_s, s.dt_requested_s,
+             Counted(s.steps_taken, "step"));
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
              run.bounds.dt_paper_s, run.bounds.dt_sharp_s);
   fmt::print(
@@ -54,15 +54,15 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
         std::count_if(run.max_contact_force_n.begin(), run.max_contact_force_n.end(),
                       [](double f) { return f > 0; });
     fmt::print(
-        "  contact           {} of {} zones touched; largest force {:.4g} N in {}\n", touched,
-        scene.zones.size(), *largest,
+        "  contact           {} of {} touched; largest force {:.4g} N in {}\n", touched,
+        Counted(static_cast<long long>(scene.zones.size()), "zone"), *largest,
         scene.zones[static_cast<std::size_t>(largest - run.max_contact_force_n.begin())].name);
   }
   if (!run.shocks.empty()) {
     std::size_t shocks = 0;
     for (const auto& z : run.shocks) shocks += z.size();
-    fmt::print("  shocks            {} over all zones (rest duration {:g} s)\n", shocks,
-               scene.outputs.rest_duration_s);
+    fmt::print("  shocks            {} over all zones (rest duration {:g} s)\n",
+               Counted(static_cast<long long>(shocks), "shock"), scene.outputs.rest_duration_s);
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
+#include "formats/counted.h"
 
 namespace shockmap {
 namespace {
@@ -192,13 +193,13 @@ Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
 std::string AdviceSummary(const Advice& a) {
   std::string s = fmt::format(
       "advice for R_k = {:g}\n"
-      "  R_ftrunc     {:.4g} ({} modes)\n"
+      "  R_ftrunc     {:.4g} ({})\n"
       "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s\n"
       "  basis        {}\n"
-      "  cost         {} steps over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
+      "  cost         {} over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
       "step (CPU time, median of the stored runs)\n",
-      a.r_k, a.r_ftrunc, a.n_modes, a.dt_s, a.dt_ratio, a.dt_sharp_s, a.basis, a.steps, a.window_s,
-      a.expected_cpu_s, 1e9 * a.seconds_per_mode_step);
+      a.r_k, a.r_ftrunc, Counted(a.n_modes, "mode"), a.dt_s, a.dt_ratio, a.dt_sharp_s, a.basis,
+      Counted(a.steps, "step"), a.window_s, a.expected_cpu_s, 1e9 * a.seconds_per_mode_step);
   if (!a.nearest.empty()) {
     s += fmt::format("  nearest stored points\n  {:>10}  {:>9}  {:>11}  {:<22}  {:>6}  {:>6}\n",
                      "R_k", "R_ftrunc", "dt/dt_sharp", "status", "Err", "SRf");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "formats/counted.h"
 #include "formats/json_reader.h"
 
 namespace shockmap {
@@ -187,9 +188,10 @@ std::string StabilityLine(const ValidityCriteria& c, const std::vector<ScoredPoi
 
 std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
                             const std::vector<ScoredPoint>& points) {
-  std::string s = fmt::format(
-      "criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored points)\n", study,
-      c.options.err_max, c.options.srf_min, points.size());
+  std::string s =
+      fmt::format("criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored)\n",
+                  study, c.options.err_max, c.options.srf_min,
+                  Counted(static_cast<long long>(points.size()), "point"));
   s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
                    "dt/dt_sharp max", "passing");
   for (const auto& b : c.boundary) {
