@@ -8,6 +8,8 @@
 
 #include "app/flag_checks.h"
 #include "core/input_error.h"
+#include "engine/progress_reporter.h"
+#include "formats/counted.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
 #include "formats/scene_outputs.h"
@@ -20,6 +22,7 @@ struct SimulateFlags {
   std::string scene_file;
   std::string out_dir;
   bool json = false;
+  bool quiet = false;
   SceneFileAccess access;
 };
 
@@ -31,12 +34,13 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
   fmt::print("  status            {}{} (max energy ratio {:.4g})\n", ToString(s.status),
              s.message.empty() ? "" : " (" + s.message + ")", s.max_energy_ratio);
   fmt::print(
-      "  model             {} beams, {} zones, {} modal coordinates ({}-{} modes per beam and "
-      "plane, R_ftrunc = {:g}), {} distinct modal bases\n",
-      scene.beams.size(), scene.zones.size(), run.coordinates, *fewest, *most,
-      scene.solver.r_ftrunc, run.distinct_bases);
-  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", s.dt_used_s,
-             s.dt_requested_s, s.steps_taken);
+      "  model             {}, {}, {} ({}-{} modes per beam and plane, R_ftrunc = {:g}), {}\n",
+      Counted(static_cast<long long>(scene.beams.size()), "beam"),
+      Counted(static_cast<long long>(scene.zones.size()), "zone"),
+      Counted(run.coordinates, "modal coordinate"), *fewest, *most, scene.solver.r_ftrunc,
+      Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
+  fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {}\n", s.dt_used_s, s.dt_requested_s,
+             Counted(s.steps_taken, "step"));
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
              run.bounds.dt_paper_s, run.bounds.dt_sharp_s);
   fmt::print(
@@ -50,15 +54,15 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
         std::count_if(run.max_contact_force_n.begin(), run.max_contact_force_n.end(),
                       [](double f) { return f > 0; });
     fmt::print(
-        "  contact           {} of {} zones touched; largest force {:.4g} N in {}\n", touched,
-        scene.zones.size(), *largest,
+        "  contact           {} of {} touched; largest force {:.4g} N in {}\n", touched,
+        Counted(static_cast<long long>(scene.zones.size()), "zone"), *largest,
         scene.zones[static_cast<std::size_t>(largest - run.max_contact_force_n.begin())].name);
   }
   if (!run.shocks.empty()) {
     std::size_t shocks = 0;
     for (const auto& z : run.shocks) shocks += z.size();
-    fmt::print("  shocks            {} over all zones (rest duration {:g} s)\n", shocks,
-               scene.outputs.rest_duration_s);
+    fmt::print("  shocks            {} over all zones (rest duration {:g} s)\n",
+               Counted(static_cast<long long>(shocks), "shock"), scene.outputs.rest_duration_s);
   }
 }
 
@@ -87,8 +91,12 @@ void Run(const SimulateFlags& f) {
                     "--out (with the names of the files written into it)");
   }
   SceneRun run;
+  ProgressReporter progress("simulate " + scene.name, "s simulated", scene.solver.end_time_s,
+                            stderr, !f.quiet);
   try {
-    run = RunScene(scene);
+    run = RunScene(scene, [&](double t_s) { progress.Update(t_s); });
+    progress.Finish(run.result.summary.dt_used_s *
+                    static_cast<double>(run.result.summary.steps_taken));
   } catch (const InputError& e) {
     throw InputError(f.scene_file + ": " + e.what());
   }
@@ -117,6 +125,7 @@ void AddSimulateCommand(CLI::App& app) {
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");
   cmd->add_flag("--json", flags->json, "print the summary as one JSON object");
+  cmd->add_flag("--quiet", flags->quiet, "no progress on stderr");
   AddAllowPathFlag(cmd, flags->access);
   cmd->callback([flags] { Run(*flags); });
 }

@@ -12,6 +12,7 @@
 #include "db/study_queries.h"
 #include "engine/stop_request.h"
 #include "engine/study_run.h"
+#include "formats/counted.h"
 #include "formats/output_file.h"
 #include "views/query_output.h"
 
@@ -51,21 +52,37 @@ struct StudyFlags {
   SceneFileAccess access;
 };
 
-void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
+// A rerun with nothing left to compute says so, and how to compute the failed points again.
+void PrintNothingToDo(const StudyRunSummary& s, const StudyRunOptions& options) {
+  fmt::print("study {}: all {} already stored in {}; nothing to compute\n", s.study,
+             Counted(static_cast<long long>(s.points_in_study), "point"), options.database_path);
+  if (!options.retry_failed) {
+    fmt::print(
+        "  `shockmap study status {}` shows their outcomes; --retry-failed computes the "
+        "failed ones again\n",
+        s.study);
+  }
+}
+
+void PrintSummary(const StudyRunSummary& s, const StudyRunOptions& options) {
+  if (s.points_to_compute == 0 && s.stop_signal == 0) return PrintNothingToDo(s, options);
   const double rate = s.point_wall_s > 0 ? s.points_computed / s.point_wall_s : 0.0;
-  const std::string workers =
-      s.worker_ranks > 0
-          ? fmt::format("{} worker ranks x {} threads", s.worker_ranks, s.jobs / s.worker_ranks)
-          : fmt::format("{} jobs", s.jobs);
-  fmt::print("study {}: {} points in the study, {} computed now ({})\n", s.study, s.points_in_study,
-             s.points_computed, workers);
-  fmt::print("  outcomes     ok {}, diverged {}, failed {}, reference_unconverged {}\n", s.ok,
-             s.diverged, s.failed, s.reference_unconverged);
-  fmt::print("  references   {} computed, {} reused from the database\n", s.references_computed,
-             s.references_reused);
+  const std::string workers = s.worker_ranks > 0
+                                  ? fmt::format("{} x {}", Counted(s.worker_ranks, "worker rank"),
+                                                Counted(s.jobs / s.worker_ranks, "thread"))
+                                  : Counted(s.jobs, "job");
+  fmt::print("study {}: {} in the study, {} computed now ({})\n", s.study,
+             Counted(static_cast<long long>(s.points_in_study), "point"), s.points_computed,
+             workers);
+  fmt::print("  outcomes     {}\n", OutcomeCounts(s));
+  fmt::print(
+      "  references   {} computed, {} reused from the database ({} unconverged, {} failed "
+      "of those computed)\n",
+      s.references_computed, s.references_reused, s.references_unconverged, s.references_failed);
   if (!s.previous_run.empty()) fmt::print("  previous     {}\n", s.previous_run);
   if (s.points_reclaimed > 0) {
-    fmt::print("  resumed      {} points left running by a stopped run\n", s.points_reclaimed);
+    fmt::print("  resumed      {} left running by a stopped run\n",
+               Counted(s.points_reclaimed, "point"));
   }
   fmt::print(
       "  wall time    {:.2f} s: references {:.2f} s ({:.0f} %), points {:.2f} s ({:.1f} "
@@ -81,7 +98,7 @@ void PrintSummary(const StudyRunSummary& s, const std::string& database_path) {
         m.tasks, m.task_bytes / 1e6, m.largest_task, m.results, m.result_bytes / 1e6,
         m.largest_result);
   }
-  fmt::print("  database     {}\n", database_path);
+  fmt::print("  database     {}\n", options.database_path);
 }
 
 // Exit code of a run stopped by a signal: 128 + the signal, as a shell reports it.
@@ -114,7 +131,7 @@ void Run(const StudyFlags& f) {
   const StudyFile study = ReadStudyFile(f.spec_path, f.access);
   InstallStopHandlers();
   const StudyRunSummary s = RunStudy(study, options);
-  PrintSummary(s, options.database_path);
+  PrintSummary(s, options);
   if (s.stop_signal != 0) {
     for (const std::string& task : s.abandoned) {
       fmt::print(stderr, "shockmap: no answer for {}; it is pending again\n", task);

@@ -26,6 +26,7 @@ struct ViewFlags {
   CriteriaOptions thresholds;
   std::string out;
   double r_k = 0.0;
+  bool json = false;
 };
 
 void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
@@ -75,7 +76,7 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
       "cost",
       "Err against wall time for every point, Pareto front, implicit/explicit time "
       "ratio at equal accuracy");
-  AddCommon(cost, *flags, false);
+  AddCommon(cost, *flags, true);
   cost->add_option("--rk", flags->r_k, "one R_k (the nearest studied)")->check(Positive());
   cost->add_option("--out", flags->out,
                    "plot of the R_k given by --rk (default: out/STUDY_cost_rkX.png, X to six "
@@ -88,10 +89,10 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
     }
     CheckPlotPath(flags->out);
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
-    const auto tables =
-        BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
-                        LoadScoredPoints(flags->database_path, study, "implicit-full"),
-                        flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt);
+    const auto tables = BuildCostTables(
+        LoadScoredPoints(flags->database_path, study, "explicit-modal"),
+        LoadScoredPoints(flags->database_path, study, "implicit-full"),
+        flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt, flags->thresholds);
     std::cout << CostSummary(tables);
     if (flags->r_k > 0 && !tables.empty()) {
       const std::string out =
@@ -112,12 +113,19 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
   advise->add_option("--rk", flags->r_k, "stiffness ratio to advise for")
       ->required()
       ->check(Positive());
+  advise->add_flag("--json", flags->json, "print the advice as one JSON object");
   advise->callback([flags] {
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
     const Advice a = Advise(StoredSpec(flags->database_path, study),
                             DeriveCriteria(points, flags->thresholds), points, flags->r_k);
-    std::cout << AdviceSummary(a);
+    if (flags->json) {
+      nlohmann::json j = AdviceToJson(a);
+      j["study"] = study;
+      std::cout << j.dump(2) << '\n';
+    } else {
+      std::cout << AdviceSummary(a);
+    }
   });
 }
 

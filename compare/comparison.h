@@ -46,8 +46,8 @@ struct ComparisonResult {
   // The numerical run's status, or kReferenceUnconverged when it ran but nothing is scored.
   RunStatus status = RunStatus::kOk;
   std::string message;
-  std::optional<double> err;  // Set only when status is kOk.
-  std::optional<double> srf;  // Set when status is kOk and either side has a shock.
+  std::optional<double> err;  // Set only when status is kOk or kUnstable.
+  std::optional<double> srf;  // Set when err is and either side has a shock.
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;  // The one srf was computed with.
   int n_modes = 0;
   int n_elements = 0;
@@ -67,5 +67,21 @@ ComparisonResult RunComparison(const CantileverImpact& problem, const Comparison
 ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
                                        const ComparisonOptions& options,
                                        std::shared_ptr<const ReferenceRun> reference);
+
+// The wall and CPU time of a point's numerical run as the median of `repeats` runs of the same
+// model, so that the cost of runs of a few microseconds is not one sample of timer noise.
+struct RunTiming {
+  double wall_s = 0.0;
+  double cpu_s = 0.0;
+  int repeats = 1;
+};
+
+// Runs the numerical run of (problem, options) again, model built once, until at least
+// min_repeats runs were made and their total wall time reaches min_total_s, or max_repeats
+// runs were made (the first one included, given as `first`); the median of all, so that a run
+// the scheduler preempted once does not set the cost. Preconditions as RunComparison's.
+RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOptions& options,
+                         const RunSummary& first, double min_total_s, int min_repeats,
+                         int max_repeats);
 
 }  // namespace shockmap

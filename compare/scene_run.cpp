@@ -41,7 +41,7 @@ void CheckAffordable(const Scene& scene, const TransientOptions& options,
 
 }  // namespace
 
-SceneRun RunScene(const Scene& scene) {
+SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progress) {
   SceneRun run;
   const auto start = std::chrono::steady_clock::now();
   SceneModel model = BuildSceneModel(scene);
@@ -64,6 +64,7 @@ SceneRun RunScene(const Scene& scene) {
   options.track_impact_statistics = out.impact_statistics;
   options.impact_counting = out.impact_counting;
   options.observed_rows = std::move(model.observed_rows);
+  options.on_progress = std::move(on_progress);
   CheckAffordable(scene, options, model.bounds);
   run.result = RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0,
                             model.v0, options);

@@ -3,6 +3,7 @@
 // effects only, and keep exactly the outputs the scene requests (docs/physics.md §5,
 // docs/architecture.md).
 
+#include <functional>
 #include <vector>
 
 #include "core/scene.h"
@@ -33,6 +34,7 @@ struct SceneRun {
 
 // Preconditions: the scene was validated (LoadScene). Integrates with central differences at
 // scene.solver.dt resolved against the model's bounds.
-SceneRun RunScene(const Scene& scene);
+// `on_progress` gets the simulated time every few dozen steps (TransientOptions::on_progress).
+SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progress = {});
 
 }  // namespace shockmap

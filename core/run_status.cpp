@@ -8,6 +8,8 @@ std::string ToString(RunStatus s) {
       return "ok";
     case RunStatus::kDiverged:
       return "diverged";
+    case RunStatus::kUnstable:
+      return "unstable";
     case RunStatus::kFailed:
       return "failed";
     case RunStatus::kReferenceUnconverged:

@@ -15,7 +15,8 @@ bool TransientOptions::IsValid(std::string* error) const {
   if (!RequirePositive("end_time_s", end_time_s, error) || !RequirePositive("dt_s", dt_s, error) ||
       !RequireAtLeast("record_stride", record_stride, 1, error) ||
       !RequireAtLeast("divergence_check_stride", divergence_check_stride, 1, error) ||
-      !RequireAtLeast("energy_growth_limit", energy_growth_limit, 1.0, error)) {
+      !RequireAtLeast("energy_growth_limit", energy_growth_limit, 1.0, error) ||
+      !RequireAtLeast("unstable_energy_ratio", unstable_energy_ratio, 1.0, error)) {
     return false;
   }
   if (track_impact_statistics && !impact_counting.IsValid(error)) return false;
@@ -190,7 +191,14 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
           return finish(RunStatus::kDiverged, msg.str());
         }
       }
+      if (options.on_progress) options.on_progress(integrator.T());
     }
+  }
+  if (!dissipates && summary.max_energy_ratio > options.unstable_energy_ratio) {
+    std::ostringstream msg;
+    msg << "undamped, energy grew to " << summary.max_energy_ratio
+        << " times its initial value (unstable above " << options.unstable_energy_ratio << ")";
+    return finish(RunStatus::kUnstable, msg.str());
   }
   return finish(RunStatus::kOk, "");
 }

@@ -3,6 +3,7 @@
 // energy balance, divergence detection and a summary.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct TransientOptions {
   // gain energy at contact switches and grow slowly; they cross it later or not at all within
   // the window, and their max_energy_ratio shows it.
   double energy_growth_limit = 1e3;
+  // An undamped run that reaches its end with max_energy_ratio above this is kUnstable
+  // (core/run_status.h, docs/physics.md §3.1).
+  double unstable_energy_ratio = kUnstableEnergyRatio;
+  // Called with the simulated time at every divergence check (every divergence_check_stride
+  // steps): what a progress display needs, at no cost per step. Runs on the integrating thread.
+  std::function<void(double t_s)> on_progress;
   // Refused above this: 1e8 steps of a few modes is minutes; more is a units mistake.
   std::int64_t max_steps = 100'000'000;
   bool record_energy = true;

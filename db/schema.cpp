@@ -250,6 +250,122 @@ LEFT JOIN runs ru ON ru.run_id = p.run_id;
     R"sql(
 CREATE VIEW scene_params AS SELECT * FROM scene_results;
 )sql",
+    // 6 -> 7: the status 'unstable' (core/run_status.h, docs/physics.md §3.1). SQLite cannot
+    // change a CHECK constraint in place: both point tables are rebuilt with the same columns in
+    // the same order (foreign keys are off while migrating, so the scores keep their rows), and
+    // the views that read them (scene_params too) are dropped first and made again.
+    // Stored canonical points that ended 'ok' undamped with an energy ratio above the limit
+    // become 'unstable', as a new run classifies them; scene points keep their status until
+    // recomputed (their damping is in their scene, not in a column).
+    R"sql(
+DROP VIEW scene_params;
+DROP VIEW results;
+DROP VIEW scene_results;
+CREATE TABLE points_v7 (
+  point_id           INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key          TEXT NOT NULL,
+  reference_key      TEXT NOT NULL,
+  r_k                REAL NOT NULL,
+  r_ftrunc           REAL NOT NULL,
+  scheme             TEXT NOT NULL,
+  dt_rule            TEXT,
+  dt_factor          REAL,
+  dt_asked_s         REAL,
+  window_s           REAL NOT NULL,
+  n_elements_asked   INTEGER NOT NULL,
+  mass_damping_per_s REAL NOT NULL,
+  status             TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message            TEXT NOT NULL DEFAULT '',
+  run_id             INTEGER REFERENCES runs(run_id),
+  updated_utc        TEXT NOT NULL,
+  host               TEXT,
+  rank               INTEGER,
+  UNIQUE (study_id, point_key)
+);
+INSERT INTO points_v7 SELECT point_id, study_id, point_key, reference_key, r_k, r_ftrunc, scheme,
+  dt_rule, dt_factor, dt_asked_s, window_s, n_elements_asked, mass_damping_per_s, status,
+  message, run_id, updated_utc, host, rank FROM points;
+DROP TABLE points;
+ALTER TABLE points_v7 RENAME TO points;
+CREATE INDEX points_by_status ON points(study_id, status);
+UPDATE points SET status = 'unstable',
+  message = 'undamped, energy grew to ' ||
+    (SELECT printf('%.6g', max_energy_ratio) FROM scores WHERE scores.point_id = points.point_id) ||
+    ' times its initial value (unstable above 5)'
+WHERE status = 'ok' AND mass_damping_per_s = 0
+  AND point_id IN (SELECT point_id FROM scores WHERE max_energy_ratio > 5);
+CREATE TABLE scene_points_v7 (
+  point_id                INTEGER PRIMARY KEY,
+  study_id                INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key               TEXT NOT NULL,
+  reference_key           TEXT NOT NULL,
+  parameters_json         TEXT NOT NULL,
+  status                  TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message                 TEXT NOT NULL DEFAULT '',
+  run_id                  INTEGER REFERENCES runs(run_id),
+  updated_utc             TEXT NOT NULL,
+  reference_id            INTEGER REFERENCES scene_references(reference_id),
+  err                     REAL,
+  srf                     REAL,
+  coordinates             INTEGER,
+  zones                   INTEGER,
+  dt_used_s               REAL,
+  dt_paper_s              REAL,
+  dt_sharp_s              REAL,
+  steps                   INTEGER,
+  wall_s                  REAL,
+  cpu_s                   REAL,
+  max_energy_ratio        REAL,
+  largest_force_n         REAL,
+  largest_force_zone      TEXT,
+  n_shocks                INTEGER,
+  first_shock_peak_n      REAL,
+  first_shock_impulse_n_s REAL,
+  host                    TEXT,
+  rank                    INTEGER,
+  UNIQUE (study_id, point_key)
+);
+INSERT INTO scene_points_v7 SELECT point_id, study_id, point_key, reference_key, parameters_json,
+  status, message, run_id, updated_utc, reference_id, err, srf, coordinates, zones, dt_used_s,
+  dt_paper_s, dt_sharp_s, steps, wall_s, cpu_s, max_energy_ratio, largest_force_n,
+  largest_force_zone, n_shocks, first_shock_peak_n, first_shock_impulse_n_s, host, rank
+FROM scene_points;
+DROP TABLE scene_points;
+ALTER TABLE scene_points_v7 RENAME TO scene_points;
+CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);
@@ -318,8 +434,9 @@ void MigrateToCurrent(Connection& db) {
   Transaction t(db);
   const int from = CheckedVersion(db);
   for (int version = from; version < kSchemaVersion; ++version) db.Execute(kMigrations[version]);
-  // Scene points stored before schema 6 get their parameter columns at once.
-  if (from > 0 && from < 6) RefreshSceneParamsView(db);
+  // The migrations write scene_params without parameter columns: points already stored get
+  // theirs at once.
+  if (from > 0 && from < kSchemaVersion) RefreshSceneParamsView(db);
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   t.Commit();

@@ -11,7 +11,7 @@ QueryResult StudyProgress(const std::string& database_path) {
       database_path,
       "SELECT st.name AS study, count(*) AS points, "
       "sum(p.status = 'ok') AS ok, sum(p.status = 'diverged') AS diverged, "
-      "sum(p.status = 'failed') AS failed, "
+      "sum(p.status = 'unstable') AS unstable, sum(p.status = 'failed') AS failed, "
       "sum(p.status = 'reference_unconverged') AS reference_unconverged, "
       "sum(p.status = 'pending') AS pending, sum(p.status = 'running') AS running, "
       "max(p.updated_utc) AS last_update "
@@ -57,7 +57,7 @@ QueryResult ScoredPointRows(const std::string& database_path, const std::string&
   return RunReadOnlyQuery(
       database_path,
       "SELECT point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s, "
-      "wall_s, n_modes, steps FROM results WHERE study = ?1 AND scheme = ?2 "
+      "wall_s, n_modes, steps, cpu_s FROM results WHERE study = ?1 AND scheme = ?2 "
       "AND dt_requested_s IS NOT NULL ORDER BY point_id",
       {study, scheme});
 }

@@ -43,6 +43,9 @@ class CanonicalStudy {
                                                           const std::string& key) const;
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
+  // Its two truncations agree within the study's reference tolerance (docs/physics.md §2);
+  // progress counts the references that do not.
+  bool ReferenceConverged(const Reference& reference) const;
 
   // The point's scheme on the canonical scene, Err and SRf against the reference; nothing
   // scored when the reference is unconverged (docs/physics.md §4).

@@ -1,8 +1,10 @@
 #include "engine/progress_reporter.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
-#include <string>
+#include <algorithm>
+#include <cmath>
 
 namespace shockmap {
 namespace {
@@ -10,45 +12,60 @@ namespace {
 // Plain lines every 5 s keep CI logs readable; a terminal bar redraws at most 10 times a second.
 constexpr double kLineInterval_s = 5.0;
 constexpr double kBarInterval_s = 0.1;
+constexpr int kBarWidth = 30;
 
 }  // namespace
 
-ProgressReporter::ProgressReporter(long total, std::FILE* out, bool enabled)
-    : total_(total),
+std::string FormatDuration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  const auto s = static_cast<long>(std::lround(seconds));
+  if (s < 60) return fmt::format("{} s", s);
+  if (s < 3600) return fmt::format("{} min {:02} s", s / 60, s % 60);
+  return fmt::format("{} h {:02} min", s / 3600, (s % 3600) / 60);
+}
+
+ProgressReporter::ProgressReporter(std::string phase, std::string unit, double total,
+                                   std::FILE* out, bool enabled)
+    : phase_(std::move(phase)),
+      unit_(std::move(unit)),
+      total_(total),
       out_(out),
       enabled_(enabled && total > 0),
       terminal_(isatty(fileno(out)) != 0),
       start_(std::chrono::steady_clock::now()),
       last_print_(start_) {}
 
-void ProgressReporter::Update(long done, long diverged, long failed) {
+void ProgressReporter::Update(double done, std::string_view detail) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_print_).count();
   if (since < (terminal_ ? kBarInterval_s : kLineInterval_s)) return;
   last_print_ = now;
-  Print(done, diverged, failed, false);
+  Print(done, detail, false);
 }
 
-void ProgressReporter::Finish(long done, long diverged, long failed) {
-  if (enabled_) Print(done, diverged, failed, true);
+void ProgressReporter::Finish(double done, std::string_view detail) {
+  if (enabled_) Print(done, detail, true);
 }
 
-void ProgressReporter::Print(long done, long diverged, long failed, bool final_line) {
+void ProgressReporter::Print(double done, std::string_view detail, bool final_line) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  const double rate = elapsed > 0.0 ? static_cast<double>(done) / elapsed : 0.0;
-  const double eta = rate > 0.0 ? static_cast<double>(total_ - done) / rate : 0.0;
+  const double rate = elapsed > 0.0 ? done / elapsed : 0.0;
+  const std::string eta =
+      final_line ? "took " + FormatDuration(elapsed)
+                 : "ETA " + (rate > 0.0 ? FormatDuration((total_ - done) / rate) : "?");
+  std::string line =
+      fmt::format("{} {:.4g}/{:.4g} {}, {:.3g}/s, {}", phase_, done, total_, unit_, rate, eta);
+  if (!detail.empty()) line += fmt::format(", {}", detail);
   if (terminal_) {
-    constexpr int kWidth = 30;
-    const int filled = static_cast<int>(kWidth * done / total_);
-    const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
-    std::fprintf(out_, "\r[%s] %ld/%ld points, %.1f/s, ETA %.0f s, diverged %ld, failed %ld  ",
-                 bar.c_str(), done, total_, rate, eta, diverged, failed);
-    if (final_line) std::fprintf(out_, "\n");
+    // The tolerance fills the bar at the end of a phase whose done is a sum of floats.
+    const int filled = static_cast<int>(kBarWidth * std::clamp(done / total_, 0.0, 1.0) + 1e-6);
+    const std::string bar = std::string(filled, '#') + std::string(kBarWidth - filled, '.');
+    // Redrawn in place: carriage return, then erase what a longer previous line left.
+    std::fprintf(out_, "\r\033[K[%s] %s%s", bar.c_str(), line.c_str(), final_line ? "\n" : "");
   } else {
-    std::fprintf(out_, "progress: %ld/%ld points, %.1f/s, ETA %.0f s, diverged %ld, failed %ld\n",
-                 done, total_, rate, eta, diverged, failed);
+    std::fprintf(out_, "progress: %s\n", line.c_str());
   }
   std::fflush(out_);
 }

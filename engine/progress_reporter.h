@@ -1,28 +1,42 @@
 #pragma once
-// Progress of a study on stderr: a live bar on a terminal, periodic plain lines otherwise.
+// Progress of one phase of work on stderr: a live bar on a terminal, a plain line every few
+// seconds otherwise (logs, CI, an MPI launcher's output). One reporter per phase: the study
+// engine opens one for references and one for points (so every study kind gets both), and
+// `simulate` one for the simulated time of a transient run.
 
 #include <chrono>
 #include <cstdio>
+#include <string>
+#include <string_view>
 
 namespace shockmap {
 
 class ProgressReporter {
  public:
-  // `total` points to compute; writes to `out` (stderr in the CLI), nothing when `enabled` is
-  // false.
-  ProgressReporter(long total, std::FILE* out, bool enabled);
-  void Update(long done, long diverged, long failed);
-  void Finish(long done, long diverged, long failed);
+  // `phase` names the work ("references", "points", "simulate bundle_hex"), `unit` what
+  // done and total count ("references", "points", "s simulated"); writes to `out`, nothing
+  // when `enabled` is false or total <= 0.
+  ProgressReporter(std::string phase, std::string unit, double total, std::FILE* out, bool enabled);
+  // `detail` follows the numbers ("diverged 3, failed 0"). Prints at most every 0.1 s on a
+  // terminal and every 5 s otherwise, so a caller may call it after every item.
+  void Update(double done, std::string_view detail = {});
+  // The phase's last line, always printed when enabled.
+  void Finish(double done, std::string_view detail = {});
 
  private:
-  void Print(long done, long diverged, long failed, bool final_line);
+  void Print(double done, std::string_view detail, bool final_line);
 
-  long total_;
+  std::string phase_;
+  std::string unit_;
+  double total_;
   std::FILE* out_;
   bool enabled_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
 };
+
+// "12 s", "3 min 20 s", "1 h 05 min": a duration for a progress line.
+std::string FormatDuration(double seconds);
 
 }  // namespace shockmap

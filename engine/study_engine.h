@@ -6,6 +6,7 @@
 // db/study_database.h).
 
 #include <algorithm>
+#include <concepts>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -44,8 +45,11 @@ struct StudyRunSummary {
   std::size_t points_in_study = 0;
   std::size_t points_to_compute = 0;  // Found pending (or failed, with retry) at the start.
   std::size_t points_computed = 0;
-  long ok = 0, diverged = 0, failed = 0, reference_unconverged = 0;
+  long ok = 0, diverged = 0, unstable = 0, failed = 0, reference_unconverged = 0;
   int references_computed = 0, references_reused = 0;
+  // Of the references computed now: not converged by the kind's own check (scored as
+  // reference_unconverged), and failed (their points fail).
+  int references_unconverged = 0, references_failed = 0;
   int points_reclaimed = 0;  // Left 'running' by a dead or stopped run, taken up again.
   int jobs = 0;              // Worker threads in all.
   int worker_ranks = 0;      // Of an MPI job; 0 in a local run.
@@ -65,6 +69,9 @@ int WorkerCount(const StudyRunOptions& options);
 
 // Counts one finished point in the summary by its stored status.
 void CountOutcome(RunStatus status, StudyRunSummary& summary);
+// The points computed so far by status, "ok 12, diverged 3, unstable 0, failed 0,
+// reference_unconverged 1": the point phase's progress detail and the summary's outcomes.
+std::string OutcomeCounts(const StudyRunSummary& summary);
 
 // Throws InputError when the study is stored with other settings, DbError on database faults
 // (another run holding the database among them).
@@ -109,6 +116,17 @@ struct Work {
       c.error = std::string("reference: ") + e.what();
     }
     return c;
+  }
+  // A kind may tell whether a reference passed its own convergence check
+  // (`bool ReferenceConverged(const Reference&) const`); progress counts those that did not.
+  static bool Unconverged(const Kind& kind, const Reference& reference) {
+    if constexpr (requires {
+                    { kind.ReferenceConverged(reference) } -> std::convertible_to<bool>;
+                  }) {
+      return !kind.ReferenceConverged(reference);
+    } else {
+      return false;
+    }
   }
   static Outcome Score(const Kind& kind, const Point& point, const ReferenceSlot& slot) {
     if (!slot.reference) return Outcome{RunStatus::kFailed, slot.error, std::nullopt};
@@ -265,6 +283,12 @@ class StudyRun {
     std::ranges::stable_sort(missing, std::greater{},
                              [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
     const CpuTimer timer;
+    ProgressReporter progress("references", "references", static_cast<double>(missing.size()),
+                              stderr, options_.progress);
+    auto detail = [&] {
+      return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
+             std::to_string(summary_.references_failed);
+    };
     Distribute<ComputedReference>(
         missing.size(),
         [&](std::size_t i) { return W::ComputeReference(kind_, points[missing[i]]); },
@@ -277,10 +301,12 @@ class StudyRun {
         [&](std::size_t, ByteReader& in) { return W::DecodeComputed(kind_, in); },
         [&](ComputedReference c, const PointOrigin& origin) {
           StoreReference(std::move(c), origin);
+          progress.Update(summary_.references_computed + summary_.references_failed, detail());
         },
         [&](std::size_t i) {
           return "the reference of point " + kind_.Describe(points[missing[i]]).point_key;
         });
+    progress.Finish(summary_.references_computed + summary_.references_failed, detail());
     summary_.reference_wall_s = timer.WallSeconds();
   }
 
@@ -289,8 +315,10 @@ class StudyRun {
     ReferenceSlot& slot = references_[c.key];
     if (!c.reference) {
       slot.error = std::move(c.error);
+      ++summary_.references_failed;
       return;
     }
+    if (W::Unconverged(kind_, *c.reference)) ++summary_.references_unconverged;
     slot.id = kind_.StoreReference(db_, *c.reference, run_id_);
     slot.reference = std::make_shared<const Reference>(std::move(*c.reference));
     ++summary_.references_computed;
@@ -304,7 +332,8 @@ class StudyRun {
     std::vector<std::int64_t> ids;
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
-    ProgressReporter progress(static_cast<long>(to_compute_.size()), stderr, options_.progress);
+    ProgressReporter progress("points", "points", static_cast<double>(to_compute_.size()), stderr,
+                              options_.progress);
     using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
     Distribute<Scored>(
         to_compute_.size(),
@@ -319,12 +348,10 @@ class StudyRun {
         [&](Scored out, const PointOrigin& origin) {
           StoreOutcome(kind_, db_, out.first, run_id_, origin, out.second);
           CountOutcome(out.second.status, summary_);
-          progress.Update(static_cast<long>(summary_.points_computed), summary_.diverged,
-                          summary_.failed);
+          progress.Update(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
         },
         [&](std::size_t i) { return "point " + std::to_string(to_compute_[i].point_id); });
-    progress.Finish(static_cast<long>(summary_.points_computed), summary_.diverged,
-                    summary_.failed);
+    progress.Finish(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
     summary_.point_wall_s = timer.WallSeconds();
   }
 

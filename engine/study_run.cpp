@@ -1,5 +1,7 @@
 #include "engine/study_run.h"
 
+#include <fmt/format.h>
+
 #include <thread>
 
 #include "engine/canonical_study.h"
@@ -21,6 +23,9 @@ void CountOutcome(RunStatus status, StudyRunSummary& summary) {
     case RunStatus::kDiverged:
       ++summary.diverged;
       break;
+    case RunStatus::kUnstable:
+      ++summary.unstable;
+      break;
     case RunStatus::kFailed:
       ++summary.failed;
       break;
@@ -28,6 +33,11 @@ void CountOutcome(RunStatus status, StudyRunSummary& summary) {
       ++summary.reference_unconverged;
       break;
   }
+}
+
+std::string OutcomeCounts(const StudyRunSummary& s) {
+  return fmt::format("ok {}, diverged {}, unstable {}, failed {}, reference_unconverged {}", s.ok,
+                     s.diverged, s.unstable, s.failed, s.reference_unconverged);
 }
 
 namespace {

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "compare/comparison.h"
 #include "formats/comparison_json.h"
 
@@ -99,6 +102,80 @@ TEST_F(PaperFig3, ImplicitSchemeIsStableAboveTheExplicitBound) {
   const ComparisonResult r = ScoreAgainstReference(problem_, o, reference_);
   EXPECT_EQ(r.status, RunStatus::kOk) << r.message;
   EXPECT_LT(r.numerical.max_energy_ratio, 1.05);
+}
+
+}  // namespace
+}  // namespace shockmap
+
+namespace shockmap {
+namespace {
+
+// docs/physics.md §3.1: past the sharp bound an undamped run can reach the end of a short
+// window with its energy grown tens of times; it is 'unstable', scored, never 'ok'. Below the
+// bound the same point grows its energy less than the limit and stays 'ok'.
+TEST(UnstableRuns, EnergyGrownPastTheLimitIsUnstableAndStillScored) {
+  CantileverImpact problem;
+  problem.r_k = 31.622776601683793;  // quick's point that grew 79-fold.
+  ComparisonOptions o;
+  o.r_ftrunc = 10.0;
+  o.window_s = 0.03;
+  o.dt = {std::nullopt, 1.5, DtRule::kSharp};
+  const ComparisonResult beyond = RunComparison(problem, o);
+  EXPECT_EQ(beyond.status, RunStatus::kUnstable) << beyond.message;
+  EXPECT_GT(beyond.numerical.max_energy_ratio, kUnstableEnergyRatio);
+  EXPECT_LT(beyond.numerical.max_energy_ratio, TransientOptions{}.energy_growth_limit);
+  EXPECT_NE(beyond.message.find("unstable above 5"), std::string::npos) << beyond.message;
+  EXPECT_TRUE(beyond.err.has_value());
+  o.dt.factor = 0.9;
+  const ComparisonResult below = RunComparison(problem, o);
+  EXPECT_EQ(below.status, RunStatus::kOk) << below.message;
+  EXPECT_LE(below.numerical.max_energy_ratio, kUnstableEnergyRatio);
+}
+
+// The median of repeated runs of one model: as many runs as fit the total, each the same run.
+TEST(RunTiming, ShortRunsAreTimedRepeatedlyUntilTheTotal) {
+  CantileverImpact problem;
+  ComparisonOptions o;
+  o.r_ftrunc = 10.0;
+  o.window_s = 0.01;
+  const ImpactModel model = BuildImpactModel(problem, o.scheme, o.r_ftrunc);
+  TransientOptions run;
+  run.end_time_s = o.window_s;
+  run.dt_s = o.dt.Resolve(model.bounds);
+  const RunSummary first =
+      RunTransient(*model.system, NewmarkParametersOf(o.scheme), model.x0, model.v0, run).summary;
+  const RunTiming t = TimeRepeatedly(problem, o, first, 0.005, 1, 1000);
+  EXPECT_GT(t.repeats, 1);
+  EXPECT_GE(t.repeats * t.wall_s, 0.25 * 0.005) << t.repeats << " runs, median " << t.wall_s;
+  const RunTiming once = TimeRepeatedly(problem, o, first, 0.0, 1, 1000);
+  EXPECT_EQ(once.repeats, 1);
+  EXPECT_EQ(once.wall_s, first.wall_s);
+  // A first run that took the whole budget (preempted) is still run the minimum number of times.
+  RunSummary preempted = first;
+  preempted.wall_s = 1.0;
+  const RunTiming five = TimeRepeatedly(problem, o, preempted, 0.005, 5, 1000);
+  EXPECT_EQ(five.repeats, 5);
+  EXPECT_LT(five.wall_s, 1.0);
+}
+
+// The progress callback sees the simulated time at every divergence check, rising to the end.
+TEST(TransientProgress, CalledAtEveryDivergenceCheckUpToTheEnd) {
+  const CantileverImpact problem;
+  const ImpactModel model = BuildImpactModel(problem, Scheme::kExplicitModal, 10.0);
+  TransientOptions run;
+  run.end_time_s = 0.01;
+  run.dt_s = 0.1 * model.bounds.dt_sharp_s;
+  std::vector<double> times;
+  run.on_progress = [&](double t) { times.push_back(t); };
+  const RunSummary s =
+      RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0, model.v0, run)
+          .summary;
+  ASSERT_EQ(s.status, RunStatus::kOk);
+  const auto checks = s.steps_taken / run.divergence_check_stride +
+                      (s.steps_taken % run.divergence_check_stride != 0 ? 1 : 0);
+  EXPECT_EQ(static_cast<std::int64_t>(times.size()), checks);
+  EXPECT_TRUE(std::ranges::is_sorted(times));
+  EXPECT_NEAR(times.back(), run.end_time_s, 1e-12);
 }
 
 }  // namespace

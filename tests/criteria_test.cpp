@@ -52,6 +52,39 @@ TEST_F(QuickStudyCriteria, DeriveReportsTheFitAndThePaperRules) {
   }
 }
 
+std::int64_t CountOf(const std::string& db, const std::string& sql) {
+  return std::get<std::int64_t>(RunReadOnlyQuery(db, sql).rows.at(0).at(0));
+}
+
+// Paper eq. 11's step is counted once per (R_k, R_ftrunc) cell, and the stability line never
+// says "stable up to" a ratio it also says stability was lost at; the counts come from SQL.
+TEST_F(QuickStudyCriteria, StabilityAndPaperStepLinesAreConsistentAndCountCells) {
+  const auto derive = RunShockmap("criteria derive --db " + db_);
+  ASSERT_EQ(derive.exit_code, 0) << derive.output;
+  const std::int64_t cells =
+      CountOf(db_,
+              "SELECT count(*) FROM (SELECT DISTINCT r_k, r_ftrunc FROM results "
+              "WHERE scheme = 'explicit-modal')");
+  const std::int64_t beyond =
+      CountOf(db_,
+              "SELECT count(*) FROM (SELECT DISTINCT r_k, r_ftrunc FROM results "
+              "WHERE scheme = 'explicit-modal' AND dt_paper_s > dt_sharp_s)");
+  EXPECT_NE(derive.output.find("in " + std::to_string(beyond) + " of " + std::to_string(cells) +
+                               " (R_k, R_ftrunc) cells"),
+            std::string::npos)
+      << derive.output;
+  const std::int64_t unstable = CountOf(db_,
+                                        "SELECT count(*) FROM results WHERE status = "
+                                        "'unstable'");
+  EXPECT_GT(unstable, 0);
+  EXPECT_NE(derive.output.find("stayed stable up to 0.9 dt_sharp; at 1.5 dt_sharp"),
+            std::string::npos)
+      << derive.output;
+  EXPECT_NE(derive.output.find("and " + std::to_string(unstable) + " ended unstable"),
+            std::string::npos)
+      << derive.output;
+}
+
 TEST_F(QuickStudyCriteria, CorruptedScoreIsCaughtAndNamed) {
   const std::string copy = db_ + ".corrupt.db";
   std::filesystem::copy_file(db_, copy, std::filesystem::copy_options::overwrite_existing);

@@ -116,7 +116,7 @@ TEST_F(MpiStudy, ThreeRanksStoreTheThreadedRunsResults) {
   ASSERT_EQ(local.exit_code, 0) << local.output;
   const auto mpi = RunShell(MpiRun(3, "study run " + spec + " --db " + Path("m.db") + " --quiet"));
   ASSERT_EQ(mpi.exit_code, 0) << mpi.output;
-  EXPECT_NE(mpi.output.find("2 worker ranks x 1 threads"), std::string::npos) << mpi.output;
+  EXPECT_NE(mpi.output.find("2 worker ranks x 1 thread)"), std::string::npos) << mpi.output;
   const auto threaded = Rows(Path("t.db"), kCanonicalRows);
   ASSERT_EQ(threaded.size(), 308u);
   EXPECT_EQ(Rows(Path("m.db"), kCanonicalRows), threaded);

@@ -263,8 +263,8 @@ TEST_F(SceneFiles, CanonicalSceneFileGivesTheComparisonsHistoriesBitForBit) {
 TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {
   for (const char* name : {"bundle_row", "cantilever_spring"}) {
     const auto out = Path(name);
-    const auto r =
-        RunShockmap(std::string("simulate --json ") + kScenes + name + ".json --out " + out);
+    const auto r = RunShockmap(std::string("simulate --json --quiet ") + kScenes + name +
+                               ".json --out " + out);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const Json summary = Json::parse(r.output);
     EXPECT_EQ(summary["status"], "ok");
@@ -283,7 +283,7 @@ TEST_F(SceneFiles, ImpactStatisticsAgreeWithTheShocksOfTheHistory) {
   const std::string path = Variant([](Json& s) {
     s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0.0052}};
   });
-  const auto r = RunShockmap("simulate --json " + path + " --out " + Path("impacts"));
+  const auto r = RunShockmap("simulate --json --quiet " + path + " --out " + Path("impacts"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const Json zone = Json::parse(r.output)["zone_results"][0];
   const Json& impacts = zone["impact_statistics"];

@@ -2,13 +2,17 @@
 // missing and shares references.
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "db/canonical_points.h"
 #include "db/read_only_query.h"
+#include "engine/progress_reporter.h"
 #include "engine/study_run.h"
 #include "tests/run_command.h"
 
@@ -276,6 +280,72 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
     ASSERT_TRUE(read.has_value()) << std::get<std::string>(r.rows[i][1]);
     EXPECT_EQ(*read, kAllRunStatuses[i]);
   }
+}
+
+// Off a terminal a phase prints plain lines: none before 5 s, and its last line always, with
+// done / total, the rate, the time it took and the phase's own counts.
+TEST(ProgressReporter, PrintsAPlainFinalLineOffATerminal) {
+  std::FILE* out = std::tmpfile();
+  ASSERT_NE(out, nullptr);
+  ProgressReporter progress("references", "references", 3, out, true);
+  progress.Update(1, "unconverged 0");
+  progress.Finish(3, "unconverged 1, failed 0");
+  std::rewind(out);
+  char line[512] = {};
+  ASSERT_NE(std::fgets(line, sizeof line, out), nullptr);
+  const std::string text = line;
+  EXPECT_EQ(text.rfind("progress: references 3/3 references, ", 0), 0u) << text;
+  EXPECT_NE(text.find("/s, took 0 s, unconverged 1, failed 0\n"), std::string::npos) << text;
+  EXPECT_EQ(std::fgets(line, sizeof line, out), nullptr) << "one line only: " << line;
+  std::fclose(out);
+  EXPECT_EQ(FormatDuration(59.4), "59 s");
+  EXPECT_EQ(FormatDuration(200), "3 min 20 s");
+  EXPECT_EQ(FormatDuration(3900), "1 h 05 min");
+}
+
+// The CLI reports both phases of a study (stderr is a pipe here: plain lines), and a rerun
+// with nothing to do says so instead of printing zero outcomes.
+TEST(StudyRunCli, ReportsEveryPhaseAndARerunWithNothingToDo) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("shockmap_progress_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string spec = (dir / "s.json").string();
+  {
+    std::ofstream(spec) << R"({"name": "s", "scoring": {"window_s": 0.03},
+        "grids": [{"rk": [100, 3000], "rftrunc": [10, 300]}]})";
+  }
+  const std::string run = "study run " + spec + " --db " + (dir / "s.db").string();
+  const auto first = testing::RunShockmap(run + " --jobs 1");
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  EXPECT_NE(first.output.find("progress: references 2/2 references"), std::string::npos)
+      << first.output;
+  EXPECT_NE(first.output.find("unconverged 0, failed 0"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("progress: points 4/4 points"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("4 points in the study, 4 computed now (1 job"), std::string::npos)
+      << first.output;
+  const auto again = testing::RunShockmap(run + " --jobs 1");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("all 4 points already stored"), std::string::npos) << again.output;
+  EXPECT_EQ(again.output.find("progress:"), std::string::npos) << again.output;
+  EXPECT_EQ(again.output.find("ok 0"), std::string::npos) << again.output;
+  std::filesystem::remove_all(dir);
+}
+
+// `simulate` reports the simulated time of its transient loop; the summary counts in words.
+TEST(SimulateCli, ReportsSimulatedTimeAndCountsInTheSingular) {
+  const auto run = testing::RunShockmap("simulate " + std::string(SHOCKMAP_SOURCE_DIR) +
+                                        "/scenes/cantilever_spring.json");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("progress: simulate cantilever_spring 0.06/0.06 s simulated"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("1 beam, 1 zone, 10 modal coordinates"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("1 distinct modal basis"), std::string::npos) << run.output;
+  const auto quiet = testing::RunShockmap("simulate --quiet " + std::string(SHOCKMAP_SOURCE_DIR) +
+                                          "/scenes/cantilever_spring.json");
+  EXPECT_EQ(quiet.output.find("progress:"), std::string::npos) << quiet.output;
 }
 
 }  // namespace

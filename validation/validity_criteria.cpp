@@ -32,6 +32,14 @@ namespace {
 
 bool Scorable(const ScoredPoint& p) { return p.status != RunStatus::kReferenceUnconverged; }
 
+}  // namespace
+
+bool LostStability(RunStatus status) {
+  return status == RunStatus::kDiverged || status == RunStatus::kUnstable;
+}
+
+namespace {
+
 template <typename T>
 void KeepMax(std::optional<T>& slot, T v) {
   if (!slot || v > *slot) slot = v;
@@ -48,8 +56,14 @@ RkBoundary BoundaryAt(double r_k, const std::vector<const ScoredPoint*>& at,
   b.n_points = static_cast<int>(at.size());
   for (const auto* p : at) {
     if (options.Passes(*p)) ++b.n_passing;
-    if (p->status == RunStatus::kOk) KeepMax(b.largest_stable_dt_ratio, p->DtRatio());
-    if (p->status == RunStatus::kDiverged) KeepMin(b.smallest_diverged_dt_ratio, p->DtRatio());
+    if (LostStability(p->status)) KeepMin(b.smallest_diverged_dt_ratio, p->DtRatio());
+  }
+  // Stable up to the largest ratio below the first loss of stability, so the two never overlap.
+  for (const auto* p : at) {
+    if (p->status != RunStatus::kOk) continue;
+    if (!b.smallest_diverged_dt_ratio || p->DtRatio() < *b.smallest_diverged_dt_ratio) {
+      KeepMax(b.largest_stable_dt_ratio, p->DtRatio());
+    }
   }
   // Candidate dt ratios, smallest first: the boundary is judged at the finest time step and
   // the time step is then raised while everything above the boundary keeps passing.
@@ -135,7 +149,7 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
     c.boundary.push_back(BoundaryAt(r_k, at, options));
     const RkBoundary& b = c.boundary.back();
     if (b.dt_ratio_max) KeepMin(c.dt_ratio_max, *b.dt_ratio_max);
-    if (b.largest_stable_dt_ratio) KeepMax(c.largest_stable_dt_ratio, *b.largest_stable_dt_ratio);
+    if (b.largest_stable_dt_ratio) KeepMin(c.largest_stable_dt_ratio, *b.largest_stable_dt_ratio);
     if (b.smallest_diverged_dt_ratio) {
       KeepMin(c.smallest_diverged_dt_ratio, *b.smallest_diverged_dt_ratio);
     }

@@ -23,6 +23,9 @@ struct ScoredPoint {
   double dt_sharp_s = 0.0;
   double dt_paper_s = 0.0;
   double wall_s = 0.0;
+  // CPU time of the single-threaded numerical run: unlike wall time, not inflated when the
+  // machine is shared (docs/physics.md §4.4).
+  double cpu_s = 0.0;
   int n_modes = 0;
   std::int64_t steps = 0;
 
@@ -47,8 +50,10 @@ struct RkBoundary {
   std::optional<double> r_ftrunc_min;
   // Largest dt / dt_sharp such that every point at or below it, at or above r_ftrunc_min, passes.
   std::optional<double> dt_ratio_max;
-  std::optional<double> largest_stable_dt_ratio;     // Among points that stayed stable.
-  std::optional<double> smallest_diverged_dt_ratio;  // Among points that diverged.
+  // The smallest dt / dt_sharp at which a point diverged or ended unstable, and the largest
+  // below it at which a point ended ok: every point at or below it stayed stable.
+  std::optional<double> largest_stable_dt_ratio;
+  std::optional<double> smallest_diverged_dt_ratio;
 };
 
 // log10 R_ftrunc_min = log10 C + p log10 R_k, least squares (GSL) over the R_k above the knee.
@@ -69,6 +74,8 @@ struct ValidityCriteria {
   std::optional<PowerLawFit> fit;
   // Largest dt / dt_sharp that passes at every R_k with a boundary.
   std::optional<double> dt_ratio_max;
+  // The smallest largest_stable_dt_ratio and the smallest smallest_diverged_dt_ratio over the
+  // R_k: stable at every R_k up to the first, stability lost at some R_k from the second.
   std::optional<double> largest_stable_dt_ratio;
   std::optional<double> smallest_diverged_dt_ratio;
 
@@ -76,6 +83,9 @@ struct ValidityCriteria {
   // studied truncation below it; nullopt without a fit or a boundary.
   std::optional<double> RequiredRFtrunc(double r_k) const;
 };
+
+// Diverged or unstable: the run lost stability (its time step is past the bound).
+bool LostStability(RunStatus status);
 
 // Points with status reference_unconverged carry no score and are ignored.
 ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,

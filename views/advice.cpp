@@ -7,20 +7,172 @@
 
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
+#include "formats/counted.h"
 
 namespace shockmap {
+namespace {
+
+constexpr double kSame = 1e-9;  // Relative: grid values computed two ways compare equal.
+
+bool Same(double a, double b) { return std::abs(a - b) <= kSame * std::abs(b); }
+
+// The truncation and time step chosen, what they rest on and why.
+struct Basis {
+  double r_ftrunc = 0.0;
+  double dt_ratio = 0.0;
+  std::vector<double> studied_r_k;
+  std::string words;
+  std::vector<std::string> warnings;
+};
+
+// Throws InputError when no truncation passes at every studied time step at b.r_k.
+const RkBoundary& Passing(const RkBoundary& b) {
+  if (!b.r_ftrunc_min || !b.dt_ratio_max) {
+    throw InputError(fmt::format(
+        "no studied truncation passes the thresholds at R_k = {:g}, the studied R_k the advice "
+        "would rest on; study larger R_ftrunc or smaller time steps there",
+        b.r_k));
+  }
+  return b;
+}
+
+// The largest studied dt / dt_sharp below `ratio`, or `ratio` when none is.
+double FinerStudiedRatio(const std::vector<ScoredPoint>& points, double ratio) {
+  double finer = 0.0;
+  for (const auto& p : points) {
+    if (p.DtRatio() < ratio * (1 - 1e-6)) finer = std::max(finer, p.DtRatio());
+  }
+  return finer > 0.0 ? finer : ratio;
+}
+
+// Between two studied R_k: the larger truncation of the two, so the advice is never less than
+// either side needed (the boundary grows with R_k, eqs. 10-11), and the studied time step one
+// finer than the smaller of their largest passing ones: near the sharp bound Err varies with
+// R_k by more than the threshold (measured on quick: R_ftrunc 215, 0.9 dt_sharp passes at
+// R_k = 3.16e4 and 1e5, Err 0.046 and 0.050, and fails between them, Err 0.28 at 5.62e4).
+Basis Between(const RkBoundary& below, const RkBoundary& above, double r_k,
+              const std::vector<ScoredPoint>& points) {
+  Basis b{std::max(*below.r_ftrunc_min, *above.r_ftrunc_min),
+          FinerStudiedRatio(points, std::min(*below.dt_ratio_max, *above.dt_ratio_max)),
+          {below.r_k, above.r_k},
+          fmt::format("the larger R_ftrunc_min of the studied R_k = {:g} and {:g} around it, and "
+                      "the studied dt/dt_sharp one finer than the smaller of their largest "
+                      "passing ones",
+                      below.r_k, above.r_k),
+          {}};
+  if (!Same(*below.r_ftrunc_min, *above.r_ftrunc_min) ||
+      !Same(*below.dt_ratio_max, *above.dt_ratio_max)) {
+    b.warnings.push_back(fmt::format(
+        "R_k = {:g} lies between sparse studied values: the boundary changes from R_ftrunc_min "
+        "{:g} (dt/dt_sharp max {:g}) at R_k = {:g} to {:g} ({:g}) at R_k = {:g}; the advice "
+        "takes the safer side, study R_k in between to refine it",
+        r_k, *below.r_ftrunc_min, *below.dt_ratio_max, below.r_k, *above.r_ftrunc_min,
+        *above.dt_ratio_max, above.r_k));
+  }
+  return b;
+}
+
+// Past the largest studied R_k: the fitted envelope C R_k^p, never below the largest studied
+// boundary.
+Basis Beyond(const ValidityCriteria& c, const RkBoundary& last, double r_k) {
+  if (!c.fit) {
+    throw InputError(fmt::format(
+        "R_k = {:g} lies above the largest studied R_k = {:g} and the study has no fitted "
+        "truncation boundary to extrapolate; study larger R_k",
+        r_k, last.r_k));
+  }
+  const double envelope = c.fit->c_envelope * std::pow(r_k, c.fit->p);
+  return {std::max(*last.r_ftrunc_min, envelope),
+          *last.dt_ratio_max,
+          {last.r_k},
+          fmt::format("the fitted envelope {:.3g} R_k^{:.3f}, at least the R_ftrunc_min of the "
+                      "largest studied R_k = {:g}",
+                      c.fit->c_envelope, c.fit->p, last.r_k),
+          {fmt::format("R_k = {:g} lies outside the studied range [{:g}, {:g}]: the truncation is "
+                       "extrapolated",
+                       r_k, c.boundary.front().r_k, last.r_k)}};
+}
+
+// Throws InputError when the study has no scored points.
+Basis Choose(const ValidityCriteria& c, const std::vector<ScoredPoint>& points, double r_k) {
+  const auto& all = c.boundary;  // Ascending R_k.
+  if (all.empty()) throw InputError("the study has no scored explicit-modal points to advise from");
+  const auto above =
+      std::ranges::find_if(all, [&](const RkBoundary& b) { return b.r_k >= r_k * (1 - kSame); });
+  if (above == all.end()) return Beyond(c, Passing(all.back()), r_k);
+  if (Same(above->r_k, r_k)) {
+    const RkBoundary& b = Passing(*above);
+    return {*b.r_ftrunc_min,
+            *b.dt_ratio_max,
+            {b.r_k},
+            fmt::format("the boundary studied at R_k = {:g}", b.r_k),
+            {}};
+  }
+  if (above == all.begin()) {
+    const RkBoundary& b = Passing(*above);
+    return {*b.r_ftrunc_min,
+            *b.dt_ratio_max,
+            {b.r_k},
+            fmt::format("the boundary of the smallest studied R_k = {:g} (a softer contact needs "
+                        "no more)",
+                        b.r_k),
+            {fmt::format("R_k = {:g} lies outside the studied range [{:g}, {:g}], below it", r_k,
+                         b.r_k, all.back().r_k)}};
+  }
+  return Between(Passing(*std::prev(above)), Passing(*above), r_k, points);
+}
+
+// At each studied R_k of the basis, the points at the studied truncations on either side of
+// the advised one, each at the largest studied time step not above the advised one.
+std::vector<ScoredPoint> NearestPoints(const std::vector<ScoredPoint>& points, const Basis& b) {
+  std::vector<ScoredPoint> nearest;
+  for (double r_k : b.studied_r_k) {
+    std::optional<double> lower, upper;
+    for (const auto& p : points) {
+      if (!Same(p.r_k, r_k)) continue;
+      if (p.r_ftrunc < b.r_ftrunc * (1 - kSame)) {
+        if (!lower || p.r_ftrunc > *lower) lower = p.r_ftrunc;
+      } else if (!upper || p.r_ftrunc < *upper) {
+        upper = p.r_ftrunc;
+      }
+    }
+    for (const auto& truncation : {lower, upper}) {
+      if (!truncation) continue;
+      const ScoredPoint* best = nullptr;
+      for (const auto& p : points) {
+        if (!Same(p.r_k, r_k) || !Same(p.r_ftrunc, *truncation)) continue;
+        if (p.DtRatio() > b.dt_ratio * (1 + kSame)) continue;
+        if (best == nullptr || p.DtRatio() > best->DtRatio()) best = &p;
+      }
+      if (best != nullptr) nearest.push_back(*best);
+    }
+  }
+  return nearest;
+}
+
+double MedianSecondsPerModeStep(const std::vector<ScoredPoint>& points) {
+  std::vector<double> per_mode_step;
+  for (const auto& p : points) {
+    if (p.status == RunStatus::kOk && p.steps > 0 && p.n_modes > 0) {
+      per_mode_step.push_back(p.cpu_s / (static_cast<double>(p.steps) * p.n_modes));
+    }
+  }
+  if (per_mode_step.empty()) return 0.0;
+  std::ranges::nth_element(per_mode_step, per_mode_step.begin() + per_mode_step.size() / 2);
+  return per_mode_step[per_mode_step.size() / 2];
+}
+
+std::string Optional(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
+
+}  // namespace
 
 Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
               const std::vector<ScoredPoint>& points, double r_k) {
-  if (!criteria.fit || !criteria.dt_ratio_max) {
-    throw InputError(
-        "the study's criteria have no fitted truncation boundary or time-step "
-        "bound to advise from; study a wider range of R_k and R_ftrunc");
-  }
+  Basis basis = Choose(criteria, points, r_k);
   Advice a;
   a.r_k = r_k;
-  a.r_ftrunc = *criteria.RequiredRFtrunc(r_k);
-  a.dt_ratio = *criteria.dt_ratio_max;
+  a.r_ftrunc = basis.r_ftrunc;
+  a.dt_ratio = basis.dt_ratio;
   CantileverImpact problem = spec.problem;
   problem.r_k = r_k;
   const ImpactModel model = BuildImpactModel(problem, Scheme::kExplicitModal, a.r_ftrunc);
@@ -29,38 +181,63 @@ Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
   a.dt_s = a.dt_ratio * a.dt_sharp_s;
   a.window_s = spec.scoring.window_s;
   a.steps = static_cast<std::int64_t>(std::ceil(a.window_s / a.dt_s));
-  std::vector<double> per_mode_step;
-  for (const auto& p : points) {
-    if (p.status == RunStatus::kOk && p.steps > 0 && p.n_modes > 0) {
-      per_mode_step.push_back(p.wall_s / (static_cast<double>(p.steps) * p.n_modes));
-    }
-  }
-  if (!per_mode_step.empty()) {
-    std::ranges::nth_element(per_mode_step, per_mode_step.begin() + per_mode_step.size() / 2);
-    a.seconds_per_mode_step = per_mode_step[per_mode_step.size() / 2];
-  }
-  a.expected_wall_s = a.seconds_per_mode_step * static_cast<double>(a.steps) * a.n_modes;
-  const auto [lo, hi] =
-      std::ranges::minmax_element(criteria.boundary, {}, [](const RkBoundary& b) { return b.r_k; });
-  if (lo != criteria.boundary.end() && (r_k < lo->r_k || r_k > hi->r_k)) {
-    a.warning = fmt::format(
-        "R_k = {:g} lies outside the studied range [{:g}, {:g}]: the criterion is extrapolated",
-        r_k, lo->r_k, hi->r_k);
-  }
+  a.seconds_per_mode_step = MedianSecondsPerModeStep(points);
+  a.expected_cpu_s = a.seconds_per_mode_step * static_cast<double>(a.steps) * a.n_modes;
+  a.nearest = NearestPoints(points, basis);
+  a.studied_r_k = std::move(basis.studied_r_k);
+  a.basis = std::move(basis.words);
+  a.warnings = std::move(basis.warnings);
   return a;
 }
 
 std::string AdviceSummary(const Advice& a) {
   std::string s = fmt::format(
       "advice for R_k = {:g}\n"
-      "  R_ftrunc     {:.4g} ({} modes)\n"
+      "  R_ftrunc     {:.4g} ({})\n"
       "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s\n"
-      "  cost         {} steps over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
-      "step (median of the stored runs)\n",
-      a.r_k, a.r_ftrunc, a.n_modes, a.dt_s, a.dt_ratio, a.dt_sharp_s, a.steps, a.window_s,
-      a.expected_wall_s, 1e9 * a.seconds_per_mode_step);
-  if (a.warning) s += "  warning      " + *a.warning + "\n";
+      "  basis        {}\n"
+      "  cost         {} over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
+      "step (CPU time, median of the stored runs)\n",
+      a.r_k, a.r_ftrunc, Counted(a.n_modes, "mode"), a.dt_s, a.dt_ratio, a.dt_sharp_s, a.basis,
+      Counted(a.steps, "step"), a.window_s, a.expected_cpu_s, 1e9 * a.seconds_per_mode_step);
+  if (!a.nearest.empty()) {
+    s += fmt::format("  nearest stored points\n  {:>10}  {:>9}  {:>11}  {:<22}  {:>6}  {:>6}\n",
+                     "R_k", "R_ftrunc", "dt/dt_sharp", "status", "Err", "SRf");
+    for (const auto& p : a.nearest) {
+      s +=
+          fmt::format("  {:>10.4g}  {:>9.4g}  {:>11.3g}  {:<22}  {:>6}  {:>6}\n", p.r_k, p.r_ftrunc,
+                      p.DtRatio(), ToString(p.status), Optional(p.err), Optional(p.srf));
+    }
+  }
+  for (const auto& w : a.warnings) s += "  warning      " + w + "\n";
   return s;
+}
+
+nlohmann::json AdviceToJson(const Advice& a) {
+  nlohmann::json nearest = nlohmann::json::array();
+  for (const auto& p : a.nearest) {
+    nearest.push_back({{"point_id", p.point_id},
+                       {"r_k", p.r_k},
+                       {"r_ftrunc", p.r_ftrunc},
+                       {"dt_ratio", p.DtRatio()},
+                       {"status", ToString(p.status)},
+                       {"err", p.err ? nlohmann::json(*p.err) : nlohmann::json()},
+                       {"srf", p.srf ? nlohmann::json(*p.srf) : nlohmann::json()}});
+  }
+  return {{"r_k", a.r_k},
+          {"r_ftrunc", a.r_ftrunc},
+          {"n_modes", a.n_modes},
+          {"dt_s", a.dt_s},
+          {"dt_ratio", a.dt_ratio},
+          {"dt_sharp_s", a.dt_sharp_s},
+          {"steps", a.steps},
+          {"window_s", a.window_s},
+          {"seconds_per_mode_step", a.seconds_per_mode_step},
+          {"expected_cpu_s", a.expected_cpu_s},
+          {"studied_r_k", a.studied_r_k},
+          {"basis", a.basis},
+          {"nearest", nearest},
+          {"warnings", a.warnings}};
 }
 
 }  // namespace shockmap

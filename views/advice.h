@@ -1,7 +1,9 @@
 #pragma once
-// Advice for a new R_k from a study's derived criteria: the truncation and time step to use and
-// what they will cost.
+// Advice for a new R_k from a study's stored points: the truncation and time step to use, the
+// stored points it rests on, and what it will cost. The advice is conservative: it never asks
+// for less than the studied R_k around the asked one needed (docs/physics.md §4.3).
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,21 +15,29 @@ namespace shockmap {
 
 struct Advice {
   double r_k = 0.0;
-  double r_ftrunc = 0.0;  // Required by the criteria.
-  double dt_ratio = 0.0;  // dt / dt_sharp allowed by the criteria.
+  double r_ftrunc = 0.0;  // Required: see `basis`.
+  double dt_ratio = 0.0;  // dt / dt_sharp allowed.
   double dt_s = 0.0;
   double dt_sharp_s = 0.0;
   int n_modes = 0;
   std::int64_t steps = 0;  // Over the study's observation window.
   double window_s = 0.0;
-  double seconds_per_mode_step = 0.0;  // Median of the study's stored explicit runs.
-  double expected_wall_s = 0.0;
-  std::optional<std::string> warning;  // Outside the studied range of R_k.
+  double seconds_per_mode_step = 0.0;  // CPU time, median of the stored explicit runs.
+  double expected_cpu_s = 0.0;
+  // The studied R_k the advice rests on: the asked one, the two around it, or the nearest.
+  std::vector<double> studied_r_k;
+  std::string basis;  // How r_ftrunc and dt_ratio were chosen, in words.
+  // Stored points at those R_k on either side of the advised truncation, at the largest
+  // studied time step not above the advised one.
+  std::vector<ScoredPoint> nearest;
+  std::vector<std::string> warnings;  // Outside the studied R_k, or between sparse ones.
 };
 
-// Throws InputError when the criteria have no fit or no time-step bound to advise from.
+// Throws InputError when the studied points give no passing truncation or time step at the
+// R_k the advice would rest on.
 Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
               const std::vector<ScoredPoint>& points, double r_k);
 std::string AdviceSummary(const Advice& advice);
+nlohmann::json AdviceToJson(const Advice& advice);
 
 }  // namespace shockmap

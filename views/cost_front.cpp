@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/input_error.h"
+#include "formats/counted.h"
 #include "formats/output_file.h"
 #include "views/gnuplot.h"
 
@@ -14,14 +15,15 @@ namespace shockmap {
 
 std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_points,
                                        const std::vector<ScoredPoint>& implicit_points,
-                                       std::optional<double> r_k) {
+                                       std::optional<double> r_k,
+                                       const CriteriaOptions& thresholds) {
   std::map<double, CostTable> by_rk;
   auto add = [&](const std::vector<ScoredPoint>& points, const char* scheme) {
     for (const auto& p : points) {
       if (p.status != RunStatus::kOk || !p.err) continue;
       CostTable& t = by_rk[p.r_k];
       t.r_k = p.r_k;
-      t.rows.push_back({p, scheme, false});
+      t.rows.push_back({p, scheme, thresholds.Passes(p), false});
     }
   };
   add(explicit_points, "explicit-modal");
@@ -34,15 +36,16 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
       }
     }
     CostTable only = std::move(nearest->second);
+    only.asked_r_k = *r_k;
     by_rk.clear();
     by_rk[only.r_k] = std::move(only);
   }
   std::vector<CostTable> tables;
   for (auto& [key, t] : by_rk) {
-    std::ranges::sort(t.rows, {}, [](const CostRow& r) { return r.point.wall_s; });
+    std::ranges::sort(t.rows, {}, [](const CostRow& r) { return r.point.cpu_s; });
     double best_err = INFINITY;
     for (auto& row : t.rows) {
-      if (*row.point.err < best_err) {
+      if (row.passes && *row.point.err < best_err) {
         row.pareto = true;
         best_err = *row.point.err;
       }
@@ -52,7 +55,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
       if (imp.scheme != "implicit-full") continue;
       for (const auto& exp : t.rows) {  // Fastest first: the first match is the cheapest.
         if (exp.scheme == "explicit-modal" && *exp.point.err <= *imp.point.err) {
-          ratios.push_back(imp.point.wall_s / exp.point.wall_s);
+          ratios.push_back(imp.point.cpu_s / exp.point.cpu_s);
           break;
         }
       }
@@ -70,18 +73,26 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
 std::string CostSummary(const std::vector<CostTable>& tables) {
   std::string s;
   for (const auto& t : tables) {
-    s += fmt::format("R_k = {:.4g}: {} scored points", t.r_k, t.rows.size());
+    s += fmt::format("R_k = {:.4g}", t.r_k);
+    if (t.asked_r_k && std::abs(*t.asked_r_k - t.r_k) > 1e-9 * t.r_k) {
+      s += fmt::format(" (the studied R_k nearest to --rk {:g})", *t.asked_r_k);
+    }
+    const auto passing = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.passes; });
+    s += fmt::format(": {} scored, {} within the thresholds (the front is built from those)",
+                     Counted(static_cast<long long>(t.rows.size()), "point"), passing);
     if (t.implicit_over_explicit) {
-      s += fmt::format("; implicit / explicit wall time at equal accuracy: {:.3g} (median of {})",
+      s += fmt::format("; implicit / explicit CPU time at equal accuracy: {:.3g} (median of {})",
                        *t.implicit_over_explicit, t.ratio_pairs);
     }
-    s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>8} {:>7} {}\n", "scheme", "R_ftrunc",
-                     "dt/dt_sharp", "wall (s)", "Err", "SRf", "Pareto");
+    s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>13} {:>8} {:>7} {:>6} {}\n", "scheme",
+                     "R_ftrunc", "dt/dt_sharp", "CPU (s)", "steps x modes", "Err", "SRf", "passes",
+                     "Pareto");
     for (const auto& r : t.rows) {
-      s +=
-          fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>8.4f} {:>7} {}\n", r.scheme,
-                      r.point.r_ftrunc, r.point.DtRatio(), r.point.wall_s, *r.point.err,
-                      r.point.srf ? fmt::format("{:.4f}", *r.point.srf) : "-", r.pareto ? "*" : "");
+      s += fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>13.4g} {:>8.4f} {:>7} {:>6} {}\n",
+                       r.scheme, r.point.r_ftrunc, r.point.DtRatio(), r.point.cpu_s,
+                       static_cast<double>(r.point.steps) * r.point.n_modes, *r.point.err,
+                       r.point.srf ? fmt::format("{:.4f}", *r.point.srf) : "-",
+                       r.passes ? "yes" : "no", r.pareto ? "*" : "");
     }
   }
   return s;
@@ -95,9 +106,9 @@ void DrawCost(const std::string& study, const CostTable& table, const std::files
   {
     AtomicFile data_out(data_file);
     std::ostream& data = data_out.Stream();
-    data << "# wall_s err srf implicit pareto r_ftrunc dt_ratio\n";
+    data << "# cpu_s err srf implicit pareto r_ftrunc dt_ratio\n";
     for (const auto& r : table.rows) {
-      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.wall_s, *r.point.err,
+      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.cpu_s, *r.point.err,
                           r.point.srf.value_or(NAN), r.scheme == "implicit-full" ? 1 : 0,
                           r.pareto ? 1 : 0, r.point.r_ftrunc, r.point.DtRatio());
     }
@@ -111,7 +122,7 @@ set logscale x
 set logscale y
 set format x '10^{{%L}}'
 set format y '10^{{%L}}'
-set xlabel 'wall time of the numerical run (s)'
+set xlabel 'CPU time of the numerical run (s, median of repeats for short runs)'
 set ylabel 'Err (paper eq. 8)'
 set grid
 set key top right

@@ -1,5 +1,5 @@
 #pragma once
-// What accuracy costs in time: for each R_k, Err and SRf against the wall time of every
+// What accuracy costs in time: for each R_k, Err and SRf against the CPU time of every
 // (R_ftrunc, dt, scheme) point, the Pareto front (no other point both faster and more accurate)
 // and the implicit/explicit time ratio at equal accuracy.
 
@@ -15,24 +15,30 @@ namespace shockmap {
 struct CostRow {
   ScoredPoint point;
   std::string scheme;
-  bool pareto = false;
+  bool passes = false;  // Within the thresholds.
+  bool pareto = false;  // On the front of the passing points.
 };
 
 struct CostTable {
   double r_k = 0.0;
-  std::vector<CostRow> rows;  // Scored points, fastest first.
-  // Median over implicit points of wall(implicit) / wall(cheapest explicit point at least as
+  std::optional<double> asked_r_k;  // The --rk this studied R_k is the nearest to.
+  std::vector<CostRow> rows;        // Scored points, fastest first.
+  // Median over implicit points of cpu(implicit) / cpu(cheapest explicit point at least as
   // accurate); nullopt when no implicit point has an explicit match.
   std::optional<double> implicit_over_explicit;
   int ratio_pairs = 0;
 };
 
-// One table per R_k (only `r_k` when given: the nearest studied one).
+// One table per R_k (only `r_k` when given: the nearest studied one). The Pareto front (no
+// other point both faster and more accurate) is built from the points within `thresholds`.
+// Wall times of short runs are medians of repeats (engine/canonical_study.cpp); the table
+// shows the operation count, steps x modes, beside them.
 std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_points,
                                        const std::vector<ScoredPoint>& implicit_points,
-                                       std::optional<double> r_k);
+                                       std::optional<double> r_k,
+                                       const CriteriaOptions& thresholds = {});
 std::string CostSummary(const std::vector<CostTable>& tables);
-// Err against wall time of one table, the Pareto front joined. Throws InputError when empty.
+// Err against CPU time of one table, the Pareto front joined. Throws InputError when empty.
 void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file);
 
 }  // namespace shockmap

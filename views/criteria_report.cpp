@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
+#include "formats/counted.h"
 #include "formats/json_reader.h"
 
 namespace shockmap {
@@ -138,11 +141,57 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
   return c;
 }
 
+namespace {
+
+// Paper eq. 11's step against the sharp bound, counted per (R_k, R_ftrunc) cell: the step
+// 1/(4 f_trunc) and the bound depend on the cell only, not on the dt factor studied there.
+std::string PaperStepLine(const std::vector<ScoredPoint>& points) {
+  std::set<std::pair<double, double>> cells, beyond;
+  for (const auto& p : points) {
+    cells.insert({p.r_k, p.r_ftrunc});
+    if (p.dt_paper_s > p.dt_sharp_s) beyond.insert({p.r_k, p.r_ftrunc});
+  }
+  std::string first;
+  if (!beyond.empty()) {
+    const auto lowest = std::ranges::min(beyond);  // Smallest R_k, then its smallest R_ftrunc.
+    first = fmt::format(" (from R_k = {:.3g} at R_ftrunc = {:g})", lowest.first, lowest.second);
+  }
+  return fmt::format(
+      "  paper eq. 11  1/(4 dt f1) > R_ftrunc: dt = 1/(4 f_trunc) exceeds the sharp bound "
+      "2/omega_max in {} of {} (R_k, R_ftrunc) cells{}.\n",
+      beyond.size(), cells.size(), first);
+}
+
+// Where stability was kept and where it was lost: the two ratios never overlap
+// (validation/validity_criteria.h), and the points at the first lost ratio are counted.
+std::string StabilityLine(const ValidityCriteria& c, const std::vector<ScoredPoint>& points) {
+  std::string s = fmt::format(
+      "  time step   every point at dt <= {} dt_sharp above the boundary passes; every run "
+      "stayed stable up to {} dt_sharp",
+      Num(c.dt_ratio_max), Num(c.largest_stable_dt_ratio));
+  if (!c.smallest_diverged_dt_ratio) return s + "; none lost stability (predicted bound: 1)\n";
+  const double first = *c.smallest_diverged_dt_ratio;
+  int at = 0, diverged = 0, unstable = 0;
+  for (const auto& p : points) {
+    if (std::abs(p.DtRatio() - first) > 1e-9 * first) continue;
+    ++at;
+    diverged += p.status == RunStatus::kDiverged;
+    unstable += p.status == RunStatus::kUnstable;
+  }
+  return s + fmt::format(
+                 "; at {} dt_sharp {} of {} points diverged and {} ended unstable (predicted "
+                 "bound: 1)\n",
+                 Num(c.smallest_diverged_dt_ratio), diverged, at, unstable);
+}
+
+}  // namespace
+
 std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
                             const std::vector<ScoredPoint>& points) {
-  std::string s = fmt::format(
-      "criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored points)\n", study,
-      c.options.err_max, c.options.srf_min, points.size());
+  std::string s =
+      fmt::format("criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored)\n",
+                  study, c.options.err_max, c.options.srf_min,
+                  Counted(static_cast<long long>(points.size()), "point"));
   s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
                    "dt/dt_sharp max", "passing");
   for (const auto& b : c.boundary) {
@@ -183,23 +232,8 @@ std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
       "  paper eq. 11  R_ftrunc > 300 for R_k > 1e2: the data needs at most R_ftrunc = {:g} "
       "there ({}).\n",
       needed_above_100, needed_above_100 <= 300 ? "agrees" : "300 is not enough");
-  int paper_unstable = 0;
-  double first_rk = 0.0, first_rft = 0.0;
-  for (const auto& p : points) {
-    if (p.dt_paper_s > p.dt_sharp_s) {
-      if (paper_unstable++ == 0 || p.r_k < first_rk) first_rk = p.r_k, first_rft = p.r_ftrunc;
-    }
-  }
-  s += fmt::format(
-      "  paper eq. 11  1/(4 dt f1) > R_ftrunc: dt = 1/(4 f_trunc) exceeds the sharp bound "
-      "2/omega_max at {} of {} stored points{}.\n",
-      paper_unstable, points.size(),
-      paper_unstable ? fmt::format(" (from R_k = {:.3g} at R_ftrunc = {:g})", first_rk, first_rft)
-                     : "");
-  s += fmt::format(
-      "  time step   every point at dt <= {} dt_sharp above the boundary passes; stable up to "
-      "{} dt_sharp, diverged from {} dt_sharp (predicted: 1)\n",
-      Num(c.dt_ratio_max), Num(c.largest_stable_dt_ratio), Num(c.smallest_diverged_dt_ratio));
+  s += PaperStepLine(points);
+  s += StabilityLine(c, points);
   return s;
 }
 

@@ -63,6 +63,7 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.wall_s = Real(row[9]);
     p.n_modes = static_cast<int>(Real(row[10]));
     p.steps = static_cast<std::int64_t>(Real(row[11]));
+    p.cpu_s = Real(row[12]);
     points.push_back(p);
   }
   return points;

@@ -42,7 +42,7 @@ double CellValue(const ScoredPoint& p, MapMetric metric) {
     case MapMetric::kSrf:
       return p.srf.value_or(NAN);
     case MapMetric::kCost:
-      return p.wall_s;
+      return p.cpu_s;
     case MapMetric::kStatus:
       return NAN;
   }
@@ -95,7 +95,7 @@ MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
       return {
           "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
           "set format cb '10^{%L}'\n",
-          "wall time (s)", "wall time of the numerical run"};
+          "CPU time (s)", "CPU time of the numerical run"};
     case MapMetric::kStatus:
       return {"unset colorbox\n", "", "outcome"};
   }
