@@ -10,6 +10,7 @@
 
 #include "core/beam_fe.h"
 #include "core/modal_basis.h"
+#include "core/preload_equilibrium.h"
 
 namespace shockmap {
 namespace {
@@ -294,8 +295,10 @@ double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
   return tip_m / m.At(height)[mode - 1];
 }
 
+// The declared initial state, over the static equilibrium of the preloaded zones if any.
 void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model) {
-  model.x0 = Eigen::VectorXd::Zero(layout.n);
+  model.x0 = HasPreloadedZones(*model.system) ? PreloadEquilibrium(*model.system)
+                                              : Eigen::VectorXd::Zero(layout.n);
   model.v0 = Eigen::VectorXd::Zero(layout.n);
   for (const auto& s : scene.initial_state) {
     const BeamModes& m = *layout.modes[s.beam];
