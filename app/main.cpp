@@ -10,6 +10,7 @@
 #include "app/criteria_command.h"
 #include "app/map_command.h"
 #include "app/simulate_command.h"
+#include "app/sizing_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
 #include "core/input_error.h"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
+  shockmap::AddSizingCommand(app);
   shockmap::AddViewCommands(app);
   // CLI11 would only say that a subcommand is required.
   if (argc > 1 && argv[1][0] != '-') {

@@ -107,7 +107,7 @@ plot {section} index 1 using 1:2 with points pt 6 ps 1.6 lc rgb '#969696' title 
 }  // namespace
 
 void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_force_n,
-                         const std::filesystem::path& file) {
+                         const std::filesystem::path& file, const std::string& quantity) {
   assert(max_force_n.size() == scene.zones.size());
   if (scene.zones.empty()) throw InputError(scene.name + ": the scene has no contact zone to map");
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
@@ -124,23 +124,22 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   const double cb_max = extent.largest_between > 0.0 ? extent.largest_between
                         : *largest > 0.0             ? *largest
                                                      : 1.0;
-  const std::string title =
-      fmt::format("{}: maximum contact force per zone (largest {:.4g} N at {})", scene.name,
-                  *largest, strongest.name);
+  const std::string title = fmt::format("{}: {} per zone (largest {:.4g} N at {})", scene.name,
+                                        quantity, *largest, strongest.name);
   const std::string script = fmt::format(
       R"(set terminal {terminal}
 set output {out}
 set palette defined (0 '#fff5eb', 0.25 '#fdae6b', 0.6 '#e6550d', 1 '#7f2704')
 set cbrange [0:{cb}]
-set cblabel 'maximum contact force (N)'
+set cblabel {cblabel}
 set grid lc rgb '#dddddd'
 set multiplot layout 1,{columns} title {title} font ',13' noenhanced
 {profile}{section}unset multiplot
 )",
       fmt::arg("terminal", TerminalFor(file, both ? 1500 : 900, 800)),
       fmt::arg("out", GnuplotFileName(file)), fmt::arg("cb", cb_max),
-      fmt::arg("columns", both ? 2 : 1), fmt::arg("title", GnuplotQuoted(title)),
-      fmt::arg("profile", ProfilePlot(extent, zones_file)),
+      fmt::arg("cblabel", GnuplotQuoted(quantity + " (N)")), fmt::arg("columns", both ? 2 : 1),
+      fmt::arg("title", GnuplotQuoted(title)), fmt::arg("profile", ProfilePlot(extent, zones_file)),
       fmt::arg("section", both ? SectionPlot(section_file) : ""));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
