@@ -128,6 +128,9 @@ void AddSizingCommand(CLI::App& app) {
                    "this fraction of the refined estimate, overlap")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  sizing->add_option("--hottest-among", flags->options.hottest_among,
+                     "the hottest zone is the highest of the zones whose name holds this text, "
+                     "e.g. -pin_ for the wires between pins (default: every zone)");
   sizing->add_option("--out", flags->out, "folder for the CSV tables and the pictures");
   sizing
       ->add_option("--format", flags->format,

@@ -60,6 +60,38 @@ Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
   return ldlt.solve(rhs);
 }
 
+// E(x) = 1/2 sum omega_i^2 x_i^2 + sum_z 1/2 k_z max(0, r_z . x - g_z)^2, whose minimum is the
+// equilibrium, and its gradient.
+struct Energy {
+  const SceneModalSystem& system;
+  const std::vector<std::vector<std::pair<int, double>>>& rows;
+
+  double operator()(const Eigen::VectorXd& x) const {
+    double e = 0.5 * system.OmegaSquared().dot(x.cwiseProduct(x));
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
+      if (d > 0.0) e += 0.5 * system.Zones()[z].stiffness_n_per_m * d * d;
+    }
+    return e;
+  }
+  Eigen::VectorXd Gradient(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd g = system.OmegaSquared().cwiseProduct(x);
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
+      if (d <= 0.0) continue;
+      for (const auto& [i, c] : rows[z]) g[i] += system.Zones()[z].stiffness_n_per_m * d * c;
+    }
+    return g;
+  }
+  std::set<std::size_t> Closed(const Eigen::VectorXd& x) const {
+    std::set<std::size_t> closed;
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      if (Penetration(rows[z], system.Zones()[z].gap_m, x) > 0.0) closed.insert(z);
+    }
+    return closed;
+  }
+};
+
 }  // namespace
 
 bool HasPreloadedZones(const SceneModalSystem& system) {
@@ -69,26 +101,35 @@ bool HasPreloadedZones(const SceneModalSystem& system) {
   return false;
 }
 
+// Newton's method on the convex, piecewise-quadratic energy, damped by backtracking (Armijo) so
+// that the energy decreases at every step: the closed set cannot cycle. A full step lands on
+// the minimum of the quadratic of its closed set; when that set holds there, it is the
+// equilibrium.
 Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
   std::vector<std::vector<std::pair<int, double>>> rows;
-  std::set<std::size_t> active;
-  for (std::size_t z = 0; z < system.Zones().size(); ++z) {
-    rows.push_back(ZoneRow(system.Zones()[z]));
-    if (system.Zones()[z].gap_m < 0.0) active.insert(z);
+  for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
+  const Energy energy{system, rows};
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.Size());
+  std::set<std::size_t> closed;
+  for (std::size_t z = 0; z < rows.size(); ++z) {
+    if (system.Zones()[z].gap_m < 0.0) closed.insert(z);
   }
   for (int iteration = 0; iteration < kMaxActiveSetIterations; ++iteration) {
-    const Eigen::VectorXd x = SolveWithActive(system, rows, active);
-    std::set<std::size_t> next;
-    for (std::size_t z = 0; z < rows.size(); ++z) {
-      if (Penetration(rows[z], system.Zones()[z].gap_m, x) > 0.0) next.insert(z);
-    }
-    if (next == active) return x;
-    active = std::move(next);
+    Eigen::VectorXd next = SolveWithActive(system, rows, closed);
+    const Eigen::VectorXd step = next - x;
+    const double e0 = energy(x), slope = energy.Gradient(x).dot(step);
+    double t = 1.0;
+    while (t > 1e-12 && energy(x + t * step) > e0 + 1e-4 * t * slope) t *= 0.5;
+    if (t < 1.0) next = x + t * step;
+    x = std::move(next);
+    const std::set<std::size_t> now = energy.Closed(x);
+    if (t == 1.0 && now == closed) return x;
+    closed = now;
   }
   throw InputError(
-      "zones with a negative gap (preloaded contacts): the set of closed zones of "
-      "the static equilibrium did not settle within " +
-      std::to_string(kMaxActiveSetIterations) + " iterations");
+      "zones with a negative gap (preloaded contacts): the static equilibrium was "
+      "not found within " +
+      std::to_string(kMaxActiveSetIterations) + " Newton steps");
 }
 
 }  // namespace shockmap

@@ -16,10 +16,10 @@ bool HasPreloadedZones(const SceneModalSystem& system);
 // The modal state x of static equilibrium under the zones alone: with r_z the zone's row
 // (n . (phi_a - phi_b) at its height, so that its penetration is r_z . x - g_z) and A the set
 // of zones in contact, (diag(omega^2) + sum_{z in A} k_z r_z r_z^T) x = sum_{z in A} k_z g_z r_z,
-// A starting as the zones with g_z < 0 and updated to {z : r_z . x > g_z} until it repeats
-// (an active-set iteration on the piecewise-linear penalty springs). Throws InputError when the
-// model has a rigid-body mode the contacts do not hold, or when the active set does not settle
-// within 100 iterations.
+// A starting as the zones with g_z < 0 and updated to {z : r_z . x > g_z} until it holds: Newton's
+// method on the energy of the penalty springs, damped so that the energy always decreases.
+// Throws InputError when the model has a rigid-body mode the contacts do not hold, or when no
+// equilibrium is found within 100 steps.
 Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system);
 
 }  // namespace shockmap

@@ -126,11 +126,14 @@ GroupSizing SizeGroup(GroupSizing g, const std::vector<const StoredMember*>& mem
   return g;
 }
 
-int HighestSizing(const GroupSizing& g) {
-  const auto it = std::max_element(
-      g.zones.begin(), g.zones.end(),
-      [](const auto& a, const auto& b) { return a.sizing.estimate < b.sizing.estimate; });
-  return static_cast<int>(it - g.zones.begin());
+int HighestSizing(const GroupSizing& g, const std::string& among) {
+  int hottest = -1;
+  for (int z = 0; z < static_cast<int>(g.zones.size()); ++z) {
+    if (g.zones[z].name.find(among) == std::string::npos) continue;
+    if (hottest < 0 || g.zones[z].sizing.estimate > g.zones[hottest].sizing.estimate) hottest = z;
+  }
+  if (hottest < 0) throw InputError("--hottest-among: no zone name holds \"" + among + "\"");
+  return hottest;
 }
 
 const GroupSizing* RefinedOf(const std::vector<GroupSizing>& groups, const std::string& state) {
@@ -142,19 +145,19 @@ const GroupSizing* RefinedOf(const std::vector<GroupSizing>& groups, const std::
 
 // Each group's hottest zone is its state's at the refined setting (so that settings compare
 // the same zone), and each setting is judged against that refined group.
-void JudgeAgainstRefined(std::vector<GroupSizing>& groups, double tolerance) {
+void JudgeAgainstRefined(std::vector<GroupSizing>& groups, const SizingOptions& options) {
   for (GroupSizing& g : groups) {
     const GroupSizing* refined = RefinedOf(groups, g.state);
-    g.hottest = HighestSizing(refined != nullptr ? *refined : g);
+    g.hottest = HighestSizing(refined != nullptr ? *refined : g, options.hottest_among);
   }
   for (GroupSizing& g : groups) {
     const GroupSizing* refined = RefinedOf(groups, g.state);
     if (g.refined || refined == nullptr) continue;
     for (std::size_t z = 0; z < g.zones.size(); ++z) {
-      const auto agrees = Agrees(g.zones[z], refined->zones[z], tolerance);
+      const auto agrees = Agrees(g.zones[z], refined->zones[z], options.tolerance);
       if (agrees) ++(*agrees ? g.zones_agreeing : g.zones_disagreeing);
     }
-    g.hottest_agrees = Agrees(g.zones[g.hottest], refined->zones[g.hottest], tolerance);
+    g.hottest_agrees = Agrees(g.zones[g.hottest], refined->zones[g.hottest], options.tolerance);
   }
 }
 
@@ -202,7 +205,7 @@ EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& stu
     sizing.groups.push_back(
         SizeGroup(std::move(group), members, stored, sizing.zone_names, options));
   }
-  JudgeAgainstRefined(sizing.groups, options.tolerance);
+  JudgeAgainstRefined(sizing.groups, options);
   return sizing;
 }
 

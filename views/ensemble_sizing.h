@@ -4,6 +4,7 @@
 // largest force with their order-statistic intervals, Wilks' upper tolerance limit, a bootstrap
 // cross-check, the mean impact statistics; each setting judged against the refined one.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct SizingOptions {
   // A setting agrees with the refined one at a zone when their intervals of the sizing
   // quantile, each widened by tolerance x the refined estimate, overlap.
   double tolerance = 0.05;
+  // The hottest zone is the highest of the zones whose name holds this text (all when empty):
+  // "-pin_" keeps the wires between pins, "pin_" those of the pins.
+  std::string hottest_among;
   int bootstrap_resamples = 2000;
   std::uint64_t bootstrap_seed = 1;
 };
