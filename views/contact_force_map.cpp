@@ -131,7 +131,7 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
 set output {out}
 set palette defined (0 '#fff5eb', 0.25 '#fdae6b', 0.6 '#e6550d', 1 '#7f2704')
 set cbrange [0:{cb}]
-set cblabel {cblabel}
+set cblabel {cblabel} noenhanced
 set grid lc rgb '#dddddd'
 set multiplot layout 1,{columns} title {title} font ',13' noenhanced
 {profile}{section}unset multiplot

@@ -37,9 +37,9 @@ void WriteData(const fs::path& file, const std::string& text) {
 }
 
 fs::path Draw(const fs::path& image, const std::string& body, int width = 900, int height = 600) {
-  const std::string script =
-      fmt::format("set terminal {}\nset output {}\nset grid lc rgb '#dddddd'\n{}",
-                  TerminalFor(image, width, height), GnuplotFileName(image), body);
+  const std::string script = fmt::format(
+      "set terminal {}\nset output {}\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n{}",
+      TerminalFor(image, width, height), GnuplotFileName(image), body);
   RunGnuplot(script, fs::path(image).replace_extension(".gp"), image);
   return image;
 }
@@ -163,7 +163,8 @@ fs::path States(const EnsembleSizing& s, const fs::path& folder) {
 set xlabel 'clearance state'
 set ylabel 'force (N)'
 {y2}set xrange [-0.5:{last}]
-set key top left
+set offsets 0, 0, graph 0.15, graph 0.05
+set key bottom center
 {tics}{plot}
 )",
                   fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", refined.size() - 0.5),
@@ -215,7 +216,7 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
                     GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
               : "set xlabel 'setting'\n" + Tics(settings);
   const std::string title = fmt::format(
-      "{}: P{} of the hottest zone's largest force against the numerical setting ({} % intervals)",
+      "{}: P{} of the hottest zone's largest force per setting ({} % intervals)",
       s.study, Percent(s.options.quantile), Percent(s.options.confidence));
   return Draw(image, fmt::format("set title {} noenhanced\nset ylabel 'force (N)'\nset offsets "
                                  "graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset key top "
@@ -233,9 +234,9 @@ std::vector<fs::path> DrawSizingPictures(const EnsembleSizing& s, const StoredEn
     std::vector<double> sizing;
     for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
     const fs::path map = folder / ("map_" + FilePart(g->state) + ".png");
-    DrawContactForceMap(scene, sizing, map,
-                        fmt::format("P{} of the largest force over {} members ({})",
-                                    Percent(s.options.quantile), g->members, g->state));
+    DrawContactForceMap(
+        scene, sizing, map,
+        fmt::format("P{} of {} members, {}", Percent(s.options.quantile), g->members, g->state));
     files.push_back(map);
     const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
     files.push_back(Convergence(s, *g, forces, folder));

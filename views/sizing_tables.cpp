@@ -40,7 +40,7 @@ std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
   c.insert(c.end(),
            {"wilks_order", "wilks_limit_n", "bootstrap_lower_n", "bootstrap_upper_n", "nominal_n"});
   c.insert(c.end(), {"agrees_with_refined", "impacts_per_s", "contact_time_fraction",
-                     "mean_force_n", "wear_work_rate_w", "wall_s_per_member"});
+                     "mean_force_n", "wear_work_rate_w", "wall_s_per_member", "cpu_s_per_member"});
   return c;
 }
 
@@ -72,6 +72,7 @@ std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
     row.insert(row.end(), 4, std::monostate{});
   }
   row.push_back(g.mean_wall_s);
+  row.push_back(g.mean_cpu_s);
   return row;
 }
 
