@@ -61,12 +61,15 @@ SceneRun RunScene(const Scene& scene) {
   options.record_contact_forces = out.contact_forces || out.shocks;
   options.recorded_contacts = out.contact_force_zones;
   options.track_max_contact_force = out.max_contact_force;
+  options.track_impact_statistics = out.impact_statistics;
+  options.impact_counting = out.impact_counting;
   options.observed_rows = std::move(model.observed_rows);
   CheckAffordable(scene, options, model.bounds);
   run.result = RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0,
                             model.v0, options);
 
   if (out.max_contact_force) run.max_contact_force_n = run.result.max_contact_force_n;
+  run.impact_statistics = run.result.impact_statistics;
   if (options.record_contact_forces) {
     run.recorded_zones = out.contact_force_zones;
     if (run.recorded_zones.empty()) {

@@ -26,6 +26,9 @@ struct SceneRun {
   // when requested the shocks of each.
   std::vector<int> recorded_zones;
   std::vector<std::vector<Shock>> shocks;
+  // Per zone, when requested (empty otherwise): the impact statistics over the run
+  // (docs/physics.md §6); empty also when the run took no step.
+  std::vector<ImpactStatistics> impact_statistics;
 };
 
 // Preconditions: the scene was validated (LoadScene). Integrates with central differences at

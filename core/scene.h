@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/end_condition.h"
+#include "core/impact_statistics.h"
 #include "core/stability_bounds.h"
 
 namespace shockmap {
@@ -110,6 +111,9 @@ struct SceneOutputs {
   bool max_contact_force = false;  // Per zone, over the whole run.
   bool shocks = false;  // Shock statistics of the zones whose force histories are recorded.
   double rest_duration_s = 0.0;  // Shock grouping; required with shocks.
+  // Impact statistics of every zone (docs/physics.md §6), streamed: no history needed.
+  bool impact_statistics = false;
+  ImpactCounting impact_counting;  // Its rest duration required (> 0) with impact_statistics.
   int record_stride = 1;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace shockmap {
 namespace {
@@ -99,6 +100,15 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
     a = (a - d.cwiseProduct(v_pred)).cwiseQuotient((1.0 + gamma_dt * d.array()).matrix());
   }
   return true;
+}
+
+double SceneModalSystem::SlidingSpeed(int contact, const Eigen::VectorXd& v) const {
+  const ZoneTerm& z = zones_[static_cast<std::size_t>(contact)];
+  if (z.a_y < 0 || z.a_z < 0) return std::numeric_limits<double>::quiet_NaN();
+  double w_y = Dot(z.phi_a, v, z.a_y), w_z = Dot(z.phi_a, v, z.a_z);
+  if (z.b_y >= 0) w_y -= Dot(z.phi_b, v, z.b_y);
+  if (z.b_z >= 0) w_z -= Dot(z.phi_b, v, z.b_z);
+  return std::abs(-z.normal_z * w_y + z.normal_y * w_z);
 }
 
 Energies SceneModalSystem::EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {

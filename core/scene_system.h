@@ -41,6 +41,9 @@ class SceneModalSystem final : public SecondOrderSystem {
                          const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
                          Eigen::VectorXd& a) override;
   std::span<const double> LastContactForces() const override { return forces_; }
+  // |t . (v_a - v_b)| at the zone's height, t = (-n_z, n_y) the in-plane tangent: for zones
+  // whose beam a bends in both planes; NaN otherwise (planar scenes).
+  double SlidingSpeed(int contact, const Eigen::VectorXd& v) const override;
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
   double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;

@@ -2,6 +2,7 @@
 // What a Newmark integrator needs from a structure: M a + C v + K x = f_contact(x, v).
 
 #include <Eigen/Dense>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -35,6 +36,14 @@ class SecondOrderSystem {
   // The force of each contact (N, >= 0) in the solution of the last SolveAcceleration: the
   // forces the integrator applied, recorded without computing them again.
   virtual std::span<const double> LastContactForces() const = 0;
+
+  // The tangential sliding speed at contact `contact` (index into LastContactForces) at
+  // velocity v (m/s, >= 0): the relative velocity of the two sides there, less its normal part.
+  // NaN when the model does not carry the tangential motion of that contact (the default; in
+  // scenes, zones that bend in one plane): its wear work rate is then unavailable.
+  virtual double SlidingSpeed(int /*contact*/, const Eigen::VectorXd& /*v*/) const {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
   virtual Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <sstream>
 
 #include "core/cpu_timer.h"
@@ -16,6 +18,7 @@ bool TransientOptions::IsValid(std::string* error) const {
       !RequireAtLeast("energy_growth_limit", energy_growth_limit, 1.0, error)) {
     return false;
   }
+  if (track_impact_statistics && !impact_counting.IsValid(error)) return false;
   const double steps = std::ceil(end_time_s / dt_s - 1e-9);
   if (steps > static_cast<double>(max_steps)) {
     if (error != nullptr) {
@@ -83,6 +86,49 @@ struct Recorder {
   }
 };
 
+// Feeds each contact's force and sliding speed to its accumulator after every step. The speed
+// is asked of the system only while the contact carries force (otherwise F v = 0), and never
+// for contacts whose tangential motion the system does not carry (NaN at the initial state).
+class ImpactTracker {
+ public:
+  ImpactTracker(const SecondOrderSystem& system, const ImpactCounting& counting,
+                const Eigen::VectorXd& v0)
+      : system_(system) {
+    const auto forces = system.LastContactForces();
+    for (std::size_t c = 0; c < forces.size(); ++c) {
+      const double speed = system.SlidingSpeed(static_cast<int>(c), v0);
+      slides_.push_back(std::isfinite(speed));
+      accumulators_.emplace_back(counting, forces[c], forces[c] > 0.0 ? speed : Idle(c));
+    }
+  }
+
+  void Step(const Eigen::VectorXd& v, double dt_s) {
+    const auto forces = system_.LastContactForces();
+    for (std::size_t c = 0; c < forces.size(); ++c) {
+      const bool sliding_force = forces[c] > 0.0 && slides_[c];
+      const double speed = sliding_force ? system_.SlidingSpeed(static_cast<int>(c), v) : Idle(c);
+      accumulators_[c].Add(forces[c], speed, dt_s);
+    }
+  }
+
+  std::vector<ImpactStatistics> Finish(double duration_s) const {
+    std::vector<ImpactStatistics> statistics;
+    for (const auto& accumulator : accumulators_)
+      statistics.push_back(accumulator.Finish(duration_s));
+    return statistics;
+  }
+
+ private:
+  // The speed passed without asking the system: 0 where it slides (the force is 0), else NaN.
+  double Idle(std::size_t c) const {
+    return slides_[c] ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  const SecondOrderSystem& system_;
+  std::vector<bool> slides_;
+  std::vector<ImpactAccumulator> accumulators_;
+};
+
 }  // namespace
 
 TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme,
@@ -99,7 +145,11 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
 
   Recorder recorder{system, options, result};
   recorder.Start(dt * options.record_stride);
+  std::optional<ImpactTracker> impacts;
   auto finish = [&](RunStatus status, std::string message) {
+    if (impacts && summary.steps_taken > 0) {
+      result.impact_statistics = impacts->Finish(static_cast<double>(summary.steps_taken) * dt);
+    }
     summary.status = status;
     summary.message = std::move(message);
     summary.wall_s = timer.WallSeconds();
@@ -125,6 +175,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
     const auto forces = system.LastContactForces();
     result.max_contact_force_n.assign(forces.begin(), forces.end());
   }
+  if (options.track_impact_statistics) impacts.emplace(system, options.impact_counting, v0);
 
   for (std::int64_t n = 1; n <= summary.steps_requested; ++n) {
     if (!integrator.Step(dt)) {
@@ -140,6 +191,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
         result.max_contact_force_n[c] = std::max(result.max_contact_force_n[c], forces[c]);
       }
     }
+    if (impacts) impacts->Step(integrator.V(), dt);
     if (dissipates) {
       const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
       dissipated += 0.5 * dt * (power_before + power_now);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/impact_statistics.h"
 #include "core/newmark.h"
 #include "core/run_status.h"
 #include "core/uniform_signal.h"
@@ -35,6 +36,10 @@ struct TransientOptions {
   std::vector<int> recorded_contacts;
   // The largest force of each contact over the run, from every step (cheap: no history kept).
   bool track_max_contact_force = false;
+  // The impact statistics of each contact (docs/physics.md §6), from every step, streamed (no
+  // history kept); contacts and impacts told apart by impact_counting (checked by IsValid).
+  bool track_impact_statistics = false;
+  ImpactCounting impact_counting;
   // Displacement and velocity histories are recorded at each of these points (row . x).
   std::vector<Eigen::VectorXd> observed_rows;
 
@@ -68,7 +73,9 @@ struct TransientResult {
   // One per contact (or per recorded_contacts entry), when recorded.
   std::vector<UniformSignal> contact_force_n;
   std::vector<double> max_contact_force_n;  // One per contact, when tracked.
-  EnergyHistory energy;                     // Empty unless record_energy.
+  // One per contact, when tracked, over the steps taken (empty if none was).
+  std::vector<ImpactStatistics> impact_statistics;
+  EnergyHistory energy;  // Empty unless record_energy.
 };
 
 // Precondition: options.IsValid(). Histories start with the initial state at t = 0 and hold

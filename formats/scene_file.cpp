@@ -706,6 +706,14 @@ void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
     scene.outputs.rest_duration_s = Positive(sh, "rest_duration_s", 100.0);
     sh.Finish();
   }
+  if (const Json* impacts = o.Get("impact_statistics")) {
+    JsonObjectReader im(*impacts, path, o.PathOf("impact_statistics"));
+    scene.outputs.impact_statistics = true;
+    scene.outputs.impact_counting.rest_duration_s = Positive(im, "rest_duration_s", 100.0);
+    scene.outputs.impact_counting.force_threshold_n =
+        InRange(im, "force_threshold_n", 0.0, 0.0, 1e15);
+    im.Finish();
+  }
   scene.outputs.record_stride = o.Integer("record_stride", 1);
   if (scene.outputs.record_stride < 1 || scene.outputs.record_stride > 1'000'000)
     o.Fail("record_stride", "must lie in [1, 1e6]");

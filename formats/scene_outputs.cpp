@@ -40,7 +40,26 @@ Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
                       {"total_impulse_n_s", impulse},
                       {"first", shocks.empty() ? Json(nullptr) : ShockToJson(shocks.front())}};
   }
+  if (!run.impact_statistics.empty()) {
+    zone["impact_statistics"] = ImpactStatisticsToJson(run.impact_statistics[i]);
+  }
   return zone;
+}
+
+// The columns of impact_statistics.csv after the zone's name, in ImpactStatistics' order; an
+// unavailable wear work rate is an empty field.
+constexpr const char* kImpactColumns =
+    "impacts,impacts_per_s,rebounds_per_impact,mean_impact_duration_s,"
+    "longest_impact_duration_s,contact_time_fraction,mean_force_n,mean_force_in_contact_n,"
+    "rms_force_n,max_force_n,impulse_n_s,wear_work_rate_w,contacts,truncated";
+
+void WriteImpactRow(std::ostream& out, const ImpactStatistics& s) {
+  out << s.impacts << ',' << s.impacts_per_s << ',' << s.rebounds_per_impact << ','
+      << s.mean_impact_duration_s << ',' << s.longest_impact_duration_s << ','
+      << s.contact_time_fraction << ',' << s.mean_force_n << ',' << s.mean_force_in_contact_n << ','
+      << s.rms_force_n << ',' << s.max_force_n << ',' << s.impulse_n_s << ',';
+  if (s.wear_available) out << s.wear_work_rate_w;
+  out << ',' << s.contacts << ',' << (s.truncated ? 1 : 0) << '\n';
 }
 
 template <typename Row>
@@ -54,6 +73,24 @@ void WriteCsv(const std::filesystem::path& file, const std::string& header, std:
 }
 
 }  // namespace
+
+Json ImpactStatisticsToJson(const ImpactStatistics& s) {
+  return {{"impacts", s.impacts},
+          {"impacts_per_s", s.impacts_per_s},
+          {"rebounds_per_impact", s.rebounds_per_impact},
+          {"mean_impact_duration_s", s.mean_impact_duration_s},
+          {"longest_impact_duration_s", s.longest_impact_duration_s},
+          {"contact_time_fraction", s.contact_time_fraction},
+          {"mean_force_n", s.mean_force_n},
+          {"mean_force_in_contact_n", s.mean_force_in_contact_n},
+          {"rms_force_n", s.rms_force_n},
+          {"max_force_n", s.max_force_n},
+          {"impulse_n_s", s.impulse_n_s},
+          {"wear_available", s.wear_available},
+          {"wear_work_rate_w", s.wear_available ? Json(s.wear_work_rate_w) : Json(nullptr)},
+          {"contacts", s.contacts},
+          {"truncated", s.truncated}};
+}
 
 Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
   const RunSummary& s = run.result.summary;
@@ -80,7 +117,7 @@ Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
     const std::size_t at = static_cast<std::size_t>(largest - run.max_contact_force_n.begin());
     json["largest_contact_force"] = {{"zone", scene.zones[at].name}, {"force_n", *largest}};
   }
-  if (!run.max_contact_force_n.empty() || !run.shocks.empty()) {
+  if (!run.max_contact_force_n.empty() || !run.shocks.empty() || !run.impact_statistics.empty()) {
     Json zones = Json::array();
     for (std::size_t i = 0; i < scene.zones.size(); ++i) zones.push_back(ZoneJson(scene, run, i));
     json["zone_results"] = std::move(zones);
@@ -159,6 +196,15 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
           out << CsvField(scene.zones[rows[i].first].name) << ',' << s.start_s << ',' << s.end_s
               << ',' << s.Duration() << ',' << s.peak_force_n << ',' << s.peak_time_s << ','
               << s.impulse_n_s << ',' << s.Rebounds() << ',' << (s.truncated ? 1 : 0) << '\n';
+        },
+        written);
+  }
+  if (!run.impact_statistics.empty()) {
+    WriteCsv(
+        dir / "impact_statistics.csv", std::string("zone,") + kImpactColumns, scene.zones.size(),
+        [&](std::ostream& out, std::size_t i) {
+          out << CsvField(scene.zones[i].name) << ',';
+          WriteImpactRow(out, run.impact_statistics[i]);
         },
         written);
   }

@@ -11,15 +11,19 @@
 
 namespace shockmap {
 
-// Status, time step and bounds, model size, timings, and per zone the maximum force and shock
-// statistics when they were requested.
+// One zone's impact statistics under the field names of ImpactStatistics; the wear work rate
+// is null where it is unavailable (wear_available false).
+nlohmann::json ImpactStatisticsToJson(const ImpactStatistics& statistics);
+
+// Status, time step and bounds, model size, timings, and per zone the maximum force, shock
+// statistics and impact statistics when they were requested.
 nlohmann::json SceneRunToJson(const Scene& scene, const SceneRun& run);
 
 // Writes into `dir` (created): summary.json always; displacements.csv (t_s, then each observed
 // point's displacement and velocity), contact_forces.csv (t_s, one column per zone),
-// energies.csv, max_contact_force.csv (one row per zone with its location) and shocks.csv (one
-// row per shock) when requested. Returns the files written. Throws InputError naming a file
-// that cannot be written.
+// energies.csv, max_contact_force.csv (one row per zone with its location), shocks.csv (one
+// row per shock) and impact_statistics.csv (one row per zone) when requested. Returns the files
+// written. Throws InputError naming a file that cannot be written.
 std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const SceneRun& run,
                                                      const std::filesystem::path& dir);
 
