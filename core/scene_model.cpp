@@ -1,6 +1,7 @@
 #include "core/scene_model.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -82,10 +83,7 @@ double FirstElasticFrequencyHz(const Eigen::VectorXd& omega_rad_s) {
 BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
                     const std::vector<double>& static_heights) {
   BeamModes m;
-  BeamProperties p{b.length_m, b.ei_n_m2, b.rho_a_kg_per_m};
-  m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
-  AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
-  AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
+  m.fe = AssembleSceneBeam(b);
   // One eigensolution gives the first elastic frequency and the truncated basis.
   const ModalBasis all = ComputeLowestModes(m.fe, m.fe.Size());
   const double f1 = FirstElasticFrequencyHz(all.omega_rad_s);
@@ -339,6 +337,21 @@ void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
 }
 
 }  // namespace
+
+FeBeamModel AssembleSceneBeam(const SceneBeam& b) {
+  FeBeamModel fe =
+      AssembleBeam({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}, b.n_elements, b.at_zero, b.at_length);
+  AddEndSpring(fe, 0, b.spring_at_zero_n_per_m);
+  AddEndSpring(fe, b.n_elements, b.spring_at_length_n_per_m);
+  return fe;
+}
+
+double LocalBendingStiffness(const SceneBeam& beam, double height_m) {
+  const FeBeamModel fe = AssembleSceneBeam(beam);
+  const Eigen::VectorXd row = fe.DeflectionRow(height_m);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(fe.stiffness);
+  return 1.0 / row.dot(ldlt.solve(row));
+}
 
 SceneModel BuildSceneModel(const Scene& scene) {
   const Layout layout = LayOut(scene);

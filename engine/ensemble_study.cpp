@@ -23,10 +23,27 @@ std::string ZonesJson(const Scene& scene) {
   return zones.dump();
 }
 
-// The member's zone rows of a run that ended ok: its largest force per zone.
+// The member's zone rows of a run that ended ok: its largest force per zone and, when streamed,
+// its impact statistics (the wear work rate where the scene carries the sliding).
 std::vector<EnsembleZoneRow> ZoneRows(const SceneRun& run) {
   std::vector<EnsembleZoneRow> zones(run.max_contact_force_n.size());
-  for (std::size_t i = 0; i < zones.size(); ++i) zones[i].max_force_n = run.max_contact_force_n[i];
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    EnsembleZoneRow& z = zones[i];
+    z.max_force_n = run.max_contact_force_n[i];
+    if (i >= run.impact_statistics.size()) continue;
+    const ImpactStatistics& s = run.impact_statistics[i];
+    z.impacts = s.impacts;
+    z.impacts_per_s = s.impacts_per_s;
+    z.rebounds_per_impact = s.rebounds_per_impact;
+    z.mean_impact_duration_s = s.mean_impact_duration_s;
+    z.longest_impact_duration_s = s.longest_impact_duration_s;
+    z.contact_time_fraction = s.contact_time_fraction;
+    z.mean_force_n = s.mean_force_n;
+    z.mean_force_in_contact_n = s.mean_force_in_contact_n;
+    z.rms_force_n = s.rms_force_n;
+    z.impulse_n_s = s.impulse_n_s;
+    if (s.wear_available) z.wear_work_rate_w = s.wear_work_rate_w;
+  }
   return zones;
 }
 
@@ -63,7 +80,7 @@ bool EnsembleStudy::KeepsSettingsOf(const Json& stored, const std::string&) cons
   const Json was = stored.value("settings_key", Json());
   const Json now = Json::parse(EnsembleSettingsKey(spec_));
   if (!was.is_object()) return false;
-  for (const char* key : {"scene", "seed", "draws", "window_s"}) {
+  for (const char* key : {"scene", "seed", "draws", "window_s", "impact_counting"}) {
     if (was.value(key, Json()) != now.at(key)) return false;
   }
   const Json was_states = was.value("states", Json::object());

@@ -104,6 +104,23 @@ std::vector<ParameterScatter> ParseDraws(JsonObjectReader& r, const Json& scene,
   return draws;
 }
 
+std::optional<ImpactCounting> ParseImpactCounting(JsonObjectReader& r) {
+  const Json* v = r.Get("impact_statistics");
+  if (v == nullptr) return std::nullopt;
+  JsonObjectReader im(*v, r.File(), r.PathOf("impact_statistics"));
+  ImpactCounting counting;
+  counting.rest_duration_s = im.RequiredNumber("rest_duration_s");
+  if (!(counting.rest_duration_s > 0.0) || counting.rest_duration_s > 100.0)
+    im.Fail("rest_duration_s",
+            "value " + Shown(Json(counting.rest_duration_s)) + " must lie in (0, 100] s");
+  counting.force_threshold_n = im.Number("force_threshold_n", 0.0);
+  if (!(counting.force_threshold_n >= 0.0) || counting.force_threshold_n > 1e15)
+    im.Fail("force_threshold_n",
+            "value " + Shown(Json(counting.force_threshold_n)) + " must lie in [0, 1e15] N");
+  im.Finish();
+  return counting;
+}
+
 GapLaw ParseGapLaw(const Json& value, const std::string& file, const std::string& where) {
   JsonObjectReader r(value, file, where);
   GapLaw g;
@@ -246,6 +263,10 @@ Scene SceneOf(const EnsembleStudySpec& spec, const Json& variant) {
   Scene scene = ParseScene(variant, spec.scene_file, spec.access);
   SceneOutputs outputs;
   outputs.max_contact_force = true;
+  if (spec.impact_counting) {
+    outputs.impact_statistics = true;
+    outputs.impact_counting = *spec.impact_counting;
+  }
   scene.outputs = outputs;
   scene.solver.end_time_s = spec.window_s;
   return scene;
@@ -328,6 +349,7 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   spec.window_s = r.Number("window_s", base.solver.end_time_s);
   if (!(spec.window_s > 0.0) || spec.window_s > 1e4)
     r.Fail("window_s", "value " + Shown(Json(spec.window_s)) + " must lie in (0, 1e4] s");
+  spec.impact_counting = ParseImpactCounting(r);
   spec.draws = ParseDraws(r, spec.scene, file);
   spec.states = ParseStates(r, spec.scene, file);
   spec.settings = SettingProduct(ParseSettingAxes(r, spec.scene, file));
@@ -402,6 +424,14 @@ Json DrawsJson(const EnsembleStudySpec& spec) {
 }
 }  // namespace
 
+namespace {
+Json ImpactCountingJson(const EnsembleStudySpec& spec) {
+  if (!spec.impact_counting) return Json();
+  return {{"rest_duration_s", spec.impact_counting->rest_duration_s},
+          {"force_threshold_n", spec.impact_counting->force_threshold_n}};
+}
+}  // namespace
+
 std::string NominalKey(const EnsembleStudySpec& spec, int state) {
   return Json{{"ensemble_nominal", true},
               {"scene", spec.scene},
@@ -419,6 +449,7 @@ std::string EnsembleSettingsKey(const EnsembleStudySpec& spec) {
               {"seed", spec.seed},
               {"draws", DrawsJson(spec)},
               {"states", states},
+              {"impact_counting", ImpactCountingJson(spec)},
               {"window_s", spec.window_s}}
       .dump();
 }

@@ -46,6 +46,9 @@ struct EnsembleStudySpec {
   std::uint64_t seed = 0;
   int members = 0;
   double window_s = 0.0;  // Every member's end time.
+  // Impact statistics of every zone (docs/physics.md §6), when the file asks for them
+  // ("impact_statistics": {"rest_duration_s", "force_threshold_n"?}).
+  std::optional<ImpactCounting> impact_counting;
   std::vector<ParameterScatter> draws;
   // Without "clearance_states" in the file, one state named "scene": the scene's own gaps.
   std::vector<ClearanceState> states;
@@ -65,7 +68,7 @@ EnsembleStudySpec ParseEnsembleStudySpec(const nlohmann::json& json, const std::
 
 // The member's scene: the setting, the drawn parameters and the state's gap laws with the
 // member's gap seeds applied; the end time at the window; only the largest force per zone
-// recorded. Throws InputError.
+// recorded, and the impact statistics when the study asks for them. Throws InputError.
 Scene MemberScene(const EnsembleStudySpec& spec, const EnsembleMember& member);
 // The state's nominal scene at the refined setting: every draw at its centre, every gap at its
 // law's mean. Throws InputError.
@@ -77,7 +80,8 @@ std::string MemberKey(const EnsembleStudySpec& spec, const EnsembleMember& membe
 // Identifies a state's nominal run across studies: the scene, the draws' centres, the state's
 // gaps, the refined setting and the window.
 std::string NominalKey(const EnsembleStudySpec& spec, int state);
-// What a study keeps for life: the scene, the seed, the draws, the window and each state's gaps.
+// What a study keeps for life: the scene, the seed, the draws, the window, the impact counting
+// and each state's gaps.
 std::string EnsembleSettingsKey(const EnsembleStudySpec& spec);
 // The state's gaps as JSON, as stored in the settings key.
 nlohmann::json StateJson(const ClearanceState& state);
