@@ -252,6 +252,20 @@ TEST(SceneEngine, PreloadedZonesStartAtTheirStaticEquilibrium) {
   for (double f : r.contact_force_n[1].values) EXPECT_EQ(f, 0.0);
 }
 
+// The local bending stiffness the advice divides a zone's stiffness by: 3 EI / h^3 on a
+// clamped-free beam at a node (Hermite cubics are exact for a nodal load), larger with an end
+// spring.
+TEST(SceneEngine, LocalBendingStiffnessIsThreeEiOverHCubedOnACantilever) {
+  SceneBeam b = Cantilever("beam");
+  for (const double h : {0.2, 0.6, 1.0}) {
+    const double expected = 3.0 * b.ei_n_m2 / std::pow(h, 3);
+    EXPECT_NEAR(LocalBendingStiffness(b, h), expected, 1e-9 * expected) << "h = " << h;
+  }
+  const double free_tip = LocalBendingStiffness(b, 1.0);
+  b.spring_at_length_n_per_m = 1e5;
+  EXPECT_NEAR(LocalBendingStiffness(b, 1.0), free_tip + 1e5, 1e-9 * (free_tip + 1e5));
+}
+
 TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
   // A 19-pin bundle in a wrapper, both planes: 400 coordinates, under the dense limit, so the
   // model's bound is the dense one.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <random>
 
 #include "core/input_error.h"
 
@@ -224,17 +225,55 @@ std::vector<ConvergencePoint> SizingConvergence(const std::vector<double>& force
   return points;
 }
 
-double WidthSlope(const std::vector<ConvergencePoint>& points) {
+namespace {
+
+// Least-squares slope of log(width) against log(members) over positive widths; NaN with fewer
+// than two.
+double LogLogSlope(const std::vector<std::pair<int, double>>& widths) {
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int count = 0;
-  for (const ConvergencePoint& p : points) {
-    const double width = p.sizing.upper - p.sizing.lower;
-    if (!p.sizing.lower_bounded || !p.sizing.upper_bounded || !(width > 0.0)) continue;
-    const double x = std::log(p.members), y = std::log(width);
+  for (const auto& [members, width] : widths) {
+    if (!(width > 0.0) || !std::isfinite(width)) continue;
+    const double x = std::log(members), y = std::log(width);
     sx += x, sy += y, sxx += x * x, sxy += x * y, ++count;
   }
   if (count < 2) return std::nan("");
   return (count * sxy - sx * sy) / (count * sxx - sx * sx);
+}
+
+}  // namespace
+
+double WidthSlope(const std::vector<ConvergencePoint>& points) {
+  std::vector<std::pair<int, double>> widths;
+  for (const ConvergencePoint& p : points) {
+    if (p.sizing.lower_bounded && p.sizing.upper_bounded)
+      widths.emplace_back(p.members, p.sizing.upper - p.sizing.lower);
+  }
+  return LogLogSlope(widths);
+}
+
+WidthScaling MeanWidthScaling(const std::vector<double>& forces, const SizingOptions& options,
+                              int resamples, std::uint64_t seed) {
+  WidthScaling scaling;
+  const int n = static_cast<int>(forces.size());
+  std::mt19937_64 rng(seed);
+  std::vector<double> sample;
+  for (double x = 10.0; x <= n * 1.0000001; x *= std::pow(10.0, 1.0 / 12.0)) {
+    const int m = static_cast<int>(std::lround(x));
+    if (!scaling.mean_width.empty() && scaling.mean_width.back().first == m) continue;
+    double sum = 0.0;
+    bool bounded = true;
+    for (int r = 0; r < resamples && bounded; ++r) {
+      sample.resize(m);
+      for (double& v : sample) v = forces[rng() % static_cast<std::uint64_t>(n)];
+      const QuantileInterval q = EstimateQuantile(sample, options.quantile, options.confidence);
+      bounded = q.lower_bounded && q.upper_bounded;
+      sum += q.upper - q.lower;
+    }
+    if (bounded) scaling.mean_width.emplace_back(m, sum / resamples);
+  }
+  scaling.slope = LogLogSlope(scaling.mean_width);
+  return scaling;
 }
 
 std::vector<double> ZoneForces(const StoredEnsemble& stored, const GroupSizing& group, int zone) {

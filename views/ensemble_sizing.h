@@ -93,6 +93,18 @@ std::vector<ConvergencePoint> SizingConvergence(const std::vector<double>& force
 // NaN when fewer than two points have a bounded interval of positive width.
 double WidthSlope(const std::vector<ConvergencePoint>& points);
 
+// The mean width of the sizing interval over `resamples` samples of n members drawn with
+// replacement from `forces` (their empirical distribution), for n from the smallest that bounds
+// both sides to forces.size(), about 12 per decade; and the least-squares slope of its
+// logarithm against log(n). A single nested sequence of members (SizingConvergence) gives a
+// noisy slope; this is its expectation under the sample's own distribution.
+struct WidthScaling {
+  std::vector<std::pair<int, double>> mean_width;  // (members, mean width)
+  double slope = 0.0;                              // NaN with fewer than two sizes.
+};
+WidthScaling MeanWidthScaling(const std::vector<double>& forces, const SizingOptions& options,
+                              int resamples = 400, std::uint64_t seed = 1);
+
 // The members' largest forces in one zone of one group, in member order.
 std::vector<double> ZoneForces(const StoredEnsemble& stored, const GroupSizing& group, int zone);
 
