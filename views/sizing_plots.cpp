@@ -56,23 +56,23 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
                         p.sizing.upper_bounded ? 1 : 0);
   }
   WriteData(data, text);
-  const std::string title = fmt::format(
-      "{} ({}): P{} of the largest force at {} with its {} % interval; width slope {:.2f} on "
-      "log-log",
-      s.study, g.state, Percent(s.options.quantile), g.zones[g.hottest].name,
-      Percent(s.options.confidence), WidthSlope(points));
-  return Draw(
-      image, fmt::format(
-                 R"(set title {title} noenhanced
+  const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
+                                        Percent(s.options.quantile), g.zones[g.hottest].name,
+                                        Percent(s.options.confidence));
+  return Draw(image,
+              fmt::format(
+                  R"(set title {title} noenhanced
 set xlabel 'members'
 set ylabel 'force (N)'
 set logscale x
-set key bottom right
+set xrange [9:{last}]
+set key top left
 plot {data} using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' fs solid 0.5 title 'interval (both sides bounded)', \
      '' using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate', \
      '' using 1:($6 > 0 ? 1/0 : $2) with points pt 9 ps 1.5 lc rgb '#de2d26' title 'upper side unbounded (too few members)'
 )",
-                 fmt::arg("title", GnuplotQuoted(title)), fmt::arg("data", GnuplotFileName(data))));
+                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", 1.15 * forces.size()),
+                  fmt::arg("data", GnuplotFileName(data))));
 }
 
 fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
@@ -215,9 +215,9 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
       numeric ? "set logscale x\nset xlabel " +
                     GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
               : "set xlabel 'setting'\n" + Tics(settings);
-  const std::string title = fmt::format(
-      "{}: P{} of the hottest zone's largest force per setting ({} % intervals)",
-      s.study, Percent(s.options.quantile), Percent(s.options.confidence));
+  const std::string title =
+      fmt::format("{}: P{} of the hottest zone's largest force per setting ({} % intervals)",
+                  s.study, Percent(s.options.quantile), Percent(s.options.confidence));
   return Draw(image, fmt::format("set title {} noenhanced\nset ylabel 'force (N)'\nset offsets "
                                  "graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset key top "
                                  "right\n{}{}\n",
