@@ -13,6 +13,7 @@
 #include "app/map_command.h"
 #include "app/report_command.h"
 #include "app/simulate_command.h"
+#include "app/sizing_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
 #include "core/input_error.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
   shockmap::AddSimulateCommand(app);
+  shockmap::AddSizingCommand(app);
   shockmap::AddViewCommands(app);
   shockmap::AddReportCommand(app);
   shockmap::AddExportCommand(app);

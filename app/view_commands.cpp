@@ -12,9 +12,12 @@
 #include "db/study_database.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
+#include "formats/scene_file.h"
 #include "views/advice.h"
 #include "views/cost_front.h"
+#include "views/criteria_report.h"
 #include "views/fig4_plot.h"
+#include "views/scene_advice.h"
 #include "views/scored_points.h"
 
 namespace shockmap {
@@ -27,6 +30,9 @@ struct ViewFlags {
   std::string out;
   double r_k = 0.0;
   bool json = false;
+  std::string criteria = "studies/baselines/paper_fig4.json";
+  bool every_zone = false;
+  SceneFileAccess access;
 };
 
 void AddCommon(CLI::App* cmd, ViewFlags& f, bool thresholds) {
@@ -45,6 +51,21 @@ StudySpec StoredSpec(const std::string& database_path, const std::string& study)
 // Throws InputError naming --out when the plot or the files beside it could not be named.
 void CheckPlotPath(const std::string& out) {
   if (!out.empty()) CheckPathLength(out, "--out");
+}
+
+// `advise SCENE.json`: a scene file rather than a study's name.
+bool IsSceneFile(const std::string& argument) {
+  return argument.ends_with(".json") && std::filesystem::is_regular_file(argument);
+}
+
+// Each zone's R_k and each beam's truncation from the criteria file (docs/ensembles.md).
+void AdviseForScene(const ViewFlags& f) {
+  const Scene scene = LoadScene(f.study, f.access);
+  CriteriaTolerances tolerances;
+  const ValidityCriteria criteria =
+      CriteriaFromJson(ReadJsonFile(f.criteria), f.criteria, &tolerances);
+  std::cout << "criteria from " << f.criteria << '\n'
+            << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone);
 }
 
 }  // namespace
@@ -107,14 +128,27 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
 void AddAdviseCommand(CLI::App& app, const Flags& flags) {
   CLI::App* advise = app.add_subcommand(
       "advise",
-      "Recommended R_ftrunc and dt for a new R_k from the derived criteria, with the "
-      "predicted cost");
+      "Recommended R_ftrunc and dt for a new R_k from a study's derived criteria, with the "
+      "predicted cost; or, for a scene file, each zone's R_k against the local bending "
+      "stiffness of its beams and the truncation per beam and dt the criteria require");
   AddCommon(advise, *flags, true);
-  advise->add_option("--rk", flags->r_k, "stiffness ratio to advise for")
-      ->required()
+  advise->add_option("--rk", flags->r_k, "stiffness ratio to advise for (a study's advice)")
       ->check(Positive());
   advise->add_flag("--json", flags->json, "print the advice as one JSON object");
+  advise
+      ->add_option("--criteria", flags->criteria,
+                   "with a scene file for STUDY: criteria JSON written by `criteria derive "
+                   "--out`")
+      ->capture_default_str();
+  advise->add_flag("--zones", flags->every_zone, "with a scene file: also list every zone");
+  AddAllowPathFlag(advise, flags->access);
   advise->callback([flags] {
+    if (IsSceneFile(flags->study)) return AdviseForScene(*flags);
+    if (flags->r_k <= 0.0) {
+      throw InputError(
+          "--rk: required to advise from a study (or give a scene file, *.json, "
+          "for STUDY)");
+    }
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
     const Advice a = Advise(StoredSpec(flags->database_path, study),

@@ -1,6 +1,7 @@
 #include "core/scene_model.h"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "core/beam_fe.h"
 #include "core/modal_basis.h"
 #include "core/modal_basis_cache.h"
+#include "core/preload_equilibrium.h"
 
 namespace shockmap {
 namespace {
@@ -89,10 +91,7 @@ double FirstElasticFrequencyHz(const Eigen::VectorXd& omega_rad_s) {
 BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
                     const std::vector<double>& static_heights) {
   BeamModes m;
-  BeamProperties p{b.length_m, b.ei_n_m2, b.rho_a_kg_per_m};
-  m.fe = AssembleBeam(p, b.n_elements, b.at_zero, b.at_length);
-  AddEndSpring(m.fe, 0, b.spring_at_zero_n_per_m);
-  AddEndSpring(m.fe, b.n_elements, b.spring_at_length_n_per_m);
+  m.fe = AssembleSceneBeam(b);
   // One eigensolution (per mesh and thread) gives the first elastic frequency and the
   // truncated basis.
   const std::shared_ptr<const ModalBasis> solved = AllModesCached(ModelKey(b), m.fe);
@@ -304,8 +303,10 @@ double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
   return tip_m / m.At(height)[mode - 1];
 }
 
+// The declared initial state, over the static equilibrium of the preloaded zones if any.
 void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model) {
-  model.x0 = Eigen::VectorXd::Zero(layout.n);
+  model.x0 = HasPreloadedZones(*model.system) ? PreloadEquilibrium(*model.system)
+                                              : Eigen::VectorXd::Zero(layout.n);
   model.v0 = Eigen::VectorXd::Zero(layout.n);
   for (const auto& s : scene.initial_state) {
     const BeamModes& m = *layout.modes[s.beam];
@@ -346,6 +347,21 @@ void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
 }
 
 }  // namespace
+
+FeBeamModel AssembleSceneBeam(const SceneBeam& b) {
+  FeBeamModel fe =
+      AssembleBeam({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}, b.n_elements, b.at_zero, b.at_length);
+  AddEndSpring(fe, 0, b.spring_at_zero_n_per_m);
+  AddEndSpring(fe, b.n_elements, b.spring_at_length_n_per_m);
+  return fe;
+}
+
+double LocalBendingStiffness(const SceneBeam& beam, double height_m) {
+  const FeBeamModel fe = AssembleSceneBeam(beam);
+  const Eigen::VectorXd row = fe.DeflectionRow(height_m);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(fe.stiffness);
+  return 1.0 / row.dot(ldlt.solve(row));
+}
 
 SceneModel BuildSceneModel(const Scene& scene) {
   const Layout layout = LayOut(scene);

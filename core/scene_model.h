@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/beam_fe.h"
 #include "core/scene.h"
 #include "core/scene_system.h"
 
@@ -23,6 +24,14 @@ struct SceneModel {
   int distinct_bases = 0;
   StabilityBounds bounds;  // paper: 1/(4 max f_trunc); sharp: every zone closed.
 };
+
+// The FE model of one scene beam: its elements, ends and end springs.
+FeBeamModel AssembleSceneBeam(const SceneBeam& beam);
+
+// The static stiffness of the beam at a height (N/m): the force at that height over the
+// deflection it causes there, 1 / (r . K^-1 r) with r the FE deflection row; 3 EI / h^3 on a
+// clamped-free beam. Precondition: the beam is supported (no rigid-body mode).
+double LocalBendingStiffness(const SceneBeam& beam, double height_m);
 
 // Preconditions: the scene was validated (indices in range, positive properties), and it
 // outlives the model (the loads refer to its effects).

@@ -366,6 +366,78 @@ LEFT JOIN scene_references r ON r.reference_id = p.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 CREATE VIEW scene_params AS SELECT * FROM scene_results;
 )sql",
+    // 7 -> 8: ensemble studies of a scene (formats/ensemble_study_spec.h). A point is one
+    // member: a clearance state, a numerical setting and the member's index; its zones' rows
+    // hold the largest force and the impact statistics of the member's run. A reference is a
+    // state's nominal run (every draw at its centre) at the refined setting.
+    R"sql(
+CREATE TABLE ensemble_references (
+  reference_id     INTEGER PRIMARY KEY,
+  reference_key    TEXT NOT NULL UNIQUE,
+  state            TEXT NOT NULL,
+  status           TEXT NOT NULL,
+  message          TEXT NOT NULL,
+  zones_json       TEXT NOT NULL,
+  max_force_n      BLOB NOT NULL,
+  steps            INTEGER NOT NULL,
+  wall_s           REAL NOT NULL,
+  run_id           INTEGER REFERENCES runs(run_id),
+  created_utc      TEXT NOT NULL
+);
+CREATE TABLE ensemble_members (
+  point_id         INTEGER PRIMARY KEY,
+  study_id         INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key        TEXT NOT NULL,
+  reference_key    TEXT NOT NULL,
+  state            TEXT NOT NULL,
+  setting_json     TEXT NOT NULL,
+  member           INTEGER NOT NULL,
+  status           TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message          TEXT NOT NULL DEFAULT '',
+  run_id           INTEGER REFERENCES runs(run_id),
+  updated_utc      TEXT NOT NULL,
+  host             TEXT,
+  rank             INTEGER,
+  reference_id     INTEGER REFERENCES ensemble_references(reference_id),
+  member_seed      TEXT,
+  coordinates      INTEGER,
+  dt_used_s        REAL,
+  steps            INTEGER,
+  wall_s           REAL,
+  cpu_s            REAL,
+  max_energy_ratio REAL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX ensemble_members_by_status ON ensemble_members(study_id, status);
+CREATE TABLE ensemble_member_zones (
+  point_id                  INTEGER NOT NULL REFERENCES ensemble_members(point_id),
+  zone                      INTEGER NOT NULL,
+  max_force_n               REAL NOT NULL,
+  impacts                   INTEGER,
+  impacts_per_s             REAL,
+  rebounds_per_impact       REAL,
+  mean_impact_duration_s    REAL,
+  longest_impact_duration_s REAL,
+  contact_time_fraction     REAL,
+  mean_force_n              REAL,
+  mean_force_in_contact_n   REAL,
+  rms_force_n               REAL,
+  impulse_n_s               REAL,
+  wear_work_rate_w          REAL,
+  PRIMARY KEY (point_id, zone)
+) WITHOUT ROWID;
+CREATE VIEW ensemble_results AS
+SELECT st.name AS study, p.point_id, p.state, p.setting_json, p.member, p.status, p.message,
+       p.member_seed, p.coordinates, p.dt_used_s, p.steps, p.wall_s, p.cpu_s, p.max_energy_ratio,
+       (SELECT max(z.max_force_n) FROM ensemble_member_zones z WHERE z.point_id = p.point_id)
+         AS largest_force_n,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM ensemble_members p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "engine/canonical_study.h"
+#include "engine/ensemble_study.h"
 #include "engine/scene_study.h"
 
 namespace shockmap {
@@ -50,8 +51,10 @@ auto WithKind(const StudyFile& study, F f) {
         using Spec = std::decay_t<decltype(spec)>;
         if constexpr (std::is_same_v<Spec, StudySpec>) {
           return f(CanonicalStudy(spec));
-        } else {
+        } else if constexpr (std::is_same_v<Spec, SceneStudySpec>) {
           return f(SceneStudy(spec));
+        } else {
+          return f(EnsembleStudy(spec));
         }
       },
       study);

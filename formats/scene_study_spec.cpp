@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "formats/json_reader.h"
+#include "formats/parameter_path.h"
 #include "formats/scene_file.h"
 #include "formats/study_spec.h"
 
@@ -15,50 +16,9 @@ namespace {
 
 using Json = nlohmann::json;
 
-// "bundle.wire.gap_m" or "zones[0].gap_m" as a JSON pointer; nullopt when malformed.
-std::optional<Json::json_pointer> PointerOf(const std::string& path) {
-  std::string pointer;
-  std::size_t start = 0;
-  while (start <= path.size()) {
-    const std::size_t dot = std::min(path.find('.', start), path.size());
-    std::string segment = path.substr(start, dot - start);
-    std::string index;
-    if (const auto open = segment.find('['); open != std::string::npos) {
-      if (segment.back() != ']' || open == 0) return std::nullopt;
-      index = segment.substr(open + 1, segment.size() - open - 2);
-      segment.resize(open);
-      if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return std::nullopt;
-    }
-    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos) return std::nullopt;
-    pointer += "/" + segment;
-    if (!index.empty()) pointer += "/" + index;
-    start = dot + 1;
-  }
-  return Json::json_pointer(pointer);
-}
-
-// Where the numeric parameter `path` sits in the scene; InputError (naming `where`) unless
-// the scene holds a number there.
-Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
-                                    const std::string& file, const std::string& where) {
-  const auto pointer = PointerOf(path);
-  if (!pointer) {
-    FailAt(file, where,
-           "\"" + path +
-               "\" is not a parameter path: use keys joined by dots, with [i] for list "
-               "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
-  }
-  if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
-    FailAt(file, where,
-           "the scene has no number at \"" + path +
-               "\"; only numbers the scene file sets can be swept (write the default there)");
-  }
-  return *pointer;
-}
-
 Json Applied(const Json& scene, const SceneParameters& parameters) {
   Json variant = scene;
-  for (const auto& [path, value] : parameters) variant[*PointerOf(path)] = value;
+  for (const auto& [path, value] : parameters) variant[*ParameterPointer(path)] = value;
   return variant;
 }
 

@@ -6,15 +6,25 @@
 namespace shockmap {
 
 std::string ToString(StudyFileKind kind) {
-  return kind == StudyFileKind::kSceneSweep ? "scene_sweep" : "canonical";
+  switch (kind) {
+    case StudyFileKind::kSceneSweep:
+      return "scene_sweep";
+    case StudyFileKind::kSceneEnsemble:
+      return "scene_ensemble";
+    case StudyFileKind::kCanonical:
+      break;
+  }
+  return "canonical";
 }
 
 StudyFileKind StudyFileKindFromString(std::string_view text, const std::string& file) {
-  for (StudyFileKind k : {StudyFileKind::kCanonical, StudyFileKind::kSceneSweep}) {
+  for (StudyFileKind k :
+       {StudyFileKind::kCanonical, StudyFileKind::kSceneSweep, StudyFileKind::kSceneEnsemble}) {
     if (text == ToString(k)) return k;
   }
   FailAt(file, "kind",
-         "unknown study kind \"" + std::string(text) + "\"; allowed: canonical, scene_sweep");
+         "unknown study kind \"" + std::string(text) +
+             "\"; allowed: canonical, scene_sweep, scene_ensemble");
 }
 
 StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file) {
@@ -29,8 +39,13 @@ StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file) 
 
 StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file,
                          const SceneFileAccess& access) {
-  if (StudyKindOf(json, file) == StudyFileKind::kSceneSweep) {
-    return ParseSceneStudySpec(json, file, access);
+  switch (StudyKindOf(json, file)) {
+    case StudyFileKind::kSceneSweep:
+      return ParseSceneStudySpec(json, file, access);
+    case StudyFileKind::kSceneEnsemble:
+      return ParseEnsembleStudySpec(json, file, access);
+    case StudyFileKind::kCanonical:
+      break;
   }
   return ParseStudySpec(json, file);
 }

@@ -5,7 +5,9 @@
 //   "kind": "canonical"    the paper's problem: grids of (R_k, R_ftrunc, dt) points
 //                          (formats/study_spec.h);
 //   "kind": "scene_sweep"  a scene file with a sweep of its numeric parameters
-//                          (formats/scene_study_spec.h).
+//                          (formats/scene_study_spec.h);
+//   "kind": "scene_ensemble"  a scene run as an ensemble of randomly drawn members, per
+//                          clearance state and numerical setting (formats/ensemble_study_spec.h).
 // Files written before the field existed are still read: without "kind", a file naming a
 // "scene" is a scene sweep, any other a study of the paper's problem.
 
@@ -14,12 +16,13 @@
 #include <string_view>
 #include <variant>
 
+#include "formats/ensemble_study_spec.h"
 #include "formats/scene_study_spec.h"
 #include "formats/study_spec.h"
 
 namespace shockmap {
 
-enum class StudyFileKind { kCanonical, kSceneSweep };
+enum class StudyFileKind { kCanonical, kSceneSweep, kSceneEnsemble };
 
 std::string ToString(StudyFileKind kind);
 // Throws InputError naming the file and the allowed kinds.
@@ -29,7 +32,7 @@ StudyFileKind StudyFileKindFromString(std::string_view text, const std::string& 
 // unknown kind or a JSON that is not an object.
 StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file);
 
-using StudyFile = std::variant<StudySpec, SceneStudySpec>;
+using StudyFile = std::variant<StudySpec, SceneStudySpec, EnsembleStudySpec>;
 
 // Reads, dispatches and parses a study file; the whole file, and every point's scene, is
 // checked before anything runs. Throws InputError naming the file, the key path, the value and

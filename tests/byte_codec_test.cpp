@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/canonical_study.h"
+#include "engine/ensemble_study.h"
 #include "engine/scene_study.h"
 
 namespace shockmap {
@@ -97,6 +98,33 @@ TEST(ByteCodec, SceneOutcomeComesBackFieldForField) {
   EXPECT_FALSE(got.score->err.has_value());
   EXPECT_EQ(got.score->largest_force_zone, "pin_2");
   EXPECT_EQ(got.score->first_shock_impulse_n_s, 0.03);
+}
+
+TEST(ByteCodec, EnsembleOutcomeComesBackZoneForZone) {
+  const EnsembleStudy ensemble(
+      std::get<EnsembleStudySpec>(ReadStudyFile(Source("studies/bundle_hex_ensemble.json"))));
+  EnsembleMemberRow s;
+  s.member_seed = "0x00000000000000ff";
+  s.steps = 7;
+  s.zones.resize(2);
+  s.zones[0].max_force_n = 12.5;
+  s.zones[1].max_force_n = 0.0;
+  s.zones[1].impacts = 3;
+  s.zones[1].wear_work_rate_w = 0.25;
+  ByteWriter out;
+  EncodeOutcome(ensemble, {RunStatus::kOk, "", s}, out);
+  ByteReader in(out.Bytes());
+  const EnsembleStudy::Outcome got = DecodeOutcome(ensemble, in);
+  in.ExpectEnd();
+  ASSERT_TRUE(got.score.has_value());
+  EXPECT_EQ(got.score->member_seed, s.member_seed);
+  EXPECT_EQ(got.score->steps, 7);
+  ASSERT_EQ(got.score->zones.size(), 2u);
+  EXPECT_EQ(got.score->zones[0].max_force_n, 12.5);
+  EXPECT_FALSE(got.score->zones[0].impacts.has_value());
+  EXPECT_EQ(got.score->zones[1].impacts, 3);
+  EXPECT_EQ(got.score->zones[1].wear_work_rate_w, 0.25);
+  EXPECT_FALSE(got.score->zones[1].rms_force_n.has_value());
 }
 
 TEST(ByteCodec, TruncatedOrOverlongMessagesAreRefused) {

@@ -225,6 +225,47 @@ TEST(SceneEngine, StaticCorrectionMakesTheContactPointStaticResponseExact) {
   EXPECT_LT(corrected.bounds.dt_paper_s, truncated.bounds.dt_paper_s);
 }
 
+// A cantilever preloaded against a stop at its tip (gap -g): with static correction the tip's
+// static stiffness is exactly 3 EI / L^3 = k_b, so the equilibrium force is k k_b g / (k + k_b);
+// the run starts there and, without loads, stays at rest with that force. A second stop with a
+// gap the equilibrium does not close stays open.
+TEST(SceneEngine, PreloadedZonesStartAtTheirStaticEquilibrium) {
+  Scene scene;
+  scene.beams = {Cantilever("beam")};
+  const double g = 1e-3, k = 1e6;
+  scene.zones = {
+      {.name = "preloaded", .height_m = 1.0, .normal_y = 1.0, .gap_m = -g, .stiffness_n_per_m = k},
+      {.name = "open", .height_m = 0.5, .normal_y = -1.0, .gap_m = 1e-3, .stiffness_n_per_m = k}};
+  scene.solver.r_ftrunc = 10.0;
+  scene.solver.static_correction = true;
+  scene.solver.end_time_s = 0.05;
+  scene.outputs.displacements = {Tip(0, 1.0)};
+  const SceneBeam& b = scene.beams[0];
+  const double k_beam = 3.0 * b.ei_n_m2 / std::pow(b.length_m, 3);
+  const double force = k * k_beam * g / (k + k_beam);
+
+  SceneModel model = BuildSceneModel(scene);
+  EXPECT_NEAR(model.observed_rows[0].dot(model.x0), -force / k_beam, 1e-9 * force / k_beam);
+  const TransientResult r = Integrate(scene, model, 0.1 * model.bounds.dt_sharp_s);
+  ASSERT_EQ(r.summary.status, RunStatus::kOk);
+  for (double f : r.contact_force_n[0].values) EXPECT_NEAR(f, force, 1e-6 * force);
+  for (double f : r.contact_force_n[1].values) EXPECT_EQ(f, 0.0);
+}
+
+// The local bending stiffness the advice divides a zone's stiffness by: 3 EI / h^3 on a
+// clamped-free beam at a node (Hermite cubics are exact for a nodal load), larger with an end
+// spring.
+TEST(SceneEngine, LocalBendingStiffnessIsThreeEiOverHCubedOnACantilever) {
+  SceneBeam b = Cantilever("beam");
+  for (const double h : {0.2, 0.6, 1.0}) {
+    const double expected = 3.0 * b.ei_n_m2 / std::pow(h, 3);
+    EXPECT_NEAR(LocalBendingStiffness(b, h), expected, 1e-9 * expected) << "h = " << h;
+  }
+  const double free_tip = LocalBendingStiffness(b, 1.0);
+  b.spring_at_length_n_per_m = 1e5;
+  EXPECT_NEAR(LocalBendingStiffness(b, 1.0), free_tip + 1e5, 1e-9 * (free_tip + 1e5));
+}
+
 TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
   // A 19-pin bundle in a wrapper, both planes: 400 coordinates, under the dense limit, so the
   // model's bound is the dense one.

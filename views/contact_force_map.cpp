@@ -164,20 +164,20 @@ struct Layout {
   int rows = 1, columns = 1;
 };
 
+// `quantity` names what the forces are, in the title and on the colour bar.
 std::string MapScript(const Scene& scene, const std::vector<double>& max_force_n,
-                      const ZoneExtent& e, const std::filesystem::path& file, Layout layout,
-                      const std::string& panels) {
+                      const std::string& quantity, const ZoneExtent& e,
+                      const std::filesystem::path& file, Layout layout, const std::string& panels) {
   const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
   const SceneZone& strongest = scene.zones[static_cast<std::size_t>(largest - max_force_n.begin())];
-  const std::string title =
-      fmt::format("{}: maximum contact force per zone (largest {:.4g} N at {})", scene.name,
-                  *largest, strongest.name);
+  const std::string title = fmt::format("{}: {} per zone (largest {:.4g} N at {})", scene.name,
+                                        quantity, *largest, strongest.name);
   return fmt::format(
       R"(set terminal {terminal}
 set output {out}
 set palette defined (0 '#fff5eb', 0.25 '#fdae6b', 0.6 '#e6550d', 1 '#7f2704')
 set cbrange [0:{cb}]
-set cblabel 'maximum contact force between beams (N)'
+set cblabel {cblabel} noenhanced
 set grid lc rgb '#dddddd'
 set multiplot layout {rows},{columns} title {title} font ',13' noenhanced
 {panels}unset multiplot
@@ -187,13 +187,14 @@ set multiplot layout {rows},{columns} title {title} font ',13' noenhanced
       fmt::arg("out", GnuplotFileName(file)),
       fmt::arg("cb", e.largest_between > 0.0 ? e.largest_between : 1.0),
       fmt::arg("rows", layout.rows), fmt::arg("columns", layout.columns),
+      fmt::arg("cblabel", GnuplotQuoted(quantity + " between beams (N)")),
       fmt::arg("title", GnuplotQuoted(title)), fmt::arg("panels", panels));
 }
 
 }  // namespace
 
 void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_force_n,
-                         const std::filesystem::path& file) {
+                         const std::filesystem::path& file, const std::string& quantity) {
   assert(max_force_n.size() == scene.zones.size());
   if (scene.zones.empty()) throw InputError(scene.name + ": the scene has no contact zone to map");
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
@@ -217,7 +218,7 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   if (extent.stop) panels += StopPlot(extent, zones), ++count;
   const int columns = both ? std::min(count, 4) : count;
   const int rows = (count + columns - 1) / columns;
-  RunGnuplot(MapScript(scene, max_force_n, extent, file, {rows, columns}, panels),
+  RunGnuplot(MapScript(scene, max_force_n, quantity, extent, file, {rows, columns}, panels),
              std::filesystem::path(file).replace_extension(".gp"), file);
 }
 

@@ -7,6 +7,7 @@
 // The legend names only the kinds of zone present.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/scene.h"
@@ -15,9 +16,11 @@ namespace shockmap {
 
 // Draws the map into `file` (.png or .svg), with its data (FILE.zones.dat, and FILE.beams.dat
 // for both planes) and gnuplot script beside it; the script runs from its own folder.
+// `quantity` names what the forces are (in the title and on the colour bar).
 // Preconditions: one force per zone of the scene. Throws InputError when the scene has no
 // zones or the file cannot be written.
 void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_force_n,
-                         const std::filesystem::path& file);
+                         const std::filesystem::path& file,
+                         const std::string& quantity = "maximum contact force");
 
 }  // namespace shockmap

@@ -1,0 +1,154 @@
+#include "app/sizing_command.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/flag_checks.h"
+#include "core/input_error.h"
+#include "db/ensemble_members.h"
+#include "db/schema.h"
+#include "db/study_database.h"
+#include "formats/json_reader.h"
+#include "formats/output_file.h"
+#include "formats/scene_file.h"
+#include "views/query_output.h"
+#include "views/sizing_plots.h"
+#include "views/sizing_tables.h"
+
+namespace shockmap {
+namespace {
+
+struct SizingFlags {
+  std::string database_path = kDefaultDatabasePath;
+  std::string study;
+  SizingOptions options;
+  std::string out;
+  std::string format = "table";
+};
+
+// The study named, or the database's only ensemble study.
+std::string ResolveEnsemble(Connection& db, const std::string& study) {
+  if (!study.empty()) return study;
+  const std::vector<std::string> names = EnsembleStudies(db);
+  if (names.size() == 1) return names.front();
+  if (names.empty()) throw InputError(db.Path() + " holds no ensemble study");
+  std::string listed;
+  for (const std::string& n : names) listed += (listed.empty() ? "" : ", ") + n;
+  throw InputError("STUDY: " + db.Path() + " holds several ensemble studies; name one of " +
+                   listed);
+}
+
+// The study's scene as stored with it, for the maps.
+Scene StoredScene(const StoredEnsemble& stored, const std::string& database_path,
+                  const std::string& study) {
+  const nlohmann::json spec =
+      ParseJsonText(stored.spec_json, database_path + ": stored study " + study);
+  return ParseScene(spec.at("scene_json"), database_path + ": scene of study " + study);
+}
+
+// The hottest zone of each state and setting, then how each setting compares and what the
+// members cost.
+void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
+  fmt::print(
+      "study {}: P{:g} of the largest force per zone, {:g} % intervals (order statistics; "
+      "bootstrap as a cross-check), settings agreeing within {:g} %\n",
+      s.study, 100 * s.options.quantile, 100 * s.options.confidence, 100 * s.options.tolerance);
+  if (s.pending + s.failed > 0) {
+    fmt::print("  {} members pending, {} not ok: not counted\n", s.pending, s.failed);
+  }
+  WriteQueryResult(HottestZoneTable(s, true), QueryFormat::kTable, std::cout);
+  for (const GroupSizing& g : s.groups) {
+    const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
+    const WidthScaling scaling = MeanWidthScaling(forces, s.options);
+    if (scaling.mean_width.empty()) continue;
+    fmt::print(
+        "  {} {}: the hottest zone's interval narrows as members^{:.2f} (its mean width "
+        "over 400 resamples of {} to {} members; the members in order: ^{:.2f})\n",
+        g.state, g.setting_json, scaling.slope, scaling.mean_width.front().first,
+        scaling.mean_width.back().first, WidthSlope(SizingConvergence(forces, s.options)));
+  }
+  for (const GroupSizing& g : s.groups) {
+    if (g.refined) continue;
+    const std::size_t undecided = g.zones.size() - g.zones_agreeing - g.zones_disagreeing;
+    fmt::print(
+        "  {} {} against the refined setting: {} zones agree, {} do not, {} undecided "
+        "(an unbounded interval); hottest zone {}\n",
+        g.state, g.setting_json, g.zones_agreeing, g.zones_disagreeing, undecided,
+        !g.hottest_agrees   ? "undecided"
+        : *g.hottest_agrees ? "agrees"
+                            : "does not agree");
+  }
+}
+
+void Size(const SizingFlags& f) {
+  if (!f.out.empty()) CheckPathLength(f.out, "--out");
+  Connection db(f.database_path, Connection::Mode::kReadOnly);
+  CheckSchema(db);
+  const std::string study = ResolveEnsemble(db, f.study);
+  const StoredEnsemble stored = ReadEnsemble(db, study);
+  const EnsembleSizing sizing = SizeEnsemble(stored, study, f.options);
+  if (f.format == "table") {
+    PrintTable(sizing, stored);
+  } else {
+    WriteQueryResult(ZoneTable(sizing), *QueryFormatFromString(f.format), std::cout);
+  }
+  if (f.out.empty()) return;
+  CreateOutputDirectory(f.out);
+  for (const auto& [name, table] :
+       {std::pair{"sizing_hottest.csv", HottestZoneTable(sizing, false)},
+        std::pair{"sizing_zones.csv", ZoneTable(sizing)}}) {
+    AtomicFile file(std::filesystem::path(f.out) / name);
+    WriteQueryResult(table, QueryFormat::kCsv, file.Stream());
+    file.Commit();
+  }
+  const auto pictures =
+      DrawSizingPictures(sizing, stored, StoredScene(stored, f.database_path, study), f.out);
+  std::ostream& note = f.format == "table" ? std::cout : std::cerr;
+  note << "tables written to " << f.out << "/sizing_hottest.csv and sizing_zones.csv\n";
+  for (const auto& p : pictures) note << "picture written to " << p.string() << '\n';
+}
+
+}  // namespace
+
+void AddSizingCommand(CLI::App& app) {
+  auto flags = std::make_shared<SizingFlags>();
+  CLI::App* sizing = app.add_subcommand(
+      "sizing",
+      "Sizing statistics of an ensemble study: per zone and for the hottest zone, per clearance "
+      "state and setting, P50/P95/P99 of the largest force with order-statistic intervals, "
+      "Wilks' upper tolerance limit, a bootstrap cross-check, impact statistics, and each "
+      "setting against the refined one");
+  sizing->add_option("STUDY", flags->study, "study name (default: the database's only ensemble)");
+  sizing->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  sizing->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  sizing
+      ->add_option("--confidence", flags->options.confidence,
+                   "confidence of the intervals and of Wilks' limit, in (0, 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  sizing
+      ->add_option("--tolerance", flags->options.tolerance,
+                   "a setting agrees with the refined one where their intervals, widened by "
+                   "this fraction of the refined estimate, overlap")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  sizing->add_option("--hottest-among", flags->options.hottest_among,
+                     "the hottest zone is the highest of the zones whose name holds this text, "
+                     "e.g. -pin_ for the wires between pins (default: every zone)");
+  sizing->add_option("--out", flags->out, "folder for the CSV tables and the pictures");
+  sizing
+      ->add_option("--format", flags->format,
+                   "standard output: the hottest zones as a table, "
+                   "or every zone as CSV or JSON")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"table", "csv", "json"}));
+  sizing->callback([flags] { Size(*flags); });
+}
+
+}  // namespace shockmap

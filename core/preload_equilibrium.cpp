@@ -1,0 +1,135 @@
+#include "core/preload_equilibrium.h"
+
+#include <Eigen/SparseCholesky>
+#include <set>
+#include <vector>
+
+#include "core/input_error.h"
+
+namespace shockmap {
+namespace {
+
+constexpr int kMaxActiveSetIterations = 100;
+
+// The zone's row as (coordinate, coefficient) pairs: its penetration is row . x - gap.
+std::vector<std::pair<int, double>> ZoneRow(const ZoneTerm& z) {
+  std::vector<std::pair<int, double>> row;
+  auto add = [&](int offset, double sign, const std::vector<double>& phi) {
+    if (offset < 0 || sign == 0.0) return;
+    for (std::size_t i = 0; i < phi.size(); ++i)
+      row.emplace_back(offset + static_cast<int>(i), sign * phi[i]);
+  };
+  add(z.a_y, z.normal_y, z.phi_a);
+  add(z.a_z, z.normal_z, z.phi_a);
+  add(z.b_y, -z.normal_y, z.phi_b);
+  add(z.b_z, -z.normal_z, z.phi_b);
+  return row;
+}
+
+double Penetration(const std::vector<std::pair<int, double>>& row, double gap,
+                   const Eigen::VectorXd& x) {
+  double u = 0.0;
+  for (const auto& [i, c] : row) u += c * x[i];
+  return u - gap;
+}
+
+// Solves the equilibrium with the zones `active` closed.
+Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
+                                const std::vector<std::vector<std::pair<int, double>>>& rows,
+                                const std::set<std::size_t>& active) {
+  const int n = system.Size();
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, system.OmegaSquared()[i]);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+  for (const std::size_t z : active) {
+    const ZoneTerm& zone = system.Zones()[z];
+    for (const auto& [i, ci] : rows[z]) {
+      rhs[i] += zone.stiffness_n_per_m * zone.gap_m * ci;
+      for (const auto& [j, cj] : rows[z])
+        entries.emplace_back(i, j, zone.stiffness_n_per_m * ci * cj);
+    }
+  }
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0.0).any()) {
+    throw InputError(
+        "zones with a negative gap (preloaded contacts): the model has a rigid-body mode the "
+        "contacts do not hold, so it has no static equilibrium; support the beams");
+  }
+  return ldlt.solve(rhs);
+}
+
+// E(x) = 1/2 sum omega_i^2 x_i^2 + sum_z 1/2 k_z max(0, r_z . x - g_z)^2, whose minimum is the
+// equilibrium, and its gradient.
+struct Energy {
+  const SceneModalSystem& system;
+  const std::vector<std::vector<std::pair<int, double>>>& rows;
+
+  double operator()(const Eigen::VectorXd& x) const {
+    double e = 0.5 * system.OmegaSquared().dot(x.cwiseProduct(x));
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
+      if (d > 0.0) e += 0.5 * system.Zones()[z].stiffness_n_per_m * d * d;
+    }
+    return e;
+  }
+  Eigen::VectorXd Gradient(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd g = system.OmegaSquared().cwiseProduct(x);
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
+      if (d <= 0.0) continue;
+      for (const auto& [i, c] : rows[z]) g[i] += system.Zones()[z].stiffness_n_per_m * d * c;
+    }
+    return g;
+  }
+  std::set<std::size_t> Closed(const Eigen::VectorXd& x) const {
+    std::set<std::size_t> closed;
+    for (std::size_t z = 0; z < rows.size(); ++z) {
+      if (Penetration(rows[z], system.Zones()[z].gap_m, x) > 0.0) closed.insert(z);
+    }
+    return closed;
+  }
+};
+
+}  // namespace
+
+bool HasPreloadedZones(const SceneModalSystem& system) {
+  for (const ZoneTerm& z : system.Zones()) {
+    if (z.gap_m < 0.0) return true;
+  }
+  return false;
+}
+
+// Newton's method on the convex, piecewise-quadratic energy, damped by backtracking (Armijo) so
+// that the energy decreases at every step: the closed set cannot cycle. A full step lands on
+// the minimum of the quadratic of its closed set; when that set holds there, it is the
+// equilibrium.
+Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
+  std::vector<std::vector<std::pair<int, double>>> rows;
+  for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
+  const Energy energy{system, rows};
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.Size());
+  std::set<std::size_t> closed;
+  for (std::size_t z = 0; z < rows.size(); ++z) {
+    if (system.Zones()[z].gap_m < 0.0) closed.insert(z);
+  }
+  for (int iteration = 0; iteration < kMaxActiveSetIterations; ++iteration) {
+    Eigen::VectorXd next = SolveWithActive(system, rows, closed);
+    const Eigen::VectorXd step = next - x;
+    const double e0 = energy(x), slope = energy.Gradient(x).dot(step);
+    double t = 1.0;
+    while (t > 1e-12 && energy(x + t * step) > e0 + 1e-4 * t * slope) t *= 0.5;
+    if (t < 1.0) next = x + t * step;
+    x = std::move(next);
+    const std::set<std::size_t> now = energy.Closed(x);
+    if (t == 1.0 && now == closed) return x;
+    closed = now;
+  }
+  throw InputError(
+      "zones with a negative gap (preloaded contacts): the static equilibrium was "
+      "not found within " +
+      std::to_string(kMaxActiveSetIterations) + " Newton steps");
+}
+
+}  // namespace shockmap

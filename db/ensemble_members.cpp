@@ -1,0 +1,159 @@
+#include "db/ensemble_members.h"
+
+namespace shockmap {
+
+const PointTable kEnsembleMembers{"ensemble_members", {"state", "setting_json", "member"}};
+
+namespace {
+
+constexpr const char* kZoneColumns =
+    "max_force_n, impacts, impacts_per_s, rebounds_per_impact, mean_impact_duration_s, "
+    "longest_impact_duration_s, contact_time_fraction, mean_force_n, mean_force_in_contact_n, "
+    "rms_force_n, impulse_n_s, wear_work_rate_w";
+
+void InsertZones(Connection& c, std::int64_t point_id, const std::vector<EnsembleZoneRow>& zones) {
+  Statement insert =
+      c.Prepare(std::string("INSERT INTO ensemble_member_zones(point_id, zone, ") + kZoneColumns +
+                ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const EnsembleZoneRow& z = zones[i];
+    insert.Reset();
+    insert
+        .BindAll(point_id, static_cast<std::int64_t>(i), z.max_force_n, z.impacts, z.impacts_per_s,
+                 z.rebounds_per_impact, z.mean_impact_duration_s, z.longest_impact_duration_s,
+                 z.contact_time_fraction, z.mean_force_n, z.mean_force_in_contact_n, z.rms_force_n,
+                 z.impulse_n_s, z.wear_work_rate_w)
+        .Run();
+  }
+}
+
+std::optional<std::int64_t> OptionalInt(const Statement& s, int i) {
+  if (s.IsNull(i)) return std::nullopt;
+  return s.GetInt(i);
+}
+
+// Columns `first`... of a row read by kZoneColumns.
+EnsembleZoneRow ZoneAt(const Statement& s, int first) {
+  EnsembleZoneRow z;
+  z.max_force_n = s.GetDouble(first);
+  z.impacts = OptionalInt(s, first + 1);
+  std::optional<double>* rest[] = {&z.impacts_per_s,
+                                   &z.rebounds_per_impact,
+                                   &z.mean_impact_duration_s,
+                                   &z.longest_impact_duration_s,
+                                   &z.contact_time_fraction,
+                                   &z.mean_force_n,
+                                   &z.mean_force_in_contact_n,
+                                   &z.rms_force_n,
+                                   &z.impulse_n_s,
+                                   &z.wear_work_rate_w};
+  for (int i = 0; i < 10; ++i) *rest[i] = s.GetOptionalDouble(first + 2 + i);
+  return z;
+}
+
+std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t study_id) {
+  Statement s = c.Prepare(
+      "SELECT reference_id, reference_key, state, status, message, zones_json, max_force_n, "
+      "steps, wall_s FROM ensemble_references WHERE reference_key IN (SELECT reference_key FROM "
+      "ensemble_members WHERE study_id = ?) ORDER BY reference_id");
+  s.Bind(1, study_id);
+  std::vector<EnsembleReferenceRow> rows;
+  while (s.Step()) {
+    EnsembleReferenceRow r;
+    s.ReadColumns(r.reference_id, r.reference_key, r.state, r.status, r.message, r.zones_json,
+                  r.max_force_n, r.steps, r.wall_s);
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
+  Statement s = c.Prepare(
+      std::string("SELECT p.point_id, p.state, p.setting_json, p.member, p.wall_s, p.cpu_s, ") +
+      kZoneColumns +
+      " FROM ensemble_members p JOIN ensemble_member_zones z ON z.point_id = p.point_id "
+      "WHERE p.study_id = ? AND p.status = 'ok' ORDER BY p.point_id, z.zone");
+  s.Bind(1, study_id);
+  std::vector<StoredMember> members;
+  while (s.Step()) {
+    const std::int64_t id = s.GetInt(0);
+    if (members.empty() || members.back().point_id != id) {
+      StoredMember m;
+      m.point_id = id;
+      s.ReadColumns(m.point_id, m.state, m.setting_json, m.member, m.wall_s, m.cpu_s);
+      members.push_back(std::move(m));
+    }
+    members.back().zones.push_back(ZoneAt(s, 6));
+  }
+  return members;
+}
+
+}  // namespace
+
+void WriteScore(Connection& c, std::int64_t point_id,
+                const std::optional<EnsembleMemberRow>& score) {
+  c.Prepare("DELETE FROM ensemble_member_zones WHERE point_id = ?").Bind(1, point_id).Run();
+  Statement update = c.Prepare(
+      "UPDATE ensemble_members SET reference_id = ?, member_seed = ?, coordinates = ?, "
+      "dt_used_s = ?, steps = ?, wall_s = ?, cpu_s = ?, max_energy_ratio = ? WHERE point_id = ?");
+  if (score) {
+    const EnsembleMemberRow& r = *score;
+    update.BindAll(r.reference_id, r.member_seed, r.coordinates, r.dt_used_s, r.steps, r.wall_s,
+                   r.cpu_s, r.max_energy_ratio);
+    InsertZones(c, point_id, r.zones);
+  } else {
+    for (int i = 1; i <= 8; ++i) update.BindNull(i);
+  }
+  update.Bind(9, point_id).Run();
+}
+
+std::optional<EnsembleReferenceRow> FindEnsembleReference(StudyDatabase& db,
+                                                          const std::string& key) {
+  using R = EnsembleReferenceRow;
+  return FindRow(db,
+                 "SELECT reference_id, state, status, message, zones_json, max_force_n, steps, "
+                 "wall_s FROM ensemble_references WHERE reference_key = ?",
+                 key, &R::reference_key, &R::reference_id, &R::state, &R::status, &R::message,
+                 &R::zones_json, &R::max_force_n, &R::steps, &R::wall_s);
+}
+
+std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRow& r,
+                                    std::int64_t run_id) {
+  return InsertRow(db,
+                   "INSERT INTO ensemble_references(reference_key, state, status, message, "
+                   "zones_json, max_force_n, steps, wall_s, run_id, created_utc) VALUES (?, ?, ?, "
+                   "?, ?, ?, ?, ?, ?, ?)",
+                   r.reference_key, r.state, r.status, r.message, r.zones_json, r.max_force_n,
+                   r.steps, r.wall_s, run_id, UtcNow());
+}
+
+StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
+  Statement find = c.Prepare(
+      "SELECT s.study_id, s.spec_json, (SELECT count(*) FROM ensemble_members p WHERE "
+      "p.study_id = s.study_id), (SELECT count(*) FROM ensemble_members p WHERE p.study_id = "
+      "s.study_id AND p.status IN ('pending', 'running')), (SELECT count(*) FROM "
+      "ensemble_members p WHERE p.study_id = s.study_id AND p.status NOT IN ('pending', "
+      "'running', 'ok')) FROM studies s WHERE s.name = ?");
+  find.Bind(1, study);
+  if (!find.Step()) throw DbError(c.Path() + ": no study named \"" + study + "\"");
+  std::int64_t study_id = 0, members = 0;
+  StoredEnsemble e;
+  find.ReadColumns(study_id, e.spec_json, members, e.pending, e.failed);
+  if (members == 0) {
+    throw DbError(c.Path() + ": study \"" + study + "\" is not an ensemble study");
+  }
+  e.references = ReadReferences(c, study_id);
+  e.members = ReadMembers(c, study_id);
+  return e;
+}
+
+std::vector<std::string> EnsembleStudies(Connection& c) {
+  Statement s = c.Prepare(
+      "SELECT name FROM studies WHERE study_id IN (SELECT study_id FROM ensemble_members) "
+      "ORDER BY study_id");
+  std::vector<std::string> names;
+  while (s.Step()) names.push_back(s.GetText(0));
+  return names;
+}
+
+}  // namespace shockmap

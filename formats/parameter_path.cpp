@@ -1,0 +1,71 @@
+#include "formats/parameter_path.h"
+
+#include <algorithm>
+
+#include "formats/json_reader.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+[[noreturn]] void FailPath(const std::string& path, const std::string& file,
+                           const std::string& where) {
+  FailAt(file, where,
+         "\"" + path +
+             "\" is not a parameter path: use keys joined by dots, with [i] for list "
+             "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
+}
+
+}  // namespace
+
+std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
+  std::string pointer;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t dot = std::min(path.find('.', start), path.size());
+    std::string segment = path.substr(start, dot - start);
+    std::string index;
+    if (const auto open = segment.find('['); open != std::string::npos) {
+      if (segment.back() != ']' || open == 0) return std::nullopt;
+      index = segment.substr(open + 1, segment.size() - open - 2);
+      segment.resize(open);
+      if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return std::nullopt;
+    }
+    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos) return std::nullopt;
+    pointer += "/" + segment;
+    if (!index.empty()) pointer += "/" + index;
+    start = dot + 1;
+  }
+  return Json::json_pointer(pointer);
+}
+
+Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
+                                    const std::string& file, const std::string& where) {
+  const auto pointer = ParameterPointer(path);
+  if (!pointer) FailPath(path, file, where);
+  if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
+    FailAt(file, where,
+           "the scene has no number at \"" + path +
+               "\"; only numbers the scene file sets can be swept (write the default there)");
+  }
+  return *pointer;
+}
+
+Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path, const Json& value,
+                                     const std::string& file, const std::string& where) {
+  if (value.is_number()) return NumericParameter(scene, path, file, where);
+  const auto pointer = ParameterPointer(path);
+  if (!pointer) FailPath(path, file, where);
+  if (!value.is_boolean()) {
+    FailAt(file, where, "expected a number or true/false, got " + Shown(value));
+  }
+  if (!scene.contains(*pointer) || !scene.at(*pointer).is_boolean()) {
+    FailAt(file, where,
+           "the scene has no true/false at \"" + path +
+               "\"; only values the scene file sets can be set (write the default there)");
+  }
+  return *pointer;
+}
+
+}  // namespace shockmap

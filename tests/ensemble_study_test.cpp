@@ -1,0 +1,261 @@
+// Ensemble studies (docs/ensembles.md) as a user runs them: members reproducible bit for bit,
+// a study killed mid-ensemble resuming to the same table, added members computed alone, bad
+// study files refused with exit code 2, and the sizing table as the statistics of the stored
+// maxima.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "db/sqlite_handle.h"
+#include "engine/ensemble_study.h"
+#include "formats/study_file.h"
+#include "statistics/quantile_interval.h"
+#include "statistics/wilks.h"
+#include "tests/database_rows.h"
+#include "tests/run_command.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+using nlohmann::json;
+using testing::Count;
+using testing::RunShockmap;
+using testing::WriteText;
+
+// The planar bundle over 0.03 s (about 0.02 s of CPU per member), two clearance states, the
+// second with preloaded wires, and three scattered parameters.
+json SmallEnsemble(int members) {
+  return {{"kind", "scene_ensemble"},
+          {"name", "small"},
+          {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json"},
+          {"members", members},
+          {"seed", 11},
+          {"window_s", 0.03},
+          {"draws",
+           {{"effects.base_motion.half_sine.amplitude_m_s2", {{"normal", {{"std", 9.81}}}}},
+            {"effects.base_motion.half_sine.duration_s",
+             {{"uniform", {{"min", 0.008}, {"max", 0.012}}}}},
+            {"bundle.wire.stiffness_n_per_m", {{"lognormal", {{"sigma", 0.2}}}}}}},
+          {"clearance_states",
+           {{{"name", "new"}, {"pin_gap_m", {{"mean", 5e-5}, {"std", 5e-6}}}},
+            {{"name", "worn"},
+             {"pin_gap_m", {{"mean", 1e-5}, {"std", 3e-5}, {"min", -4e-5}}},
+             {"wrapper_gap_m", {{"mean", 1e-4}, {"std", 5e-5}}}}}}};
+}
+
+class EnsembleStudyTest : public testing::TempDirTest {
+ protected:
+  std::string Write(const json& spec, const std::string& name = "ensemble.json") {
+    const std::string file = Path(name);
+    WriteText(file, spec.dump(2));
+    return file;
+  }
+  testing::Outcome Run(const std::string& spec, const std::string& db) {
+    return RunShockmap("study run " + spec + " --db " + db + " --jobs 2 --quiet");
+  }
+};
+
+// point_key -> every zone's largest force, as text that keeps all 17 digits.
+std::map<std::string, std::string> ZoneMaxima(const std::string& db) {
+  std::map<std::string, std::string> m;
+  for (const std::string& row :
+       testing::Rows(db,
+                     "SELECT p.point_key, group_concat(printf('%.17g', z.max_force_n), ' ') FROM "
+                     "ensemble_members p JOIN ensemble_member_zones z USING (point_id) GROUP BY "
+                     "p.point_id ORDER BY p.point_id")) {
+    const auto bar = row.rfind('|');
+    m[row.substr(0, bar)] = row.substr(bar + 1);
+  }
+  return m;
+}
+
+TEST_F(EnsembleStudyTest, RerunningOneMemberGivesTheSameMaximaBitForBit) {
+  const std::string spec = Write(SmallEnsemble(3));
+  const std::string db = Path("e.db");
+  ASSERT_EQ(Run(spec, db).exit_code, 0);
+  const EnsembleStudy kind(std::get<EnsembleStudySpec>(ReadStudyFile(spec)));
+  for (const EnsembleMember& m : {kind.Points()[1], kind.Points().back()}) {
+    const auto out = kind.Score(m, {}, 0);
+    ASSERT_EQ(out.status, RunStatus::kOk) << out.message;
+    const std::string key = MemberKey(kind.Spec(), m);
+    Connection c(db, Connection::Mode::kReadOnly);
+    Statement s = c.Prepare(
+        "SELECT z.max_force_n, p.member_seed FROM ensemble_members p JOIN ensemble_member_zones "
+        "z USING (point_id) WHERE p.point_key = ? ORDER BY z.zone");
+    s.Bind(1, key);
+    std::size_t zone = 0;
+    while (s.Step()) {
+      ASSERT_LT(zone, out.score->zones.size());
+      EXPECT_EQ(s.GetDouble(0), out.score->zones[zone].max_force_n) << key << " zone " << zone;
+      EXPECT_EQ(s.GetText(1), out.score->member_seed);
+      ++zone;
+    }
+    EXPECT_EQ(zone, out.score->zones.size());
+  }
+  // The members differ: the draws reach the runs.
+  const auto maxima = ZoneMaxima(db);
+  ASSERT_EQ(maxima.size(), 6u);
+  EXPECT_NE(maxima.begin()->second, std::next(maxima.begin())->second);
+}
+
+TEST_F(EnsembleStudyTest, AddedMembersAreTheOnlyOnesComputed) {
+  const std::string db = Path("e.db");
+  ASSERT_EQ(Run(Write(SmallEnsemble(3)), db).exit_code, 0);
+  const auto before =
+      testing::Rows(db, "SELECT point_key, run_id, updated_utc FROM ensemble_members");
+  const auto grown = Run(Write(SmallEnsemble(5)), db);
+  ASSERT_EQ(grown.exit_code, 0) << grown.output;
+  EXPECT_NE(grown.output.find("10 points in the study, 4 computed now"), std::string::npos)
+      << grown.output;
+  const auto after =
+      testing::Rows(db, "SELECT point_key, run_id, updated_utc FROM ensemble_members");
+  ASSERT_EQ(after.size(), 10u);
+  for (const std::string& row : before) {
+    EXPECT_NE(std::find(after.begin(), after.end(), row), after.end()) << row << " was recomputed";
+  }
+  // A member does not depend on how many there are.
+  const std::string alone = Path("alone.db");
+  ASSERT_EQ(Run(Write(SmallEnsemble(5), "alone.json"), alone).exit_code, 0);
+  EXPECT_EQ(ZoneMaxima(db), ZoneMaxima(alone));
+}
+
+// The sizing table without what depends on the machine (wall and CPU time).
+json SizingOf(const std::string& db) {
+  const auto out = RunShockmap("sizing --db " + db + " --format json");
+  EXPECT_EQ(out.exit_code, 0) << out.output;
+  json rows = json::parse(out.output);
+  for (json& row : rows) row.erase("wall_s_per_member"), row.erase("cpu_s_per_member");
+  return rows;
+}
+
+TEST_F(EnsembleStudyTest, AStudyKilledMidEnsembleResumesToTheSameTable) {
+  const std::string spec = Write(SmallEnsemble(40));
+  const std::string whole = Path("whole.db"), killed = Path("killed.db");
+  ASSERT_EQ(Run(spec, whole).exit_code, 0);
+  const pid_t pid = fork();
+  if (pid == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(SHOCKMAP_BIN, SHOCKMAP_BIN, "study", "run", spec.c_str(), "--db", killed.c_str(),
+          "--jobs", "2", "--quiet", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline) {
+    try {
+      if (Count(killed, "SELECT count(*) FROM ensemble_members WHERE status = 'ok'") >= 5) break;
+    } catch (const std::exception&) {
+      // Not created or not migrated yet.
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the study finished before it could be killed";
+  EXPECT_GT(Count(killed, "SELECT count(*) FROM ensemble_members WHERE status <> 'ok'"), 0);
+  ASSERT_EQ(Run(spec, killed).exit_code, 0);
+  EXPECT_EQ(ZoneMaxima(killed), ZoneMaxima(whole));
+  EXPECT_EQ(SizingOf(killed), SizingOf(whole));
+}
+
+TEST_F(EnsembleStudyTest, SizingIsTheStatisticsOfTheStoredMaxima) {
+  json spec = SmallEnsemble(64);
+  spec["clearance_states"].erase(1);
+  spec["window_s"] = 0.01;
+  const std::string db = Path("e.db");
+  ASSERT_EQ(Run(Write(spec), db).exit_code, 0);
+  const json rows = SizingOf(db);
+  ASSERT_GT(rows.size(), 1u);
+  int checked = 0;
+  for (const json& row : rows) {
+    if (row["zone"] != "pin_7-pin_8@1.2192" && row["hottest"] != 1) continue;
+    std::vector<double> forces;
+    Connection c(db, Connection::Mode::kReadOnly);
+    Statement zone = c.Prepare(
+        "SELECT z.max_force_n FROM ensemble_members p JOIN ensemble_member_zones z USING "
+        "(point_id) JOIN ensemble_references r ON r.reference_key = p.reference_key, "
+        "json_each(r.zones_json) j WHERE j.key = z.zone AND json_extract(j.value, '$.name') = ? "
+        "ORDER BY p.point_id");
+    zone.Bind(1, row["zone"].get<std::string>());
+    while (zone.Step()) forces.push_back(zone.GetDouble(0));
+    ASSERT_EQ(forces.size(), 64u);
+    const QuantileInterval p95 = EstimateQuantile(forces, 0.95, 0.95);
+    EXPECT_EQ(row["p95_n"].get<double>(), p95.estimate);
+    // An unbounded side (too few members for it) is null.
+    EXPECT_EQ(row["p95_lower_n"], p95.lower_bounded ? json(p95.lower) : json());
+    EXPECT_EQ(row["p95_upper_n"], p95.upper_bounded ? json(p95.upper) : json());
+    // 64 members allow Wilks' first order only at 95/95 (the second needs 93): the largest.
+    EXPECT_EQ(row["wilks_order"].get<int>(), 1);
+    EXPECT_EQ(row["wilks_limit_n"].get<double>(), *std::max_element(forces.begin(), forces.end()));
+    EXPECT_LE(row["bootstrap_lower_n"].get<double>(), row["bootstrap_upper_n"].get<double>());
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+}
+
+TEST_F(EnsembleStudyTest, BadStudyFilesAreRefusedWithExitCode2) {
+  struct Case {
+    std::string what;
+    std::function<void(json&)> edit;
+    std::vector<std::string> expected;  // In the message.
+  };
+  const std::vector<Case> cases = {
+      {"members", [](json& s) { s["members"] = 0; }, {"members", "0", "[1, 100000]"}},
+      {"seed", [](json& s) { s["seed"] = -3; }, {"seed", "-3", "non-negative integer"}},
+      {"law",
+       [](json& s) {
+         s["draws"]["bundle.wire.stiffness_n_per_m"] = {{"weibull", {{"k", 2}}}};
+       },
+       {"draws.bundle.wire.stiffness_n_per_m", "weibull", "normal", "lognormal", "uniform"}},
+      {"path",
+       [](json& s) {
+         s["draws"]["solver.nothing"] = {{"normal", {{"std", 1}}}};
+       },
+       {"draws.solver.nothing", "no number"}},
+      {"std",
+       [](json& s) { s["clearance_states"][0]["pin_gap_m"]["std"] = -1e-5; },
+       {"clearance_states[0].pin_gap_m", "std", "[0, 1]"}},
+      {"bound",
+       [](json& s) {
+         s["draws"]["bundle.wire.stiffness_n_per_m"] = {{"uniform", {{"min", -1}, {"max", 1e6}}}};
+       },
+       {"bundle.wire.stiffness_n_per_m at its bound -1", "stiffness_n_per_m"}},
+      {"refined",
+       [](json& s) {
+         s["settings"] = {{"solver.r_ftrunc", {30, 300}}};
+         s["refined"] = {{"solver.r_ftrunc", 1000}};
+       },
+       {"refined", "1000", "not one of the settings", "{\"solver.r_ftrunc\":30}"}},
+      {"state twice",
+       [](json& s) { s["clearance_states"][1]["name"] = "new"; },
+       {"clearance_states[1].name", "new", "twice"}},
+      {"kind",
+       [](json& s) { s["kind"] = "scene_ensembles"; },
+       {"kind", "scene_ensembles", "canonical, scene_sweep, scene_ensemble"}},
+  };
+  for (const Case& c : cases) {
+    json spec = SmallEnsemble(3);
+    c.edit(spec);
+    const std::string file = Write(spec, "bad.json");
+    const auto out = Run(file, Path("bad.db"));
+    EXPECT_EQ(out.exit_code, 2) << c.what << ": " << out.output;
+    EXPECT_NE(out.output.find(file), std::string::npos) << c.what << ": " << out.output;
+    for (const std::string& e : c.expected) {
+      EXPECT_NE(out.output.find(e), std::string::npos)
+          << c.what << ": no \"" << e << "\" in " << out.output;
+    }
+    EXPECT_FALSE(std::filesystem::exists(Path("bad.db"))) << c.what;
+  }
+}
+
+}  // namespace
+}  // namespace shockmap

@@ -1,0 +1,250 @@
+#include "views/sizing_plots.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "formats/output_file.h"
+#include "views/contact_force_map.h"
+#include "views/gnuplot.h"
+
+namespace shockmap {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A state's name as part of a file name: letters, digits, '-' and '_', others as '_'.
+std::string FilePart(const std::string& name) {
+  std::string part = name;
+  for (char& c : part) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  }
+  return part;
+}
+
+std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
+
+// Interval ends for a plot: an unbounded side drawn at the estimate.
+double Lower(const QuantileInterval& q) { return q.lower_bounded ? q.lower : q.estimate; }
+double Upper(const QuantileInterval& q) { return q.upper_bounded ? q.upper : q.estimate; }
+
+void WriteData(const fs::path& file, const std::string& text) {
+  AtomicFile out(file);
+  out.Stream() << text;
+  out.Commit();
+}
+
+fs::path Draw(const fs::path& image, const std::string& body, int width = 900, int height = 600) {
+  const std::string script = fmt::format(
+      "set terminal {}\nset output {}\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n{}",
+      TerminalFor(image, width, height), GnuplotFileName(image), body);
+  RunGnuplot(script, fs::path(image).replace_extension(".gp"), image);
+  return image;
+}
+
+fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
+                     const std::vector<double>& forces, const fs::path& folder) {
+  const auto points = SizingConvergence(forces, s.options);
+  const fs::path image = folder / ("convergence_" + FilePart(g.state) + ".png");
+  const fs::path data = fs::path(image).replace_extension(".dat");
+  std::string text = "# members estimate lower upper lower_bounded upper_bounded\n";
+  for (const ConvergencePoint& p : points) {
+    text += fmt::format("{} {} {} {} {} {}\n", p.members, p.sizing.estimate, Lower(p.sizing),
+                        Upper(p.sizing), p.sizing.lower_bounded ? 1 : 0,
+                        p.sizing.upper_bounded ? 1 : 0);
+  }
+  WriteData(data, text);
+  const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
+                                        Percent(s.options.quantile), g.zones[g.hottest].name,
+                                        Percent(s.options.confidence));
+  return Draw(image,
+              fmt::format(
+                  R"(set title {title} noenhanced
+set xlabel 'members'
+set ylabel 'force (N)'
+set logscale x
+set xrange [9:{last}]
+set key top left
+plot {data} using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' fs solid 0.5 title 'interval (both sides bounded)', \
+     '' using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate', \
+     '' using 1:($6 > 0 ? 1/0 : $2) with points pt 9 ps 1.5 lc rgb '#de2d26' title 'upper side unbounded (too few members)'
+)",
+                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", 1.15 * forces.size()),
+                  fmt::arg("data", GnuplotFileName(data))));
+}
+
+fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
+                   const fs::path& folder) {
+  const ZoneSizing& z = g.zones[g.hottest];
+  const fs::path image = folder / ("histogram_" + FilePart(g.state) + ".png");
+  const fs::path data = fs::path(image).replace_extension(".dat");
+  const auto [lo, hi] = std::minmax_element(forces.begin(), forces.end());
+  const int bins = std::clamp(static_cast<int>(std::sqrt(forces.size())), 5, 40);
+  const double width = *hi > *lo ? (*hi - *lo) / bins : std::max(1.0, std::abs(*lo) * 1e-3);
+  std::vector<int> counts(bins, 0);
+  for (double f : forces) counts[std::min(bins - 1, static_cast<int>((f - *lo) / width))]++;
+  std::string text = "# bin_centre_n members\n";
+  for (int i = 0; i < bins; ++i) text += fmt::format("{} {}\n", *lo + (i + 0.5) * width, counts[i]);
+  WriteData(data, text);
+  const std::string title = fmt::format("{} ({}): largest force at {} over {} members", s.study,
+                                        g.state, z.name, forces.size());
+  std::string marks = fmt::format(
+      "set arrow from {0},graph 0 to {0},graph 1 nohead lw 2 lc rgb '#08519c'\n"
+      "set label {1} at {0},graph 0.95 left offset 0.5,0 tc rgb '#08519c'\n",
+      z.sizing.estimate, GnuplotQuoted("P" + Percent(s.options.quantile)));
+  if (z.wilks) {
+    marks += fmt::format(
+        "set arrow from {0},graph 0 to {0},graph 1 nohead lw 2 dt 2 lc rgb '#de2d26'\n"
+        "set label {1} at {0},graph 0.88 left offset 0.5,0 tc rgb '#de2d26'\n",
+        z.wilks->value, GnuplotQuoted(fmt::format("Wilks order {}", z.wilks->order)));
+  }
+  return Draw(image, fmt::format(
+                         R"(set title {title} noenhanced
+set xlabel 'largest force in the zone (N)'
+set ylabel 'members'
+set yrange [0:*]
+set style fill solid 0.6 border lc rgb '#525252'
+set boxwidth {width}
+{marks}plot {data} using 1:2 with boxes lc rgb '#9ecae1' notitle
+)",
+                         fmt::arg("title", GnuplotQuoted(title)), fmt::arg("width", width),
+                         fmt::arg("marks", marks), fmt::arg("data", GnuplotFileName(data))));
+}
+
+std::vector<const GroupSizing*> RefinedGroups(const EnsembleSizing& s) {
+  std::vector<const GroupSizing*> refined;
+  for (const GroupSizing& g : s.groups) {
+    if (g.refined) refined.push_back(&g);
+  }
+  return refined;
+}
+
+std::string Tics(const std::vector<std::string>& labels) {
+  std::string tics;
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    tics += fmt::format("{}{} {}", i ? ", " : "", GnuplotQuoted(labels[i]), i);
+  return "set xtics (" + tics + ")\n";
+}
+
+// The hottest zone's sizing force (and, when streamed, its wear work rate) against the state.
+fs::path States(const EnsembleSizing& s, const fs::path& folder) {
+  const auto refined = RefinedGroups(s);
+  const fs::path image = folder / "states.png";
+  const fs::path data = fs::path(image).replace_extension(".dat");
+  std::string text = "# state_index sizing_n lower_n upper_n wear_work_rate_w\n";
+  std::vector<std::string> labels;
+  bool wear = false;
+  for (std::size_t i = 0; i < refined.size(); ++i) {
+    const ZoneSizing& z = refined[i]->zones[refined[i]->hottest];
+    labels.push_back(refined[i]->state + " (" + z.name + ")");
+    const auto w = z.impacts ? z.impacts->wear_work_rate_w : std::nullopt;
+    wear = wear || w.has_value();
+    text += fmt::format("{} {} {} {} {}\n", i, z.sizing.estimate, Lower(z.sizing), Upper(z.sizing),
+                        w ? fmt::format("{}", *w) : "NaN");
+  }
+  WriteData(data, text);
+  const std::string title =
+      fmt::format("{}: P{} of the hottest zone's largest force per clearance state", s.study,
+                  Percent(s.options.quantile));
+  std::string plot = fmt::format(
+      "plot {} using 1:2:3:4 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb '#08519c' title "
+      "'P{} with its {} % interval'",
+      GnuplotFileName(data), Percent(s.options.quantile), Percent(s.options.confidence));
+  if (wear) {
+    plot +=
+        ", '' using 1:5 axes x1y2 with linespoints pt 5 lc rgb '#de2d26' title 'mean wear work "
+        "rate (W)'";
+  }
+  return Draw(image,
+              fmt::format(
+                  R"(set title {title} noenhanced
+set xlabel 'clearance state'
+set ylabel 'force (N)'
+{y2}set xrange [-0.5:{last}]
+set offsets 0, 0, graph 0.15, graph 0.05
+set key bottom center
+{tics}{plot}
+)",
+                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", refined.size() - 0.5),
+                  fmt::arg("y2", wear ? "set y2label 'wear work rate (W)'\nset y2tics\n" : ""),
+                  fmt::arg("tics", Tics(labels)), fmt::arg("plot", plot)));
+}
+
+// The value of a setting on the x axis: the setting's one numeric parameter, if it has one.
+std::optional<double> SettingValue(const std::string& setting_json) {
+  const nlohmann::json s = nlohmann::json::parse(setting_json);
+  if (s.size() != 1 || !s.begin()->is_number()) return std::nullopt;
+  return s.begin()->get<double>();
+}
+
+// Per state: the sizing force of its hottest zone against the setting.
+fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
+  const fs::path image = folder / "settings.png";
+  const fs::path data = fs::path(image).replace_extension(".dat");
+  bool numeric = true;
+  std::vector<std::string> settings;
+  for (const GroupSizing& g : s.groups) {
+    numeric = numeric && SettingValue(g.setting_json).has_value();
+    if (std::find(settings.begin(), settings.end(), g.setting_json) == settings.end())
+      settings.push_back(g.setting_json);
+  }
+  std::string text, plot;
+  int block = 0;
+  for (const GroupSizing* r : RefinedGroups(s)) {
+    text += "# " + r->state + ": x sizing_n lower_n upper_n\n";
+    for (const GroupSizing& g : s.groups) {
+      if (g.state != r->state) continue;
+      const ZoneSizing& z = g.zones[r->hottest];
+      const double x =
+          numeric
+              ? *SettingValue(g.setting_json)
+              : static_cast<double>(std::find(settings.begin(), settings.end(), g.setting_json) -
+                                    settings.begin());
+      text += fmt::format("{} {} {} {}\n", x, z.sizing.estimate, Lower(z.sizing), Upper(z.sizing));
+    }
+    text += "\n\n";
+    plot += fmt::format("{}{} index {} using 1:2:3:4 with yerrorlines pt 7 lw 2 title {}",
+                        block ? ", " : "plot ", GnuplotFileName(data), block,
+                        GnuplotQuoted(r->state + " (" + r->zones[r->hottest].name + ")"));
+    ++block;
+  }
+  WriteData(data, text);
+  const std::string axis =
+      numeric ? "set logscale x\nset xlabel " +
+                    GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
+              : "set xlabel 'setting'\n" + Tics(settings);
+  const std::string title =
+      fmt::format("{}: P{} of the hottest zone's largest force per setting ({} % intervals)",
+                  s.study, Percent(s.options.quantile), Percent(s.options.confidence));
+  return Draw(image, fmt::format("set title {} noenhanced\nset ylabel 'force (N)'\nset offsets "
+                                 "graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset key top "
+                                 "right\n{}{}\n",
+                                 GnuplotQuoted(title), axis, plot));
+}
+
+}  // namespace
+
+std::vector<fs::path> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
+                                         const Scene& scene, const fs::path& folder) {
+  CreateOutputDirectory(folder);
+  std::vector<fs::path> files;
+  for (const GroupSizing* g : RefinedGroups(s)) {
+    std::vector<double> sizing;
+    for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
+    const fs::path map = folder / ("map_" + FilePart(g->state) + ".png");
+    DrawContactForceMap(
+        scene, sizing, map,
+        fmt::format("P{} of {} members, {}", Percent(s.options.quantile), g->members, g->state));
+    files.push_back(map);
+    const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
+    files.push_back(Convergence(s, *g, forces, folder));
+    files.push_back(Histogram(s, *g, forces, folder));
+  }
+  if (RefinedGroups(s).size() > 1) files.push_back(States(s, folder));
+  if (s.groups.size() > RefinedGroups(s).size()) files.push_back(Settings(s, folder));
+  return files;
+}
+
+}  // namespace shockmap

@@ -1,0 +1,24 @@
+#pragma once
+// The pictures of `shockmap sizing` (docs/ensembles.md, "Pictures"), drawn with gnuplot: per
+// clearance state at its refined setting, the paper's Fig. 5b map coloured by the sizing value,
+// the convergence of the hottest zone's estimate with the number of members (its interval as a
+// band) and the histogram of the hottest zone's maximum; across states, the hottest zone's
+// sizing force and wear work rate; across settings, its sizing force against the setting.
+
+#include <filesystem>
+#include <vector>
+
+#include "core/scene.h"
+#include "views/ensemble_sizing.h"
+
+namespace shockmap {
+
+// Writes the pictures (PNG, each with its data and script beside it) into `folder` and
+// returns their paths. `scene` is the study's scene (its zones in the stored order). Throws
+// InputError when a file cannot be written, PlotError when gnuplot fails.
+std::vector<std::filesystem::path> DrawSizingPictures(const EnsembleSizing& sizing,
+                                                      const StoredEnsemble& stored,
+                                                      const Scene& scene,
+                                                      const std::filesystem::path& folder);
+
+}  // namespace shockmap

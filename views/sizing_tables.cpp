@@ -1,0 +1,113 @@
+#include "views/sizing_tables.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace shockmap {
+namespace {
+
+std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
+
+QueryCell Bound(double value, bool bounded) {
+  return bounded ? QueryCell(value) : QueryCell(std::monostate{});
+}
+
+QueryCell Optional(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? QueryCell(*v) : QueryCell(std::monostate{});
+}
+
+std::string Shown(const QuantileInterval& q) {
+  return fmt::format("{:.5g} [{}, {}]", q.estimate,
+                     q.lower_bounded ? fmt::format("{:.5g}", q.lower) : "-inf",
+                     q.upper_bounded ? fmt::format("{:.5g}", q.upper) : "+inf");
+}
+
+std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
+  const std::string q = Percent(s.options.quantile);
+  std::vector<std::string> c = {"state", "setting", "members", "zone"};
+  auto interval = [&](const std::string& name) {
+    if (compact) {
+      c.push_back(name + "_n [" + Percent(s.options.confidence) + " %]");
+    } else {
+      for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
+    }
+  };
+  interval("p50");
+  interval("p95");
+  interval("p99");
+  if (q != "50" && q != "95" && q != "99") interval("p" + q);
+  c.insert(c.end(),
+           {"wilks_order", "wilks_limit_n", "bootstrap_lower_n", "bootstrap_upper_n", "nominal_n"});
+  c.insert(c.end(), {"agrees_with_refined", "impacts_per_s", "contact_time_fraction",
+                     "mean_force_n", "wear_work_rate_w", "wall_s_per_member", "cpu_s_per_member"});
+  return c;
+}
+
+std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
+                           std::optional<bool> agrees, bool compact) {
+  std::vector<QueryCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
+                                static_cast<std::int64_t>(z.members), z.name};
+  auto interval = [&](const QuantileInterval& q) {
+    if (compact) {
+      row.push_back(Shown(q));
+    } else {
+      row.insert(row.end(),
+                 {q.estimate, Bound(q.lower, q.lower_bounded), Bound(q.upper, q.upper_bounded)});
+    }
+  };
+  interval(z.p50);
+  interval(z.p95);
+  interval(z.p99);
+  const std::string q = Percent(s.options.quantile);
+  if (q != "50" && q != "95" && q != "99") interval(z.sizing);
+  row.push_back(static_cast<std::int64_t>(z.wilks_order));
+  row.push_back(z.wilks ? QueryCell(z.wilks->value) : QueryCell(std::monostate{}));
+  row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, Optional(z.nominal_n)});
+  row.push_back(std::string(!agrees ? "-" : *agrees ? "yes" : "no"));
+  if (z.impacts) {
+    row.insert(row.end(), {z.impacts->impacts_per_s, z.impacts->contact_time_fraction,
+                           z.impacts->mean_force_n, Optional(z.impacts->wear_work_rate_w)});
+  } else {
+    row.insert(row.end(), 4, std::monostate{});
+  }
+  row.push_back(g.mean_wall_s);
+  row.push_back(g.mean_cpu_s);
+  return row;
+}
+
+}  // namespace
+
+QueryResult HottestZoneTable(const EnsembleSizing& s, bool compact) {
+  QueryResult t;
+  t.columns = Columns(s, compact);
+  for (const GroupSizing& g : s.groups) {
+    t.rows.push_back(Row(s, g, g.zones[g.hottest], g.hottest_agrees, compact));
+  }
+  return t;
+}
+
+QueryResult ZoneTable(const EnsembleSizing& s) {
+  QueryResult t;
+  t.columns = Columns(s, false);
+  t.columns.push_back("hottest");
+  const auto refined_of = [&](const GroupSizing& g) -> const GroupSizing* {
+    for (const GroupSizing& r : s.groups) {
+      if (r.refined && r.state == g.state) return &r;
+    }
+    return nullptr;
+  };
+  for (const GroupSizing& g : s.groups) {
+    const GroupSizing* refined = g.refined ? nullptr : refined_of(g);
+    for (const ZoneSizing& z : g.zones) {
+      std::optional<bool> agrees;
+      if (refined != nullptr) agrees = Agrees(z, refined->zones[z.zone], s.options.tolerance);
+      auto row = Row(s, g, z, agrees, false);
+      row.push_back(static_cast<std::int64_t>(z.zone == g.hottest));
+      t.rows.push_back(std::move(row));
+    }
+  }
+  return t;
+}
+
+}  // namespace shockmap

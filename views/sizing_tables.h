@@ -1,0 +1,15 @@
+#pragma once
+// The tables of `shockmap sizing` (docs/ensembles.md, "Sizing"): one row per clearance state
+// and setting for its hottest zone, or one per state, setting and zone; intervals as their two
+// ends (NULL when unbounded: too few members for that side), or, in the compact form for the
+// terminal, as "estimate [lower, upper]" text.
+
+#include "db/read_only_query.h"
+#include "views/ensemble_sizing.h"
+
+namespace shockmap {
+
+QueryResult HottestZoneTable(const EnsembleSizing& sizing, bool compact);
+QueryResult ZoneTable(const EnsembleSizing& sizing);
+
+}  // namespace shockmap
