@@ -65,14 +65,36 @@ ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n
   return e;
 }
 
-// The beams' positions in the cross-section (y, z in mm).
-void WriteBeams(const Scene& scene, const std::filesystem::path& beams_file) {
+// The lateral extent of a cross-section (mm), drawn with a margin of a tenth of its size.
+struct SectionBox {
+  double y0 = 0.0, y1 = 0.0, z0 = 0.0, z1 = 0.0;
+  void Add(double y, double z) {
+    y0 = std::min(y0, y), y1 = std::max(y1, y), z0 = std::min(z0, z), z1 = std::max(z1, z);
+  }
+  std::string Ranges() const {
+    const double margin = std::max(1.0, 0.1 * std::max(y1 - y0, z1 - z0));
+    return fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", y0 - margin, y1 + margin,
+                       z0 - margin, z1 + margin);
+  }
+};
+
+// The positions (y, z in mm) of the beams that meet another beam in a zone: the cross-section
+// of the bundle, without the duct or the frame they are held in. Returns the section's box.
+SectionBox WriteBeams(const Scene& scene, const std::filesystem::path& beams_file) {
   AtomicFile out(beams_file);
   out.Stream() << "# y_mm z_mm\n";
-  for (const SceneBeam& b : scene.beams) {
+  std::set<int> in_section;  // Beams meeting another beam in a zone: the bundle's cross-section.
+  for (const SceneZone& z : scene.zones) {
+    if (z.beam_b >= 0) in_section.insert({z.beam_a, z.beam_b});
+  }
+  SectionBox box;
+  for (int i : in_section) {
+    const SceneBeam& b = scene.beams[static_cast<std::size_t>(i)];
     out.Stream() << fmt::format("{} {}\n", 1e3 * b.y_m, 1e3 * b.z_m);
+    box.Add(1e3 * b.y_m, 1e3 * b.z_m);
   }
   out.Commit();
+  return box;
 }
 
 // The clauses of the zones in one panel, only for the kinds present; `select` is the gnuplot
@@ -121,22 +143,21 @@ plot {clauses}
 
 // Scenes bending in both planes: the cross-section at one zone height.
 // The colour bar is drawn beside the last of these panels only.
-std::string SectionPlot(const ZoneExtent& e, const std::string& zones, const std::string& beams,
-                        double height_m, bool colorbox) {
+std::string SectionPlot(const ZoneExtent& e, const SectionBox& box, const std::string& zones,
+                        const std::string& beams, double height_m, bool colorbox) {
   const std::string at = fmt::format("(abs($3 - {}) < 5e-7 ? $2 : 1/0)", height_m);
   return fmt::format(
       R"(set title 'zones at height {h:.4g} m' font ',11'
 set xlabel 'y (mm)'
 set ylabel 'z (mm)'
-set autoscale xy
-set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05
+{ranges}set offsets 0, 0, 0, 0
 set size ratio -1
 unset key
 {colorbox}
 plot {beams} using 1:2 with points pt 6 ps 1.2 lc rgb '#d9d9d9' notitle, \
      {clauses}
 )",
-      fmt::arg("h", height_m), fmt::arg("beams", beams),
+      fmt::arg("h", height_m), fmt::arg("beams", beams), fmt::arg("ranges", box.Ranges()),
       fmt::arg("colorbox", colorbox ? "set colorbox" : "unset colorbox"),
       fmt::arg("clauses", ZoneClauses(e, zones, "1", at)));
 }
@@ -202,13 +223,13 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   const auto beams_file = std::filesystem::path(file).replace_extension(".beams.dat");
   const ZoneExtent extent = WriteZones(scene, max_force_n, zones_file);
   const bool both = scene.planes == BendingPlanes::kBoth;
-  if (both) WriteBeams(scene, beams_file);
+  const SectionBox box = both ? WriteBeams(scene, beams_file) : SectionBox{};
   const std::string zones = GnuplotFileName(zones_file);
   std::string panels;
   int count = 0;
   if (both) {
     for (double h : extent.heights_m) {
-      panels += SectionPlot(extent, zones, GnuplotFileName(beams_file), h,
+      panels += SectionPlot(extent, box, zones, GnuplotFileName(beams_file), h,
                             h == *extent.heights_m.rbegin());
       ++count;
     }
