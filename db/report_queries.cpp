@@ -1,8 +1,6 @@
 #include "db/report_queries.h"
 
-#include <filesystem>
-
-#include "db/schema.h"
+#include "db/stored_signals.h"
 
 namespace shockmap {
 
@@ -41,23 +39,11 @@ QueryResult PointKeys(const std::string& database_path, const std::string& study
 
 std::optional<ReferenceRow> StoredReference(const std::string& database_path,
                                             const std::string& reference_key) {
-  if (!std::filesystem::is_regular_file(database_path)) {
-    throw DbError("no database at " + database_path);
-  }
-  Connection db(database_path, Connection::Mode::kReadOnly);
-  CheckSchema(db);
-  Statement s = db.Prepare(
-      "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, n_modes_free, "
-      "n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, force_n, shocks_json FROM "
-      "reference_runs WHERE reference_key = ?1");
-  s.Bind(1, reference_key);
-  if (!s.Step()) return std::nullopt;
-  ReferenceRow r;
-  r.reference_key = reference_key;
-  s.ReadColumns(r.reference_id, r.r_k, r.r_fref, r.r_fref_check, r.window_s, r.convergence,
-                r.n_modes_free, r.n_modes_contact, r.n_transitions, r.wall_s, r.output_dt_s,
-                r.tip_m, r.force_n, r.shocks_json);
-  return r;
+  const QueryResult id = RunReadOnlyQuery(
+      database_path, "SELECT reference_id FROM reference_runs WHERE reference_key = ?1",
+      {reference_key});
+  if (id.rows.empty()) return std::nullopt;
+  return ReadReference(database_path, std::get<std::int64_t>(id.rows.front().front()));
 }
 
 std::optional<std::string> StoredStudySpec(const std::string& database_path,
