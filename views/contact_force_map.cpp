@@ -123,7 +123,10 @@ plot {clauses}
 // The colour bar is drawn beside the last of these panels only.
 std::string SectionPlot(const ZoneExtent& e, const std::string& zones, const std::string& beams,
                         double height_m, bool colorbox) {
+  // Both coordinates undefined off the panel's height, so that zones elsewhere (a stop far
+  // from the bundle) do not widen its autoscaled range.
   const std::string at = fmt::format("(abs($3 - {}) < 5e-7 ? $2 : 1/0)", height_m);
+  const std::string y_at = fmt::format("(abs($3 - {}) < 5e-7 ? $1 : 1/0)", height_m);
   return fmt::format(
       R"(set title 'zones at height {h:.4g} m' font ',11'
 set xlabel 'y (mm)'
@@ -138,7 +141,7 @@ plot {beams} using 1:2 with points pt 6 ps 1.2 lc rgb '#d9d9d9' notitle, \
 )",
       fmt::arg("h", height_m), fmt::arg("beams", beams),
       fmt::arg("colorbox", colorbox ? "set colorbox" : "unset colorbox"),
-      fmt::arg("clauses", ZoneClauses(e, zones, "1", at)));
+      fmt::arg("clauses", ZoneClauses(e, zones, y_at, at)));
 }
 
 // The stops on their own axis: largest force against height, each labelled with its value.
