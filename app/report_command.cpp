@@ -8,10 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "app/flag_checks.h"
+#include "app/sizing_command.h"
 #include "compare/comparison.h"
 #include "compare/scene_run.h"
 #include "core/input_error.h"
+#include "db/ensemble_members.h"
 #include "db/report_queries.h"
+#include "db/schema.h"
 #include "db/study_database.h"
 #include "engine/provenance.h"
 #include "engine/reference_store.h"
@@ -116,6 +119,13 @@ std::vector<ReportSection> SceneReport(const ReportContext& ctx, const std::stri
   return SceneSections(ctx, spec, DrawForceMaps(ctx, spec));
 }
 
+std::vector<ReportSection> EnsembleReport(const ReportContext& ctx) {
+  Connection db(ctx.database_path, Connection::Mode::kReadOnly);
+  CheckSchema(db);
+  const StoredEnsemble stored = ReadEnsemble(db, ctx.study);
+  return EnsembleSections(ctx, stored, StoredEnsembleScene(stored, ctx.database_path, ctx.study));
+}
+
 // The sections of the study's kind: the one place a new kind of study joins the report.
 std::vector<ReportSection> StudySections(const ReportContext& ctx, StudyFileKind kind,
                                          const std::string& json) {
@@ -124,6 +134,8 @@ std::vector<ReportSection> StudySections(const ReportContext& ctx, StudyFileKind
       return CanonicalReport(ctx, json);
     case StudyFileKind::kSceneSweep:
       return SceneReport(ctx, json);
+    case StudyFileKind::kSceneEnsemble:
+      return EnsembleReport(ctx);
   }
   throw InputError("study \"" + ctx.study + "\": no report for its kind");
 }
@@ -155,7 +167,7 @@ void AddReportCommand(CLI::App& app) {
       "report",
       "HTML report of a stored study (index.html): sortable tables, interactive validity maps, "
       "a page per point with its Fig. 3, Fig. 4, criteria, cost front, contact-force maps of "
-      "scene studies, provenance");
+      "scene studies, sizing tables and pictures of ensemble studies, provenance");
   report->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   report->add_option("--db", flags->database_path, "study database")->capture_default_str();
   AddThresholdFlags(report, flags->thresholds);

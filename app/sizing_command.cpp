@@ -42,14 +42,6 @@ std::string ResolveEnsemble(Connection& db, const std::string& study) {
                    listed);
 }
 
-// The study's scene as stored with it, for the maps.
-Scene StoredScene(const StoredEnsemble& stored, const std::string& database_path,
-                  const std::string& study) {
-  const nlohmann::json spec =
-      ParseJsonText(stored.spec_json, database_path + ": stored study " + study);
-  return ParseScene(spec.at("scene_json"), database_path + ": scene of study " + study);
-}
-
 // The hottest zone of each state and setting, then how each setting compares and what the
 // members cost.
 void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
@@ -71,17 +63,7 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
         g.state, g.setting_json, scaling.slope, scaling.mean_width.front().first,
         scaling.mean_width.back().first, WidthSlope(SizingConvergence(forces, s.options)));
   }
-  for (const GroupSizing& g : s.groups) {
-    if (g.refined) continue;
-    const std::size_t undecided = g.zones.size() - g.zones_agreeing - g.zones_disagreeing;
-    fmt::print(
-        "  {} {} against the refined setting: {} zones agree, {} do not, {} undecided "
-        "(an unbounded interval); hottest zone {}\n",
-        g.state, g.setting_json, g.zones_agreeing, g.zones_disagreeing, undecided,
-        !g.hottest_agrees   ? "undecided"
-        : *g.hottest_agrees ? "agrees"
-                            : "does not agree");
-  }
+  for (const std::string& line : AgreementLines(s)) fmt::print("  {}\n", line);
 }
 
 void Size(const SizingFlags& f) {
@@ -105,14 +87,21 @@ void Size(const SizingFlags& f) {
     WriteQueryResult(table, QueryFormat::kCsv, file.Stream());
     file.Commit();
   }
-  const auto pictures =
-      DrawSizingPictures(sizing, stored, StoredScene(stored, f.database_path, study), f.out);
+  const auto pictures = DrawSizingPictures(
+      sizing, stored, StoredEnsembleScene(stored, f.database_path, study), f.out);
   std::ostream& note = f.format == "table" ? std::cout : std::cerr;
   note << "tables written to " << f.out << "/sizing_hottest.csv and sizing_zones.csv\n";
-  for (const auto& p : pictures) note << "picture written to " << p.string() << '\n';
+  for (const auto& p : pictures) note << "picture written to " << p.image.string() << '\n';
 }
 
 }  // namespace
+
+Scene StoredEnsembleScene(const StoredEnsemble& stored, const std::string& database_path,
+                          const std::string& study) {
+  const nlohmann::json spec =
+      ParseJsonText(stored.spec_json, database_path + ": stored study " + study);
+  return ParseScene(spec.at("scene_json"), database_path + ": scene of study " + study);
+}
 
 void AddSizingCommand(CLI::App& app) {
   auto flags = std::make_shared<SizingFlags>();

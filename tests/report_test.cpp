@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <regex>
 
 #include <fmt/format.h>
@@ -243,6 +244,114 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
   EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
+  std::filesystem::remove_all(at.dir);
+}
+
+// The cells of each body row of the table `id` in `dom`: (attributes, text) per cell.
+using Cells = std::vector<std::pair<std::string, std::string>>;
+std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  EXPECT_NE(start, std::string::npos) << id;
+  if (start == std::string::npos) return {};
+  const auto body = dom.find("<tbody>", start);
+  const std::string rows = dom.substr(body, dom.find("</tbody>", body) - body);
+  const std::regex row("<tr>(.*?)</tr>"), cell("<td([^>]*)>(.*?)</td>");
+  std::vector<Cells> out;
+  for (auto r = std::sregex_iterator(rows.begin(), rows.end(), row); r != std::sregex_iterator();
+       ++r) {
+    const std::string text = (*r)[1];
+    auto& cells = out.emplace_back();
+    for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator();
+         ++c) {
+      cells.emplace_back((*c)[1], std::regex_replace((*c)[2].str(), std::regex("&quot;"), "\""));
+    }
+  }
+  return out;
+}
+
+// The header cells of the table `id` in `dom`, as text.
+std::vector<std::string> TableColumns(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  const auto head = dom.find("<thead>", start);
+  const std::string header = dom.substr(head, dom.find("</thead>", head) - head);
+  const std::regex th("<th[^>]*>([^<]*)</th>");
+  std::vector<std::string> columns;
+  for (auto h = std::sregex_iterator(header.begin(), header.end(), th); h != std::sregex_iterator();
+       ++h) {
+    columns.push_back((*h)[1]);
+  }
+  return columns;
+}
+
+// A small ensemble named with markup (the row bundle over 0.03 s, two clearance states, two
+// truncations): the report's table of the hottest zones holds, per state and setting, the zone
+// and the P95 that `shockmap sizing --format json` prints, every picture loads, and the name
+// and the description show as text.
+TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads) {
+  Place at{std::filesystem::temp_directory_path() /
+               ("shockmap_ensemble_report_" + std::to_string(getpid())),
+           ""};
+  std::filesystem::remove_all(at.dir);
+  std::filesystem::create_directories(at.dir);
+  at.db = (at.dir / "e.db").string();
+  const nlohmann::json study = {
+      {"kind", "scene_ensemble"},
+      {"name", "<b>small</b> & \"q\""},
+      {"description", "row <i>bundle</i>"},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json"},
+      {"members", 12},
+      {"seed", 11},
+      {"window_s", 0.03},
+      {"impact_statistics", {{"rest_duration_s", 0.002}}},
+      {"draws", {{"effects.base_motion.half_sine.amplitude_m_s2", {{"normal", {{"std", 9.81}}}}}}},
+      {"clearance_states",
+       {{{"name", "new"}, {"pin_gap_m", {{"mean", 5e-5}, {"std", 5e-6}}}},
+        {{"name", "worn"}, {"pin_gap_m", {{"mean", 1e-5}, {"std", 3e-5}, {"min", -4e-5}}}}}},
+      {"settings", {{"solver.r_ftrunc", {100, 1000}}}},
+      {"refined", {{"solver.r_ftrunc", 1000}}}};
+  WriteText((at.dir / "study.json").string(), study.dump());
+  const auto run = RunShockmap("study run --quiet --jobs 2 " + (at.dir / "study.json").string() +
+                               " --db " + at.db);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report =
+      RunShockmap("report --db " + at.db + " --out " + (at.dir / "report").string());
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const auto sizing = RunShockmap("sizing --db " + at.db + " --format json");
+  ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
+  std::map<std::pair<std::string, std::string>, nlohmann::json> hottest;  // (state, setting)
+  for (const auto& row : nlohmann::json::parse(sizing.output)) {
+    if (row["hottest"] == 1) hottest[{row["state"], row["setting"]}] = row;
+  }
+  ASSERT_EQ(hottest.size(), 4u);  // Two states by two settings.
+
+  const auto page = at.dir / "report" / "index.html";
+  const std::string html = ReadBytes(page.string());
+  EXPECT_EQ(html.find("<b>small"), std::string::npos) << "the study name went in as markup";
+  EXPECT_EQ(html.find("<i>bundle"), std::string::npos) << "the description went in as markup";
+  const std::string dom = Dom(at, page);
+  // Per state its map, convergence and histogram; then states and settings.
+  EXPECT_EQ(Count(html, "<img "), 2u * 3u + 2u);
+  EXPECT_NE(dom.find("data-images-loaded=\"8/8\""), std::string::npos) << dom.substr(0, 600);
+  EXPECT_NE(dom.find("data-sortable-tables=\"4\""), std::string::npos);
+  const auto columns = TableColumns(dom, "sizing-hottest-table");
+  const auto p95 = std::ranges::find(columns, "p95_n") - columns.begin();
+  ASSERT_LT(static_cast<std::size_t>(p95), columns.size());
+  const auto rows = TableRows(dom, "sizing-hottest-table");
+  ASSERT_EQ(rows.size(), hottest.size());
+  for (const Cells& row : rows) {
+    ASSERT_GT(row.size(), static_cast<std::size_t>(p95));
+    const auto expected = hottest.find({row[0].second, row[1].second});
+    ASSERT_NE(expected, hottest.end()) << row[0].second << " " << row[1].second;
+    EXPECT_EQ(row[3].second, expected->second["zone"]);
+    std::smatch full;
+    ASSERT_TRUE(std::regex_search(row[p95].first, full, std::regex("data-sort=\"([^\"]+)\"")));
+    EXPECT_EQ(std::stod(full[1]), expected->second["p95_n"].get<double>()) << row[1].second;
+  }
+  for (const char* id : {"sizing-zones-table", "impacts-table", "provenance-table"}) {
+    EXPECT_NE(dom.find(std::string("<table class=\"sortable\" id=\"") + id), std::string::npos)
+        << id;
+  }
+  EXPECT_EQ(Count(dom, "against the refined setting:"), 2u);  // One line per state.
   std::filesystem::remove_all(at.dir);
 }
 

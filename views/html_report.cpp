@@ -9,6 +9,7 @@
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "formats/output_file.h"
+#include "formats/study_file.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
@@ -130,15 +131,21 @@ std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext
   for (const auto& row : provenance.rows) versions.insert(CellText(row[1]));
   std::string computed;
   for (const std::string& v : versions) computed += (computed.empty() ? "" : ", ") + v;
-  return {{"study", ctx.study},
-          {"kind", ctx.kind},
-          {"report written", UtcNow() + " (UTC)"},
-          {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version,
-                                          ctx.writer.compiler, ctx.writer.build_type)},
-          {"points computed by", computed.empty() ? "no run yet" : computed},
-          {"database", ctx.database_path},
-          {"thresholds", fmt::format("Err <= {:g} (paper eq. 8), SRf >= {:g} (paper eq. 9)",
-                                     ctx.thresholds.err_max, ctx.thresholds.srf_min)}};
+  std::vector<std::pair<std::string, std::string>> facts = {
+      {"study", ctx.study},
+      {"kind", ctx.kind},
+      {"report written", UtcNow() + " (UTC)"},
+      {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version, ctx.writer.compiler,
+                                      ctx.writer.build_type)},
+      {"points computed by", computed.empty() ? "no run yet" : computed},
+      {"database", ctx.database_path}};
+  // An ensemble's members are not scored: Err and SRf thresholds judge nothing there.
+  if (ctx.kind != ToString(StudyFileKind::kSceneEnsemble)) {
+    facts.emplace_back("thresholds",
+                       fmt::format("Err <= {:g} (paper eq. 8), SRf >= {:g} (paper eq. 9)",
+                                   ctx.thresholds.err_max, ctx.thresholds.srf_min));
+  }
+  return facts;
 }
 
 }  // namespace

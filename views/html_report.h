@@ -4,8 +4,8 @@
 // study of the paper's problem, one page per point under points/. The page needs nothing from
 // the network; its figures are embedded, so index.html also reads alone.
 //
-// A study kind contributes its sections (CanonicalSections, SceneSections here; another kind,
-// such as an ensemble, adds its own function beside them), and WriteReportIndex writes the page
+// A study kind contributes its sections (CanonicalSections, SceneSections, EnsembleSections
+// here; another kind adds its own function beside them), and WriteReportIndex writes the page
 // around them.
 
 #include <cstdint>
@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "core/scene.h"
+#include "db/ensemble_members.h"
 #include "db/study_database.h"
 #include "formats/scene_study_spec.h"
 #include "formats/study_spec.h"
@@ -55,6 +57,13 @@ struct SceneForceMap {
 // each swept parameter, the contact-force maps, provenance and the study file.
 std::vector<ReportSection> SceneSections(const ReportContext& ctx, const SceneStudySpec& spec,
                                          const std::vector<SceneForceMap>& maps);
+
+// An ensemble study (docs/ensembles.md): at the default options of `shockmap sizing`, the
+// hottest zone's and every zone's sizing statistics per clearance state and setting, the
+// settings against the refined one, the mean impact statistics, the sizing pictures (drawn into
+// ctx.dir/sizing), provenance and the study file. Throws InputError when no member is computed.
+std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const StoredEnsemble& stored,
+                                            const Scene& scene);
 
 // Writes ctx.dir/index.html: the header (study, kind, date, code versions, database,
 // thresholds) and the sections. Returns its path.

@@ -226,25 +226,42 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
 
 }  // namespace
 
-std::vector<fs::path> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
-                                         const Scene& scene, const fs::path& folder) {
+std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
+                                              const Scene& scene, const fs::path& folder) {
   CreateOutputDirectory(folder);
-  std::vector<fs::path> files;
+  const std::string q = "P" + Percent(s.options.quantile);
+  std::vector<SizingPicture> pictures;
   for (const GroupSizing* g : RefinedGroups(s)) {
     std::vector<double> sizing;
     for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
     const fs::path map = folder / ("map_" + FilePart(g->state) + ".png");
-    DrawContactForceMap(
-        scene, sizing, map,
-        fmt::format("P{} of {} members, {}", Percent(s.options.quantile), g->members, g->state));
-    files.push_back(map);
+    DrawContactForceMap(scene, sizing, map,
+                        fmt::format("{} of {} members, {}", q, g->members, g->state));
+    pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
+                                         "(paper Fig. 5b)",
+                                         g->state, q)});
+    const std::string hottest = g->zones[g->hottest].name;
     const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
-    files.push_back(Convergence(s, *g, forces, folder));
-    files.push_back(Histogram(s, *g, forces, folder));
+    pictures.push_back({Convergence(s, *g, forces, folder),
+                        fmt::format("{}: {} of the hottest zone ({}) against the number of "
+                                    "members, with its {} % interval",
+                                    g->state, q, hottest, Percent(s.options.confidence))});
+    pictures.push_back({Histogram(s, *g, forces, folder),
+                        fmt::format("{}: histogram of the hottest zone's ({}) largest force over "
+                                    "the members",
+                                    g->state, hottest)});
   }
-  if (RefinedGroups(s).size() > 1) files.push_back(States(s, folder));
-  if (s.groups.size() > RefinedGroups(s).size()) files.push_back(Settings(s, folder));
-  return files;
+  if (RefinedGroups(s).size() > 1) {
+    pictures.push_back(
+        {States(s, folder), fmt::format("{} of the hottest zone (and its wear work rate, where "
+                                        "streamed) per clearance state",
+                                        q)});
+  }
+  if (s.groups.size() > RefinedGroups(s).size()) {
+    pictures.push_back(
+        {Settings(s, folder), fmt::format("{} of the hottest zone per numerical setting", q)});
+  }
+  return pictures;
 }
 
 }  // namespace shockmap

@@ -6,6 +6,7 @@
 // sizing force and wear work rate; across settings, its sizing force against the setting.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "core/scene.h"
@@ -13,12 +14,17 @@
 
 namespace shockmap {
 
-// Writes the pictures (PNG, each with its data and script beside it) into `folder` and
-// returns their paths. `scene` is the study's scene (its zones in the stored order). Throws
-// InputError when a file cannot be written, PlotError when gnuplot fails.
-std::vector<std::filesystem::path> DrawSizingPictures(const EnsembleSizing& sizing,
-                                                      const StoredEnsemble& stored,
-                                                      const Scene& scene,
-                                                      const std::filesystem::path& folder);
+// A picture drawn: the PNG (its data and script beside it) and what it shows.
+struct SizingPicture {
+  std::filesystem::path image;
+  std::string caption;
+};
+
+// Writes the pictures into `folder` and returns them in drawing order. `scene` is the study's
+// scene (its zones in the stored order). Throws InputError when a file cannot be written,
+// PlotError when gnuplot fails.
+std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& sizing,
+                                              const StoredEnsemble& stored, const Scene& scene,
+                                              const std::filesystem::path& folder);
 
 }  // namespace shockmap

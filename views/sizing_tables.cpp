@@ -110,4 +110,20 @@ QueryResult ZoneTable(const EnsembleSizing& s) {
   return t;
 }
 
+std::vector<std::string> AgreementLines(const EnsembleSizing& s) {
+  std::vector<std::string> lines;
+  for (const GroupSizing& g : s.groups) {
+    if (g.refined) continue;
+    const std::size_t undecided = g.zones.size() - g.zones_agreeing - g.zones_disagreeing;
+    lines.push_back(
+        fmt::format("{} {} against the refined setting: {} zones agree, {} do not, {} undecided "
+                    "(an unbounded interval); hottest zone {}",
+                    g.state, g.setting_json, g.zones_agreeing, g.zones_disagreeing, undecided,
+                    !g.hottest_agrees   ? "undecided"
+                    : *g.hottest_agrees ? "agrees"
+                                        : "does not agree"));
+  }
+  return lines;
+}
+
 }  // namespace shockmap

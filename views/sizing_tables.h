@@ -4,6 +4,9 @@
 // ends (NULL when unbounded: too few members for that side), or, in the compact form for the
 // terminal, as "estimate [lower, upper]" text.
 
+#include <string>
+#include <vector>
+
 #include "db/read_only_query.h"
 #include "views/ensemble_sizing.h"
 
@@ -11,5 +14,9 @@ namespace shockmap {
 
 QueryResult HottestZoneTable(const EnsembleSizing& sizing, bool compact);
 QueryResult ZoneTable(const EnsembleSizing& sizing);
+
+// One line per setting other than the refined one, per state: how many zones agree with the
+// refined setting, how many do not, how many are undecided, and what the hottest zone does.
+std::vector<std::string> AgreementLines(const EnsembleSizing& sizing);
 
 }  // namespace shockmap

@@ -1,0 +1,128 @@
+// The report's sections for an ensemble study (declared in views/html_report.h): the sizing
+// statistics of `shockmap sizing` (docs/ensembles.md, "Sizing") as sortable tables, the
+// settings' agreement, the impact statistics and the sizing pictures.
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "db/report_queries.h"
+#include "views/html_report.h"
+#include "views/html_text.h"
+#include "views/sizing_plots.h"
+#include "views/sizing_tables.h"
+
+namespace shockmap {
+namespace {
+
+std::string Scrolling(const std::string& table) {
+  return "<div class=\"scroll\">" + table + "</div>\n";
+}
+
+// What the study is and what the tables count, from the stored study file.
+std::string About(const EnsembleSizing& s, const std::string& spec_json) {
+  const auto spec = nlohmann::json::parse(spec_json, nullptr, false);
+  std::string html;
+  if (spec.is_object() && spec.contains("description") && spec["description"].is_string()) {
+    html += "<p>" + HtmlEscaped(spec["description"].get<std::string>()) + "</p>\n";
+  }
+  html += fmt::format(
+      "<p>P{0:g} of the members' largest force per zone, with {1:g} % intervals from order "
+      "statistics (an empty end: too few members to bound that side), Wilks' upper tolerance "
+      "limit and a bootstrap interval as a cross-check: the numbers of <code>shockmap sizing "
+      "--quantile {2:g} --confidence {3:g}</code>. The hottest zone of a clearance state has the "
+      "highest estimate at its refined setting.</p>\n",
+      100 * s.options.quantile, 100 * s.options.confidence, s.options.quantile,
+      s.options.confidence);
+  if (s.pending + s.failed > 0) {
+    html +=
+        fmt::format("<p>{} members pending, {} not ok: not counted.</p>\n", s.pending, s.failed);
+  }
+  return html;
+}
+
+std::string Agreement(const EnsembleSizing& s) {
+  const std::vector<std::string> lines = AgreementLines(s);
+  if (lines.empty()) return "<p>One numerical setting: nothing to compare.</p>\n";
+  std::string html = fmt::format(
+      "<p>A setting agrees with the refined one at a zone where their {:g} % intervals of the "
+      "sizing quantile, each widened by {:g} % of the refined estimate, overlap.</p>\n<ul>\n",
+      100 * s.options.confidence, 100 * s.options.tolerance);
+  for (const std::string& line : lines) html += "<li>" + HtmlEscaped(line) + "</li>\n";
+  return html + "</ul>\n";
+}
+
+// The means over members of every zone's impact statistics; no rows when none were streamed.
+QueryResult ImpactTable(const EnsembleSizing& s) {
+  QueryResult t;
+  t.columns = {"state",
+               "setting",
+               "zone",
+               "members",
+               "impacts_per_s",
+               "rebounds_per_impact",
+               "mean_impact_duration_s",
+               "contact_time_fraction",
+               "mean_force_n",
+               "rms_force_n",
+               "impulse_n_s",
+               "wear_work_rate_w"};
+  for (const GroupSizing& g : s.groups) {
+    for (const ZoneSizing& z : g.zones) {
+      if (!z.impacts) continue;
+      const MeanImpacts& m = *z.impacts;
+      t.rows.push_back({g.state, g.setting_json + (g.refined ? " (refined)" : ""), z.name,
+                        static_cast<std::int64_t>(z.members), m.impacts_per_s,
+                        m.rebounds_per_impact, m.mean_impact_duration_s, m.contact_time_fraction,
+                        m.mean_force_n, m.rms_force_n, m.impulse_n_s,
+                        m.wear_work_rate_w ? QueryCell(*m.wear_work_rate_w) : QueryCell()});
+    }
+  }
+  return t;
+}
+
+std::string Impacts(const EnsembleSizing& s) {
+  const QueryResult table = ImpactTable(s);
+  if (table.rows.empty()) {
+    return "<p>No member streamed impact statistics (the study file has no "
+           "<code>impact_statistics</code>).</p>\n";
+  }
+  return "<p>Each zone's impact statistics (docs/physics.md §6), averaged over the members; "
+         "the wear work rate where the scene bends in both planes.</p>\n" +
+         Scrolling(SortableTable(table, "impacts-table",
+                                 "Mean impact statistics per clearance state, setting and zone"));
+}
+
+std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
+                     const StoredEnsemble& stored, const Scene& scene) {
+  std::string html;
+  for (const SizingPicture& p : DrawSizingPictures(s, stored, scene, ctx.dir / "sizing")) {
+    html += EmbeddedFigure(p.image, p.caption, PlotFiles(p.image, ctx.dir));
+  }
+  return html;
+}
+
+}  // namespace
+
+std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const StoredEnsemble& stored,
+                                            const Scene& scene) {
+  const EnsembleSizing sizing = SizeEnsemble(stored, ctx.study, SizingOptions{});
+  const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
+  return {
+      {"sizing-hottest", "Sizing force of the hottest zone",
+       About(sizing, stored.spec_json) +
+           Scrolling(SortableTable(HottestZoneTable(sizing, false), "sizing-hottest-table",
+                                   "The hottest zone per clearance state and setting"))},
+      {"sizing-zones", "Sizing statistics per zone",
+       Scrolling(SortableTable(ZoneTable(sizing), "sizing-zones-table",
+                               "Every zone per clearance state and setting"))},
+      {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
+      {"impacts", "Impact statistics", Impacts(sizing)},
+      {"sizing-pictures", "Sizing pictures", Pictures(ctx, sizing, stored, scene)},
+      {"provenance", "Provenance",
+       SortableTable(tables.provenance, "provenance-table", "Runs of the study")},
+      {"study-file", "Study file", Preformatted(tables.spec_json)},
+  };
+}
+
+}  // namespace shockmap
