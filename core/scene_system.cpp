@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/fused_sums.h"
+
 namespace shockmap {
 
 double TimeLoad::Amplitude(double t_s) const {
@@ -46,8 +48,8 @@ double SceneModalSystem::SlidingSpeed(int contact, const Eigen::VectorXd& v) con
 }
 
 Energies SceneModalSystem::EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-  return {0.5 * v.squaredNorm(), 0.5 * omega_squared_.dot(x.cwiseProduct(x)),
-          contacts_.ContactEnergy(x)};
+  const auto [v_squared, omega_x_squared] = KineticAndStrainSums(v, omega_squared_, x);
+  return {0.5 * v_squared, 0.5 * omega_x_squared, contacts_.ContactEnergy(x)};
 }
 
 bool SceneModalSystem::Dissipates() const { return modal_damping_ || contacts_.AnyDamping(); }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/cpu_timer.h"
+#include "core/fused_sums.h"
 #include "core/impact_tracker.h"
 #include "core/validity.h"
 
@@ -65,8 +66,9 @@ struct Recorder {
   void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j,
               double work_j) {
     for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
-      result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
-      result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
+      const auto [displacement, velocity] = DotBoth(options.observed_rows[i], x, v);
+      result.displacement_m[i].values.push_back(displacement);
+      result.velocity_m_s[i].values.push_back(velocity);
     }
     if (options.record_contact_forces) {
       const auto forces = system.LastContactForces();

@@ -27,6 +27,7 @@
 #include "core/contact_stations.h"
 #include "core/end_condition.h"
 #include "core/full_fe_contact_system.h"
+#include "core/fused_sums.h"
 #include "core/modal_basis.h"
 #include "core/modal_basis_cache.h"
 #include "core/newmark.h"
@@ -1048,6 +1049,43 @@ TEST(ModalBasisCache, ReusesTheSolutionPerThreadAndEqualsAFreshSolve) {
     EXPECT_TRUE(cached->omega_rad_s == fresh.omega_rad_s);
     EXPECT_TRUE(cached->shapes == fresh.shapes);
   }
+}
+
+}  // namespace
+}  // namespace shockmap
+
+namespace shockmap {
+namespace {
+
+// The fused sums promise Eigen's own summation order: equal to the last bit, at every length
+// around the packet boundaries (0 to 70 covers no packet, one, pairs and every remainder).
+TEST(FusedSums, EqualEigenReductionsBitForBit) {
+  for (int n = 0; n <= 70; ++n) {
+    const Eigen::VectorXd row = Eigen::VectorXd::Random(n), x = Eigen::VectorXd::Random(n) * 1e-3;
+    const Eigen::VectorXd v = Eigen::VectorXd::Random(n) * 7.0;
+    const Eigen::VectorXd w = (Eigen::VectorXd::Random(n).array() + 2.0).square().matrix() * 1e6;
+    const auto [rx, rv] = DotBoth(row, x, v);
+    EXPECT_EQ(rx, row.dot(x)) << "n = " << n;
+    EXPECT_EQ(rv, row.dot(v)) << "n = " << n;
+    const auto [vv, wxx] = KineticAndStrainSums(v, w, x);
+    EXPECT_EQ(vv, v.squaredNorm()) << "n = " << n;
+    EXPECT_EQ(wxx, w.dot(x.cwiseProduct(x))) << "n = " << n;
+  }
+}
+
+// A sum in another order differs in the last bits on such data: the test above can fail.
+TEST(FusedSums, OrderMattersOnTheTestData) {
+  const Eigen::VectorXd row = Eigen::VectorXd::Random(33), x = Eigen::VectorXd::Random(33);
+  double in_order = 0.0;
+  for (int i = 0; i < 33; ++i) in_order += row[i] * x[i];
+  bool any_differs = in_order != row.dot(x);
+  for (int seed = 0; seed < 20 && !any_differs; ++seed) {
+    const Eigen::VectorXd r2 = Eigen::VectorXd::Random(33), x2 = Eigen::VectorXd::Random(33);
+    double s = 0.0;
+    for (int i = 0; i < 33; ++i) s += r2[i] * x2[i];
+    any_differs = s != DotBoth(r2, x2, x2)[0];
+  }
+  EXPECT_TRUE(any_differs);
 }
 
 }  // namespace
