@@ -11,9 +11,10 @@ namespace {
 // A run of less CPU time than this is timed again until its runs total this much wall time
 // and number at least kMinTimedRuns (at most kMaxTimedRuns), and the median is stored: single
 // wall timings of runs of ~10 us differ a thousandfold between two runs of a study on a
-// loaded machine, one preempted for 10 ms (docs/physics.md §4.4).
-constexpr double kTimedTotal_s = 0.01;
-constexpr int kMinTimedRuns = 5;
+// loaded machine, one preempted for 10 ms (docs/physics.md §4.4). The budget is a few times a
+// typical point's own run, so timing does not dominate a study's cost.
+constexpr double kTimedTotal_s = 0.001;
+constexpr int kMinTimedRuns = 3;
 constexpr int kMaxTimedRuns = 101;
 
 ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
