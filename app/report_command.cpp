@@ -169,7 +169,7 @@ void AddReportCommand(CLI::App& app) {
       "a page per point with its Fig. 3, Fig. 4, criteria, cost front, contact-force maps of "
       "scene studies, sizing tables and pictures of ensemble studies, provenance");
   report->add_option("STUDY", flags->study, "study name (default: the database's only study)");
-  report->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(report, flags->database_path);
   AddThresholdFlags(report, flags->thresholds);
   report->add_option("--out", flags->out, "directory for index.html, its figures and point pages")
       ->required();

@@ -112,7 +112,7 @@ void AddSizingCommand(CLI::App& app) {
       "Wilks' upper tolerance limit, a bootstrap cross-check, impact statistics, and each "
       "setting against the refined one");
   sizing->add_option("STUDY", flags->study, "study name (default: the database's only ensemble)");
-  sizing->add_option("--db", flags->database_path, "study database")->capture_default_str();
+  AddDatabaseFlag(sizing, flags->database_path);
   sizing->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));

@@ -53,7 +53,7 @@ struct StudyFlags {
 };
 
 // A rerun with nothing left to compute says so, and how to compute the failed points again.
-void PrintNothingToDo(const StudyRunSummary& s, const StudyRunOptions& options) {
+void PrintEveryPointStored(const StudyRunSummary& s, const StudyRunOptions& options) {
   fmt::print("study {}: all {} already stored in {}; nothing to compute\n", s.study,
              Counted(static_cast<long long>(s.points_in_study), "point"), options.database_path);
   if (!options.retry_failed) {
@@ -65,7 +65,7 @@ void PrintNothingToDo(const StudyRunSummary& s, const StudyRunOptions& options) 
 }
 
 void PrintSummary(const StudyRunSummary& s, const StudyRunOptions& options) {
-  if (s.points_to_compute == 0 && s.stop_signal == 0) return PrintNothingToDo(s, options);
+  if (s.points_to_compute == 0 && s.stop_signal == 0) return PrintEveryPointStored(s, options);
   const double rate = s.point_wall_s > 0 ? s.points_computed / s.point_wall_s : 0.0;
   const std::string workers = s.worker_ranks > 0
                                   ? fmt::format("{} x {}", Counted(s.worker_ranks, "worker rank"),

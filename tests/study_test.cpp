@@ -305,7 +305,7 @@ TEST(ProgressReporter, PrintsAPlainFinalLineOffATerminal) {
 
 // The CLI reports both phases of a study (stderr is a pipe here: plain lines), and a rerun
 // with nothing to do says so instead of printing zero outcomes.
-TEST(StudyRunCli, ReportsEveryPhaseAndARerunWithNothingToDo) {
+TEST(StudyRunCli, ReportsEveryPhaseAndARerunThatFindsEveryPointStored) {
   const auto dir =
       std::filesystem::temp_directory_path() / ("shockmap_progress_" + std::to_string(getpid()));
   std::filesystem::remove_all(dir);
