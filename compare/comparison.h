@@ -42,6 +42,11 @@ struct ComparisonOptions {
   ShockSegmentationOptions Shocks(double f1_hz) const;
 };
 
+// The histories a point's numerical run records: kScored those Err and SRf read (the tip
+// displacement and the contact force), as a study scores and times its points; kAll adds the
+// tip velocity and the energies, as the point's CSV (formats/history_csv.h) writes them.
+enum class RecordedHistories { kScored, kAll };
+
 struct ComparisonResult {
   // The numerical run's status, or kReferenceUnconverged when it ran but nothing is scored.
   RunStatus status = RunStatus::kOk;
@@ -56,17 +61,24 @@ struct ComparisonResult {
   RunSummary numerical;  // dt asked / used, steps, wall and CPU time.
   std::vector<Shock> shocks_numerical;
   std::shared_ptr<const ReferenceRun> reference;  // Shared by every point of the same problem.
-  TransientResult histories;  // Tip displacement, tip velocity, contact force, energies.
+  // Tip displacement and contact force; tip velocity and energies too when recorded kAll.
+  TransientResult histories;
 };
 
 // Preconditions: problem.IsValid(), options.IsValid(). Throws InputError when the
 // reference cannot represent the problem.
 ComparisonResult RunComparison(const CantileverImpact& problem, const ComparisonOptions& options);
 
+// Transient options of a point's numerical run: its window, its step resolved on the model's
+// bounds, the tip row observed and the histories recorded.
+TransientOptions NumericalRun(const ComparisonOptions& options, const ImpactModel& model,
+                              RecordedHistories recorded);
+
 // Scores a numerical run against a reference computed for the same problem and window.
 ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
                                        const ComparisonOptions& options,
-                                       std::shared_ptr<const ReferenceRun> reference);
+                                       std::shared_ptr<const ReferenceRun> reference,
+                                       RecordedHistories recorded = RecordedHistories::kAll);
 
 // The wall and CPU time of a point's numerical run as the median of `repeats` runs of the same
 // model, so that the cost of runs of a few microseconds is not one sample of timer noise.
@@ -76,7 +88,8 @@ struct RunTiming {
   int repeats = 1;
 };
 
-// Runs the numerical run of (problem, options) again, model built once, until at least
+// Runs the numerical run of (problem, options), recording RecordedHistories::kScored as a
+// study's scored run does, again, model built once, until at least
 // min_repeats runs were made and their total wall time reaches min_total_s, or max_repeats
 // runs were made (the first one included, given as `first`); the median of all, so that a run
 // the scheduler preempted once does not set the cost. Preconditions as RunComparison's.

@@ -48,7 +48,7 @@ struct Recorder {
       for (auto& s : v) s.values.reserve(records);
     };
     init(result.displacement_m, options.observed_rows.size());
-    init(result.velocity_m_s, options.observed_rows.size());
+    init(result.velocity_m_s, options.record_velocity ? options.observed_rows.size() : 0);
     if (options.record_contact_forces) {
       init(result.contact_force_n, options.recorded_contacts.empty()
                                        ? system.LastContactForces().size()
@@ -66,9 +66,13 @@ struct Recorder {
   void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j,
               double work_j) {
     for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
-      const auto [displacement, velocity] = DotBoth(options.observed_rows[i], x, v);
-      result.displacement_m[i].values.push_back(displacement);
-      result.velocity_m_s[i].values.push_back(velocity);
+      if (options.record_velocity) {
+        const auto [displacement, velocity] = DotBoth(options.observed_rows[i], x, v);
+        result.displacement_m[i].values.push_back(displacement);
+        result.velocity_m_s[i].values.push_back(velocity);
+      } else {
+        result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
+      }
     }
     if (options.record_contact_forces) {
       const auto forces = system.LastContactForces();

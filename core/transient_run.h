@@ -47,8 +47,10 @@ struct TransientOptions {
   // history kept); contacts and impacts told apart by impact_counting (checked by IsValid).
   bool track_impact_statistics = false;
   ImpactCounting impact_counting;
-  // Displacement and velocity histories are recorded at each of these points (row . x).
+  // Displacement histories are recorded at each of these points (row . x), and velocity
+  // histories (row . v) too when record_velocity.
   std::vector<Eigen::VectorXd> observed_rows;
+  bool record_velocity = true;
 
   bool IsValid(std::string* error) const;
 };
@@ -76,7 +78,7 @@ struct EnergyHistory {
 struct TransientResult {
   RunSummary summary;
   std::vector<UniformSignal> displacement_m;  // One per observed row.
-  std::vector<UniformSignal> velocity_m_s;    // One per observed row.
+  std::vector<UniformSignal> velocity_m_s;    // One per observed row, when recorded.
   // One per contact (or per recorded_contacts entry), when recorded.
   std::vector<UniformSignal> contact_force_n;
   std::vector<double> max_contact_force_n;  // One per contact, when tracked.

@@ -8,13 +8,13 @@
 namespace shockmap {
 namespace {
 
-// A run of less CPU time than this is timed again until its runs total this much wall time
-// and number at least kMinTimedRuns (at most kMaxTimedRuns), and the median is stored: single
-// wall timings of runs of ~10 us differ a thousandfold between two runs of a study on a
-// loaded machine, one preempted for 10 ms (docs/physics.md §4.4). The budget is a few times a
-// typical point's own run, so timing does not dominate a study's cost.
-constexpr double kTimedTotal_s = 0.001;
-constexpr int kMinTimedRuns = 3;
+// A run of less CPU time than kTimedTotal_s is timed again until its runs total kTimedTotal_s
+// of wall time and number at least kMinTimedRuns (at most kMaxTimedRuns), and the lower median
+// is stored: single wall timings of runs of ~10 us differ a thousandfold between two runs of a
+// study on a loaded machine, one preempted for 10 ms (docs/physics.md §4.4). The budget is
+// about two of a typical point's runs, so that timing does not dominate a study's cost.
+constexpr double kTimedTotal_s = 5e-4;
+constexpr int kMinTimedRuns = 2;
 constexpr int kMaxTimedRuns = 101;
 
 ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
@@ -146,7 +146,8 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
   Outcome out;
   try {
     const ComparisonResult r =
-        ScoreAgainstReference(ProblemOf(spec_, point), OptionsOf(spec_, point), reference.run);
+        ScoreAgainstReference(ProblemOf(spec_, point), OptionsOf(spec_, point), reference.run,
+                              RecordedHistories::kScored);
     out.status = r.status;
     out.message = r.message;
     out.score = ToScoreRow(r, reference_id);

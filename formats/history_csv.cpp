@@ -1,5 +1,7 @@
 #include "formats/history_csv.h"
 
+#include <stdexcept>
+
 #include "formats/output_file.h"
 
 namespace shockmap {
@@ -8,6 +10,11 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
   CreateOutputDirectory(dir);
 
   const TransientResult& h = result.histories;
+  if (!h.displacement_m.empty() &&
+      (h.velocity_m_s.empty() ||
+       h.energy.kinetic_j.values.size() != h.displacement_m[0].values.size())) {
+    throw std::logic_error("WriteComparisonCsv: histories not recorded RecordedHistories::kAll");
+  }
   const auto num_file = dir / "numerical.csv";
   AtomicFile num_out(num_file);
   std::ostream& num = num_out.Stream();

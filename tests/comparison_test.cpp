@@ -8,6 +8,7 @@
 
 #include "compare/comparison.h"
 #include "formats/comparison_json.h"
+#include "formats/history_csv.h"
 
 namespace shockmap {
 
@@ -90,6 +91,30 @@ TEST_F(PaperFig3, EveryStatusRoundTripsThroughTheJson) {
   }
 }
 
+// A study scores with the histories Err and SRf read; the scores and the histories it keeps are
+// those of the run that records everything, bit for bit, and the energy the divergence checks
+// judge is the same.
+TEST_F(PaperFig3, ScoredHistoriesGiveTheScoresOfAllHistories) {
+  ComparisonOptions o;
+  o.r_ftrunc = 300.0;
+  const ComparisonResult all = ScoreAgainstReference(problem_, o, reference_);
+  const ComparisonResult scored =
+      ScoreAgainstReference(problem_, o, reference_, RecordedHistories::kScored);
+  ASSERT_EQ(scored.status, RunStatus::kOk) << scored.message;
+  EXPECT_EQ(*scored.err, *all.err);
+  EXPECT_EQ(*scored.srf, *all.srf);
+  EXPECT_EQ(scored.numerical.max_energy_ratio, all.numerical.max_energy_ratio);
+  EXPECT_EQ(scored.histories.displacement_m[0].values, all.histories.displacement_m[0].values);
+  EXPECT_EQ(scored.histories.contact_force_n[0].values, all.histories.contact_force_n[0].values);
+  EXPECT_TRUE(scored.histories.velocity_m_s.empty());
+  EXPECT_TRUE(scored.histories.energy.kinetic_j.values.empty());
+  EXPECT_EQ(all.histories.energy.kinetic_j.values.size(),
+            all.histories.displacement_m[0].values.size());
+  // The CSV holds every history: it refuses a run that did not record them.
+  EXPECT_THROW(WriteComparisonCsv(scored, ::testing::TempDir() + "/scored_histories"),
+               std::logic_error);
+}
+
 TEST_F(PaperFig3, ImplicitSchemeIsStableAboveTheExplicitBound) {
   // Twice the explicit bound: the run stays bounded, within a few percent of its energy (the
   // trapezoidal work of a force that switches within a step is not the spring's energy; the
@@ -132,7 +157,8 @@ TEST(UnstableRuns, EnergyGrownPastTheLimitIsUnstableAndStillScored) {
   EXPECT_LE(below.numerical.max_energy_ratio, kUnstableEnergyRatio);
 }
 
-// The median of repeated runs of one model: as many runs as fit the total, each the same run.
+// The lower median of repeated runs of one model: as many runs as fit the total, each the same
+// run.
 TEST(RunTiming, ShortRunsAreTimedRepeatedlyUntilTheTotal) {
   CantileverImpact problem;
   ComparisonOptions o;
@@ -160,6 +186,10 @@ TEST(RunTiming, ShortRunsAreTimedRepeatedlyUntilTheTotal) {
   const RunTiming five = TimeRepeatedly(problem, o, preempted, 0.005, 5, 1000);
   EXPECT_EQ(five.repeats, 5);
   EXPECT_LT(five.wall_s, 1.0);
+  // Of two runs, the faster: the preempted one does not set the cost.
+  const RunTiming two = TimeRepeatedly(problem, o, preempted, 0.0, 2, 1000);
+  EXPECT_EQ(two.repeats, 2);
+  EXPECT_LT(two.wall_s, 1.0);
 }
 
 // The progress callback sees the simulated time at every divergence check, rising to the end.
