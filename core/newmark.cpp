@@ -1,5 +1,7 @@
 #include "core/newmark.h"
 
+#include "core/elementwise_passes.h"
+
 namespace shockmap {
 
 NewmarkIntegrator::NewmarkIntegrator(NewmarkParameters parameters, SecondOrderSystem& system)
@@ -17,17 +19,11 @@ bool NewmarkIntegrator::Step(double dt) {
   const double dt2 = dt * dt;
   // x and v become the predictors in place, in one pass; a still holds a_n.
   const double cx = (0.5 - p_.beta) * dt2, cv = (1.0 - p_.gamma) * dt;
-  double* __restrict x = x_.data();  // Three distinct vectors: no overlap checks needed.
-  double* __restrict v = v_.data();
-  const double* __restrict a = a_.data();
-  for (Eigen::Index i = 0; i < x_.size(); ++i) {
-    x[i] += dt * v[i] + cx * a[i];
-    v[i] += cv * a[i];
-  }
+  PredictInPlace(x_, v_, a_, dt, cx, cv);
   t_ += dt;
   if (!system_.SolveAcceleration(t_, p_.beta * dt2, p_.gamma * dt, x_, v_, a_)) return false;
   if (p_.beta != 0.0) x_.noalias() += (p_.beta * dt2) * a_;
-  v_.noalias() += (p_.gamma * dt) * a_;
+  AddScaledInPlace(v_, p_.gamma * dt, a_);
   return true;
 }
 

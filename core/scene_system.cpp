@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/elementwise_passes.h"
 #include "core/fused_sums.h"
 
 namespace shockmap {
@@ -26,7 +27,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
                                          const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) {
   assert(beta_dt2 == 0.0 && "the scene's modal model is integrated explicitly");
   (void)beta_dt2;
-  a.noalias() = -omega_squared_.cwiseProduct(x_pred);
+  NegativeProduct(omega_squared_, x_pred, a);
   for (const auto& load : loads_) a.noalias() += load.Amplitude(t_s) * load.shape;
   contacts_.AddForces(x_pred, v_pred, a);
   if (modal_damping_) {

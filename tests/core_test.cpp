@@ -25,6 +25,7 @@
 #include "core/beam_properties.h"
 #include "core/cantilever_impact.h"
 #include "core/contact_stations.h"
+#include "core/elementwise_passes.h"
 #include "core/end_condition.h"
 #include "core/full_fe_contact_system.h"
 #include "core/fused_sums.h"
@@ -1086,6 +1087,38 @@ TEST(FusedSums, OrderMattersOnTheTestData) {
     any_differs = s != DotBoth(r2, x2, x2)[0];
   }
   EXPECT_TRUE(any_differs);
+}
+
+// The step's element-by-element passes equal the Eigen expressions bit for bit, whichever of
+// their builds (AVX2 or baseline) this CPU runs, at every length a vector pass splits
+// differently (packets of 4 and 2, and the remainder).
+TEST(ElementwisePasses, EqualEigenExpressionsBitForBit) {
+  const double dt = 3.7e-6, cx = 0.5 * dt * dt, cv = 0.5 * dt;
+  for (int n = 0; n <= 70; ++n) {
+    const Eigen::VectorXd x0 = Eigen::VectorXd::Random(n) * 1e-3, v0 = Eigen::VectorXd::Random(n);
+    const Eigen::VectorXd a = Eigen::VectorXd::Random(n) * 1e5;
+    const Eigen::VectorXd w = (Eigen::VectorXd::Random(n).array() + 2.0).square().matrix() * 1e6;
+    Eigen::VectorXd x = x0, v = v0;
+    PredictInPlace(x, v, a, dt, cx, cv);
+    // The step's former Eigen expressions.
+    Eigen::VectorXd x_eigen = x0, v_eigen = v0;
+    x_eigen.noalias() += dt * v0 + cx * a;
+    v_eigen.noalias() += cv * a;
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(x[i], x_eigen[i]) << "n = " << n << ", i = " << i;
+      ASSERT_EQ(v[i], v_eigen[i]) << "n = " << n << ", i = " << i;
+    }
+    AddScaledInPlace(v, cv, a);
+    Eigen::VectorXd out;
+    NegativeProduct(w, x, out);
+    ASSERT_EQ(out.size(), n);
+    v_eigen.noalias() += cv * a;
+    const Eigen::VectorXd out_eigen = -w.cwiseProduct(x);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(v[i], v_eigen[i]) << "n = " << n << ", i = " << i;
+      ASSERT_EQ(out[i], out_eigen[i]) << "n = " << n << ", i = " << i;
+    }
+  }
 }
 
 }  // namespace
