@@ -12,6 +12,7 @@
 #include "formats/comparison_json.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
+#include "reference/reference_cost.h"
 #include "views/comparison_plot.h"
 
 namespace shockmap {
@@ -81,6 +82,16 @@ void CheckMeshCost(const ComparisonOptions& o) {
                                elements, excess));
 }
 
+// Refuses a reference (--rfref over --window) beyond the budget of reference/reference_cost.h.
+void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions& o) {
+  ReferenceOptions reference = o.reference;
+  reference.end_time_s = o.window_s;
+  const std::string excess = ReferenceBudgetExcess(problem, reference);
+  if (excess.empty()) return;
+  throw InputError(fmt::format("--rfref: {:g} over the {:g} s --window: {}", o.reference.r_fref,
+                               o.window_s, excess));
+}
+
 void Run(const CompareFlags& flags) {
   CompareFlags f = flags;
   if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
@@ -98,6 +109,7 @@ void Run(const CompareFlags& flags) {
   }
 
   CheckMeshCost(f.options);
+  CheckReferenceCost(f.problem, f.options);
   // The outputs are checked before the run and written before anything is reported.
   if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
   const ComparisonResult result = RunComparison(f.problem, f.options);

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <functional>
 #include <set>
+#include <sstream>
 
 #include "core/modal_basis.h"
 #include "formats/json_reader.h"
 #include "reference/analytic_modes.h"
+#include "reference/reference_cost.h"
 
 namespace shockmap {
 
@@ -346,6 +348,26 @@ std::vector<double> ModeEntryTruncations(int first_mode, int last_mode) {
   return r_ftrunc;
 }
 
+namespace {
+
+// Refuses a study whose reference at some (R_k, window) exceeds the budget of
+// reference/reference_cost.h, naming the first such point.
+void CheckReferenceCosts(const StudySpec& spec) {
+  for (const StudyPoint& point : spec.points) {
+    ReferenceOptions reference = OptionsOf(spec, point).reference;
+    reference.end_time_s = point.window_s;
+    const std::string excess = ReferenceBudgetExcess(ProblemOf(spec, point), reference);
+    if (excess.empty()) continue;
+    std::ostringstream at;
+    at << "rk = " << Shown(Json(point.r_k)) << " and window_s = " << Shown(Json(point.window_s))
+       << " give R_fref = " << Shown(Json(reference.r_fref)) << ": " << excess
+       << "; lower r_fref_min, r_fref_per_sqrt_rk, the largest rk or the window";
+    FailAt(spec.file, "scoring.reference", at.str());
+  }
+}
+
+}  // namespace
+
 StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   StudySpec spec;
   spec.file = file;
@@ -375,6 +397,7 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   for (const auto& p : all) {
     if (seen.insert(PointKey(p)).second) spec.points.push_back(p);
   }
+  CheckReferenceCosts(spec);
   spec.spec_json = json.dump();
   return spec;
 }

@@ -34,6 +34,8 @@ class HostileInput : public testing::TempDirTest {
     WriteText(Path("huge_grid.json"),
               R"({"name": "huge", "grids": [{"rk": {"logspace": [0, 6, 1000000000]}, )"
               R"("rftrunc": [300]}]})");
+    WriteText(Path("huge_reference.json"),
+              R"({"name": "r", "grids": [{"rk": [1e3, 1e12], "rftrunc": [300]}]})");
     WriteText(Path("nan.json"), R"({"name": "x", "grids": [{"rk": NaN, "rftrunc": [300]}]})");
     WriteText(Path("huge_bundle.json"), std::string(R"({"name": "b", "bundle": {"layout": "hex",
       "rings": 50, "pin_pitch_m": 0.007,
@@ -72,6 +74,9 @@ TEST_F(HostileInput, CommandLineFlags) {
       {"not a number", "compare --rk three --rftrunc 300", "--rk"},
       {"1e12 steps", "compare --rk 3000 --rftrunc 300 --dt 1e-13", "--dt"},
       {"absurd mesh", "compare --rk 3000 --rftrunc 300 --elements 1000000000", "--elements"},
+      {"reference of 19 000 modes", "compare --rk 3000 --rftrunc 300 --rfref 1e9",
+       "--rfref: 1e+09"},
+      {"reference over 10 min", "compare --rk 3000 --rftrunc 300 --window 600", "--window"},
       {"unknown flag", "compare --rk 3000 --rftrunc 300 --turbo", "--turbo"},
       {"unknown command", "simulte x.json", "simulte"},
       {"missing argument", "simulate", "scene"},
@@ -88,6 +93,8 @@ TEST_F(HostileInput, FilesAndPaths) {
       {"study file is a device", "study run /dev/zero --db DIR/s.db", "/dev/zero"},
       {"study grid of 1e9 points", "study run DIR/huge_grid.json --db DIR/s.db", "grids[0]"},
       {"NaN in a study file", "study run DIR/nan.json --db DIR/s.db", "nan.json"},
+      {"study reference at R_fref 3e7", "study run DIR/huge_reference.json --db DIR/s.db",
+       "scoring.reference"},
       {"scene file is a directory", "simulate DIR/a_directory.json", "directory"},
       {"bundle of 1e8 zones", "simulate DIR/huge_bundle.json", "at most 1000000"},
       {"scene of 1e12 steps", "simulate DIR/endless.json", "solver.dt"},

@@ -10,6 +10,7 @@
 #include "reference/analytic_basis.h"
 #include "reference/analytic_modes.h"
 #include "reference/reference_convergence.h"
+#include "reference/reference_cost.h"
 #include "reference/reference_solver.h"
 
 namespace shockmap {
@@ -216,6 +217,34 @@ TEST(ReferenceConvergence, PaperTruncationsAgreeOverTheFirstShocks) {
   EXPECT_EQ(c.r_fref_check, 1000.0);
   EXPECT_LT(c.difference, 0.01);
   EXPECT_GT(c.difference, 0.0);
+}
+
+// The estimate a reference is refused by, against references solved: its modes within two of
+// each configuration's, its output samples an upper bound within a factor 2, from R_k = 1 to
+// 1e6; the shipped studies' largest reference fits the budget, a 1e9 truncation does not.
+TEST(ReferenceCost, EstimateBoundsTheSolvedReference) {
+  for (const auto& [r_k, r_fref] : {std::pair{1.0, 2000.0}, {3000.0, 3000.0}, {1e6, 30000.0}}) {
+    CantileverImpact problem;
+    problem.r_k = r_k;
+    ReferenceOptions options;
+    options.r_fref = r_fref;
+    options.end_time_s = 0.06;
+    const ReferenceCost cost = EstimateReferenceCost(problem, options);
+    const ReferenceSolution solved = SolveReference(problem, options);
+    const ReferenceSummary& s = solved.Summary();
+    EXPECT_NEAR(cost.modes, s.n_modes_free, 2.0) << "R_k = " << r_k;
+    EXPECT_NEAR(cost.modes, s.n_modes_contact, 2.0) << "R_k = " << r_k;
+    const double samples = options.end_time_s / solved.OutputStep() + 1.0;
+    EXPECT_GE(cost.samples, samples) << "R_k = " << r_k;
+    EXPECT_LT(cost.samples, 2.0 * samples) << "R_k = " << r_k;
+    EXPECT_EQ(ReferenceBudgetExcess(problem, options), "") << "R_k = " << r_k;
+  }
+  CantileverImpact problem;
+  ReferenceOptions huge;
+  huge.r_fref = 1e9;
+  huge.end_time_s = 0.06;
+  const std::string excess = ReferenceBudgetExcess(problem, huge);
+  EXPECT_NE(excess.find("at most 2 GB and 1e+11 mode-samples"), std::string::npos) << excess;
 }
 
 }  // namespace
