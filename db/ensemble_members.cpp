@@ -37,17 +37,8 @@ EnsembleZoneRow ZoneAt(const Statement& s, int first) {
   EnsembleZoneRow z;
   z.max_force_n = s.GetDouble(first);
   z.impacts = OptionalInt(s, first + 1);
-  std::optional<double>* rest[] = {&z.impacts_per_s,
-                                   &z.rebounds_per_impact,
-                                   &z.mean_impact_duration_s,
-                                   &z.longest_impact_duration_s,
-                                   &z.contact_time_fraction,
-                                   &z.mean_force_n,
-                                   &z.mean_force_in_contact_n,
-                                   &z.rms_force_n,
-                                   &z.impulse_n_s,
-                                   &z.wear_work_rate_w};
-  for (int i = 0; i < 10; ++i) *rest[i] = s.GetOptionalDouble(first + 2 + i);
+  int column = first + 2;
+  for (auto field : kZoneStatistics) z.*field = s.GetOptionalDouble(column++);
   return z;
 }
 

@@ -25,6 +25,20 @@ struct EnsembleZoneRow {
       rms_force_n, impulse_n_s, wear_work_rate_w;
 };
 
+// The optional statistics of EnsembleZoneRow in their column order (after max_force_n and
+// impacts): what every reader and writer of a zone row walks.
+inline constexpr std::optional<double> EnsembleZoneRow::*kZoneStatistics[] = {
+    &EnsembleZoneRow::impacts_per_s,
+    &EnsembleZoneRow::rebounds_per_impact,
+    &EnsembleZoneRow::mean_impact_duration_s,
+    &EnsembleZoneRow::longest_impact_duration_s,
+    &EnsembleZoneRow::contact_time_fraction,
+    &EnsembleZoneRow::mean_force_n,
+    &EnsembleZoneRow::mean_force_in_contact_n,
+    &EnsembleZoneRow::rms_force_n,
+    &EnsembleZoneRow::impulse_n_s,
+    &EnsembleZoneRow::wear_work_rate_w};
+
 struct EnsembleMemberRow {
   std::int64_t reference_id = 0;
   std::string member_seed;  // 0x and 16 hexadecimal digits.

@@ -50,24 +50,14 @@ std::vector<EnsembleZoneRow> ZoneRows(const SceneRun& run) {
 void EncodeZone(const EnsembleZoneRow& z, ByteWriter& out) {
   out.Put(z.max_force_n);
   out.Put(z.impacts);
-  for (const std::optional<double>* v :
-       {&z.impacts_per_s, &z.rebounds_per_impact, &z.mean_impact_duration_s,
-        &z.longest_impact_duration_s, &z.contact_time_fraction, &z.mean_force_n,
-        &z.mean_force_in_contact_n, &z.rms_force_n, &z.impulse_n_s, &z.wear_work_rate_w}) {
-    out.Put(*v);
-  }
+  for (auto field : kZoneStatistics) out.Put(z.*field);
 }
 
 EnsembleZoneRow DecodeZone(ByteReader& in) {
   EnsembleZoneRow z;
   z.max_force_n = in.Get<double>();
   z.impacts = in.GetOptional<std::int64_t>();
-  for (std::optional<double>* v :
-       {&z.impacts_per_s, &z.rebounds_per_impact, &z.mean_impact_duration_s,
-        &z.longest_impact_duration_s, &z.contact_time_fraction, &z.mean_force_n,
-        &z.mean_force_in_contact_n, &z.rms_force_n, &z.impulse_n_s, &z.wear_work_rate_w}) {
-    *v = in.GetOptional<double>();
-  }
+  for (auto field : kZoneStatistics) z.*field = in.GetOptional<double>();
   return z;
 }
 
