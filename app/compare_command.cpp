@@ -84,9 +84,7 @@ void CheckMeshCost(const ComparisonOptions& o) {
 
 // Refuses a reference (--rfref over --window) beyond the budget of reference/reference_cost.h.
 void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions& o) {
-  ReferenceOptions reference = o.reference;
-  reference.end_time_s = o.window_s;
-  const std::string excess = ReferenceBudgetExcess(problem, reference);
+  const std::string excess = ReferenceBudgetExcess(problem, o.reference, o.window_s);
   if (excess.empty()) return;
   throw InputError(fmt::format("--rfref: {:g} over the {:g} s --window: {}", o.reference.r_fref,
                                o.window_s, excess));

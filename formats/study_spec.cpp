@@ -354,9 +354,9 @@ namespace {
 // reference/reference_cost.h, naming the first such point.
 void CheckReferenceCosts(const StudySpec& spec) {
   for (const StudyPoint& point : spec.points) {
-    ReferenceOptions reference = OptionsOf(spec, point).reference;
-    reference.end_time_s = point.window_s;
-    const std::string excess = ReferenceBudgetExcess(ProblemOf(spec, point), reference);
+    const ReferenceOptions reference = OptionsOf(spec, point).reference;
+    const std::string excess =
+        ReferenceBudgetExcess(ProblemOf(spec, point), reference, point.window_s);
     if (excess.empty()) continue;
     std::ostringstream at;
     at << "rk = " << Shown(Json(point.r_k)) << " and window_s = " << Shown(Json(point.window_s))

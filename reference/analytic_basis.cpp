@@ -24,13 +24,21 @@ Eigen::Map<const Eigen::VectorXd> Weights(const BeamQuadrature& q) {
   return {q.weight.data(), static_cast<Eigen::Index>(q.weight.size())};
 }
 
+// A product of two modes oscillates at most like e^{i 2 b_max xi}; a 16-point rule on panels
+// of phase 2 b_max / panels <= 4 rad integrates it to rounding.
+constexpr int kPointsPerPanel = 16;
+int PanelsFor(double b_max) { return 8 + static_cast<int>(std::ceil(b_max / 2.0)); }
+
 }  // namespace
 
+double RootOfFrequency(const BeamProperties& beam, double f_hz) {
+  return std::sqrt(2.0 * std::numbers::pi * f_hz / beam.OmegaOf(1.0));
+}
+
+int BeamQuadratureNodes(double b_max) { return kPointsPerPanel * PanelsFor(b_max); }
+
 BeamQuadrature MakeBeamQuadrature(double b_max) {
-  // A product of two modes oscillates at most like e^{i 2 b_max xi}; a 16-point rule on panels
-  // of phase 2 b_max / panels <= 4 rad integrates it to rounding.
-  constexpr int kPointsPerPanel = 16;
-  const int panels = 8 + static_cast<int>(std::ceil(b_max / 2.0));
+  const int panels = PanelsFor(b_max);
   std::unique_ptr<gsl_integration_glfixed_table, decltype(&gsl_integration_glfixed_table_free)>
       table(gsl_integration_glfixed_table_alloc(kPointsPerPanel),
             gsl_integration_glfixed_table_free);
@@ -50,8 +58,7 @@ BeamQuadrature MakeBeamQuadrature(double b_max) {
 
 AnalyticBasis MakeAnalyticBasis(const BeamProperties& beam, double kappa, double f_max_hz,
                                 const BeamQuadrature& quadrature) {
-  // omega = b^2 sqrt(EI / (rho A L^4)), so b_max = sqrt(omega_max / omega(b = 1)).
-  const double b_max = std::sqrt(2.0 * std::numbers::pi * f_max_hz / beam.OmegaOf(1.0));
+  const double b_max = RootOfFrequency(beam, f_max_hz);
   AnalyticBasis basis;
   basis.kappa = kappa;
   for (double b : CharacteristicRoots(kappa, b_max, 1)) basis.shapes.emplace_back(b);

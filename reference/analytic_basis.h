@@ -11,6 +11,9 @@
 
 namespace shockmap {
 
+// The root b of a mode at frequency f_hz: omega = b^2 sqrt(EI / (rho A L^4)).
+double RootOfFrequency(const BeamProperties& beam, double f_hz);
+
 // Composite Gauss-Legendre rule on xi = x / L in [0, 1], fine enough to integrate products of
 // two modes with b <= b_max to rounding.
 struct BeamQuadrature {
@@ -18,6 +21,8 @@ struct BeamQuadrature {
   std::vector<double> weight;  // Sums to 1.
 };
 BeamQuadrature MakeBeamQuadrature(double b_max);
+// The number of nodes MakeBeamQuadrature(b_max) has.
+int BeamQuadratureNodes(double b_max);
 
 struct AnalyticBasis {
   double kappa = 0.0;  // k_s L^3 / EI; 0 for clamped-free.

@@ -5,12 +5,14 @@
 
 namespace shockmap {
 
+double CheckTruncation(double r_fref, double ratio) { return std::max(1.0, r_fref / ratio); }
+
 ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
                                                  const ReferenceOptions& options,
                                                  const UniformSignal& tip, double window_s,
                                                  double ratio) {
   ReferenceOptions check_options = options;
-  check_options.r_fref = std::max(1.0, options.r_fref / ratio);
+  check_options.r_fref = CheckTruncation(options.r_fref, ratio);
   check_options.end_time_s = window_s;
   const ReferenceSolution check = SolveReference(problem, check_options);
 

@@ -14,13 +14,19 @@ struct ReferenceConvergence {
   double wall_check_s = 0.0;
 };
 
-// The coarser truncation is r_fref / ratio; its error dominates the difference, so the figure
+inline constexpr double kReferenceCheckRatio = 3.0;
+
+// The truncation a reference at r_fref is checked against: r_fref / ratio, at least 1.
+double CheckTruncation(double r_fref, double ratio = kReferenceCheckRatio);
+
+// The coarser truncation is CheckTruncation(r_fref, ratio); its error dominates the difference,
+// so the figure
 // is an upper estimate of the finer reference's own error. `tip`: the reference's tip over
 // [0, window_s], as sampled for its output; the check is sampled at the same instants, so the
 // reference is not sampled twice.
 ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
                                                  const ReferenceOptions& options,
                                                  const UniformSignal& tip, double window_s,
-                                                 double ratio = 3.0);
+                                                 double ratio = kReferenceCheckRatio);
 
 }  // namespace shockmap

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "reference/analytic_basis.h"
+#include "reference/reference_convergence.h"
+
 namespace shockmap {
 namespace {
 
@@ -11,12 +14,10 @@ namespace {
 ReferenceCost OneSolution(const CantileverImpact& problem, double r_fref, double window_s,
                           int crossing_samples_per_period) {
   const double f_ref_hz = r_fref * problem.F1Hz();
-  // The roots lie ~pi apart from (i - 1/2) pi on, below b_ref (f_ref's); the quadrature, as
-  // SolveReference and MakeBeamQuadrature set it, covers b_ref + 4.
-  const double b_ref = std::sqrt(2.0 * std::numbers::pi * f_ref_hz / problem.beam.OmegaOf(1.0));
+  // The roots lie ~pi apart from (i - 1/2) pi on, below f_ref's.
   ReferenceCost c;
-  c.modes = b_ref / std::numbers::pi + 1.0;
-  c.nodes = 16.0 * (8.0 + std::ceil((b_ref + 4.0) / 2.0));
+  c.modes = RootOfFrequency(problem.beam, f_ref_hz) / std::numbers::pi + 1.0;
+  c.nodes = BeamQuadratureNodes(ReferenceQuadratureRoot(problem, r_fref));
   // The shortest retained period is at least 1 / f_ref.
   const double periods = f_ref_hz * window_s;
   c.samples = 8.0 * periods + 1.0;
@@ -30,25 +31,25 @@ ReferenceCost OneSolution(const CantileverImpact& problem, double r_fref, double
 }  // namespace
 
 ReferenceCost EstimateReferenceCost(const CantileverImpact& problem,
-                                    const ReferenceOptions& options) {
+                                    const ReferenceOptions& options, double window_s) {
   ReferenceCost c =
-      OneSolution(problem, options.r_fref, options.end_time_s, options.crossing_samples_per_period);
-  const ReferenceCost check = OneSolution(problem, options.r_fref / 3.0, options.end_time_s,
+      OneSolution(problem, options.r_fref, window_s, options.crossing_samples_per_period);
+  const ReferenceCost check = OneSolution(problem, CheckTruncation(options.r_fref), window_s,
                                           options.crossing_samples_per_period);
   c.mode_samples += check.mode_samples;
   return c;
 }
 
-std::string ReferenceBudgetExcess(const CantileverImpact& problem,
-                                  const ReferenceOptions& options) {
-  const ReferenceCost c = EstimateReferenceCost(problem, options);
+std::string ReferenceBudgetExcess(const CantileverImpact& problem, const ReferenceOptions& options,
+                                  double window_s) {
+  const ReferenceCost c = EstimateReferenceCost(problem, options, window_s);
   if (c.bytes <= kReferenceBudgetBytes && c.mode_samples <= kReferenceBudgetModeSamples) return "";
   char text[300];
   std::snprintf(text, sizeof text,
                 "the reference would need about %.2g GB and %.2g mode-samples (%.0f modes, %.2g "
                 "output samples over %g s); at most %.2g GB and %.2g mode-samples (about a "
                 "minute of one core) are allowed",
-                c.bytes / 1e9, c.mode_samples, c.modes, c.samples, options.end_time_s,
+                c.bytes / 1e9, c.mode_samples, c.modes, c.samples, window_s,
                 kReferenceBudgetBytes / 1e9, kReferenceBudgetModeSamples);
   return text;
 }

@@ -23,9 +23,10 @@ struct ReferenceCost {
   double mode_samples = 0.0;
 };
 
-// Preconditions: problem.IsValid(), options.IsValid().
+// Over [0, window_s] (options.end_time_s is not read). Preconditions: problem.IsValid(),
+// options.IsValid() but for end_time_s, window_s > 0.
 ReferenceCost EstimateReferenceCost(const CantileverImpact& problem,
-                                    const ReferenceOptions& options);
+                                    const ReferenceOptions& options, double window_s);
 
 inline constexpr double kReferenceBudgetBytes = 2e9;
 // About a minute of one core at the measured ~0.6 ns per mode-sample, everything included.
@@ -34,6 +35,7 @@ inline constexpr double kReferenceBudgetModeSamples = 1e11;
 // Empty when the reference fits the budget; otherwise the estimate against it, e.g. "the
 // reference would need about 72 GB and 3.1e+16 mode-samples (18 900 modes, 1.1e+11 output
 // samples); at most 2 GB and 1e+11 mode-samples (about a minute of one core) are allowed".
-std::string ReferenceBudgetExcess(const CantileverImpact& problem, const ReferenceOptions& options);
+std::string ReferenceBudgetExcess(const CantileverImpact& problem, const ReferenceOptions& options,
+                                  double window_s);
 
 }  // namespace shockmap

@@ -19,6 +19,10 @@
 
 namespace shockmap {
 
+double ReferenceQuadratureRoot(const CantileverImpact& problem, double r_fref) {
+  return RootOfFrequency(problem.beam, r_fref * problem.F1Hz()) + 4.0;
+}
+
 bool ReferenceOptions::IsValid(std::string* error) const {
   return RequireAtLeast("r_fref", r_fref, 1.0, error) &&
          RequirePositive("end_time_s", end_time_s, error) &&
@@ -249,8 +253,7 @@ ReferenceSolution SolveReference(const CantileverImpact& problem, const Referenc
   const BeamProperties& beam = problem.beam;
   const double f_ref_hz = options.r_fref * problem.F1Hz();
   const double kappa = 3.0 * problem.r_k;  // k_s L^3 / EI = 3 R_k
-  const double b_max = std::sqrt(2.0 * std::numbers::pi * f_ref_hz / beam.OmegaOf(1.0)) + 4.0;
-  const BeamQuadrature quad = MakeBeamQuadrature(b_max);
+  const BeamQuadrature quad = MakeBeamQuadrature(ReferenceQuadratureRoot(problem, options.r_fref));
 
   auto free = MakeConfiguration(problem, 0.0, f_ref_hz, quad);
   auto contact = MakeConfiguration(problem, kappa, f_ref_hz, quad);

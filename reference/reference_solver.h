@@ -12,6 +12,10 @@
 
 namespace shockmap {
 
+// The largest root the quadrature of a reference at f_ref / f1 = r_fref integrates exactly:
+// f_ref's, with a margin.
+double ReferenceQuadratureRoot(const CantileverImpact& problem, double r_fref);
+
 struct ReferenceOptions {
   // f_ref / f1. docs/physics.md §2: references at 1000 f1 and 3000 f1 agree over the first ~0.06 s
   // at R_k = 3000; the higher one is the default.

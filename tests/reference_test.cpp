@@ -229,7 +229,7 @@ TEST(ReferenceCost, EstimateBoundsTheSolvedReference) {
     ReferenceOptions options;
     options.r_fref = r_fref;
     options.end_time_s = 0.06;
-    const ReferenceCost cost = EstimateReferenceCost(problem, options);
+    const ReferenceCost cost = EstimateReferenceCost(problem, options, options.end_time_s);
     const ReferenceSolution solved = SolveReference(problem, options);
     const ReferenceSummary& s = solved.Summary();
     EXPECT_NEAR(cost.modes, s.n_modes_free, 2.0) << "R_k = " << r_k;
@@ -237,13 +237,13 @@ TEST(ReferenceCost, EstimateBoundsTheSolvedReference) {
     const double samples = options.end_time_s / solved.OutputStep() + 1.0;
     EXPECT_GE(cost.samples, samples) << "R_k = " << r_k;
     EXPECT_LT(cost.samples, 2.0 * samples) << "R_k = " << r_k;
-    EXPECT_EQ(ReferenceBudgetExcess(problem, options), "") << "R_k = " << r_k;
+    EXPECT_EQ(ReferenceBudgetExcess(problem, options, options.end_time_s), "") << "R_k = " << r_k;
   }
   CantileverImpact problem;
   ReferenceOptions huge;
   huge.r_fref = 1e9;
   huge.end_time_s = 0.06;
-  const std::string excess = ReferenceBudgetExcess(problem, huge);
+  const std::string excess = ReferenceBudgetExcess(problem, huge, huge.end_time_s);
   EXPECT_NE(excess.find("at most 2 GB and 1e+11 mode-samples"), std::string::npos) << excess;
 }
 

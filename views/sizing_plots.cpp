@@ -30,12 +30,6 @@ std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 double Lower(const QuantileInterval& q) { return q.lower_bounded ? q.lower : q.estimate; }
 double Upper(const QuantileInterval& q) { return q.upper_bounded ? q.upper : q.estimate; }
 
-void WriteData(const fs::path& file, const std::string& text) {
-  AtomicFile out(file);
-  out.Stream() << text;
-  out.Commit();
-}
-
 fs::path Draw(const fs::path& image, const std::string& body, int width = 900, int height = 600) {
   const std::string script = fmt::format(
       "set terminal {}\nset output {}\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n{}",
@@ -55,7 +49,7 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
                         Upper(p.sizing), p.sizing.lower_bounded ? 1 : 0,
                         p.sizing.upper_bounded ? 1 : 0);
   }
-  WriteData(data, text);
+  WriteFileAtomically(data, text);
   const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
                                         Percent(s.options.quantile), g.zones[g.hottest].name,
                                         Percent(s.options.confidence));
@@ -87,7 +81,7 @@ fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vec
   for (double f : forces) counts[std::min(bins - 1, static_cast<int>((f - *lo) / width))]++;
   std::string text = "# bin_centre_n members\n";
   for (int i = 0; i < bins; ++i) text += fmt::format("{} {}\n", *lo + (i + 0.5) * width, counts[i]);
-  WriteData(data, text);
+  WriteFileAtomically(data, text);
   const std::string title = fmt::format("{} ({}): largest force at {} over {} members", s.study,
                                         g.state, z.name, forces.size());
   std::string marks = fmt::format(
@@ -144,7 +138,7 @@ fs::path States(const EnsembleSizing& s, const fs::path& folder) {
     text += fmt::format("{} {} {} {} {}\n", i, z.sizing.estimate, Lower(z.sizing), Upper(z.sizing),
                         w ? fmt::format("{}", *w) : "NaN");
   }
-  WriteData(data, text);
+  WriteFileAtomically(data, text);
   const std::string title =
       fmt::format("{}: P{} of the hottest zone's largest force per clearance state", s.study,
                   Percent(s.options.quantile));
@@ -210,7 +204,7 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
                         GnuplotQuoted(r->state + " (" + r->zones[r->hottest].name + ")"));
     ++block;
   }
-  WriteData(data, text);
+  WriteFileAtomically(data, text);
   const std::string axis =
       numeric ? "set logscale x\nset xlabel " +
                     GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
