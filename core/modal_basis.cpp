@@ -65,7 +65,8 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz) {
 
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n) {
   ModalBasis all = AllModes(model);
-  return n >= all.NumModes() ? all : FirstModes(all, n);
+  if (n >= all.NumModes()) return all;  // Moved, not copied.
+  return FirstModes(all, n);
 }
 
 ModalBasis ModesBelow(const ModalBasis& basis, double f_trunc_hz) {
