@@ -54,19 +54,15 @@ double LowerMedian(std::vector<double> v) {
 
 }  // namespace
 
-RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOptions& options,
-                         const RunSummary& first, double min_total_s, int min_repeats,
-                         int max_repeats) {
+RunTiming TimeRepeatedly(const ImpactModel& model, Scheme scheme, const TransientOptions& run,
+                         const RunSummary& first, const RepeatedTiming& timing) {
   std::vector<double> wall{first.wall_s}, cpu{first.cpu_s};
   double total = first.wall_s;
-  const ImpactModel model =
-      BuildImpactModel(problem, options.scheme, options.r_ftrunc, options.n_elements);
-  const TransientOptions run = NumericalRun(options, model, RecordedHistories::kScored);
   auto runs = [&] { return static_cast<int>(wall.size()); };
-  while ((total < min_total_s || runs() < min_repeats) && runs() < max_repeats) {
+  while ((total < timing.min_total_s || runs() < timing.min_repeats) &&
+         runs() < timing.max_repeats) {
     const RunSummary s =
-        RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run)
-            .summary;
+        RunTransient(*model.system, NewmarkParametersOf(scheme), model.x0, model.v0, run).summary;
     wall.push_back(s.wall_s);
     cpu.push_back(s.cpu_s);
     total += s.wall_s;
@@ -77,7 +73,8 @@ RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOption
 ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
                                        const ComparisonOptions& options,
                                        std::shared_ptr<const ReferenceRun> reference,
-                                       RecordedHistories recorded) {
+                                       RecordedHistories recorded,
+                                       std::optional<RepeatedTiming> timing) {
   ComparisonResult result;
   result.srf_definition = options.srf_definition;
   const ImpactModel model =
@@ -98,6 +95,12 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   result.histories =
       RunTransient(*model.system, NewmarkParametersOf(options.scheme), model.x0, model.v0, run);
   result.numerical = result.histories.summary;
+  if (timing && result.numerical.steps_taken == result.numerical.steps_requested &&
+      result.numerical.cpu_s < timing->min_total_s) {
+    const RunTiming t = TimeRepeatedly(model, options.scheme, run, result.numerical, *timing);
+    result.numerical.wall_s = t.wall_s;
+    result.numerical.cpu_s = t.cpu_s;
+  }
   result.status = result.numerical.status;
   result.message = result.numerical.message;
   // An unstable run reached its end: it is scored, and fails the criteria by its status.

@@ -58,7 +58,9 @@ struct ComparisonResult {
   int n_elements = 0;
   int n_dofs = 0;
   StabilityBounds bounds;
-  RunSummary numerical;  // dt asked / used, steps, wall and CPU time.
+  // dt asked / used, steps, wall and CPU time (lower medians of repeated runs when
+  // ScoreAgainstReference was given a RepeatedTiming).
+  RunSummary numerical;
   std::vector<Shock> shocks_numerical;
   std::shared_ptr<const ReferenceRun> reference;  // Shared by every point of the same problem.
   // Tip displacement and contact force; tip velocity and energies too when recorded kAll.
@@ -74,27 +76,37 @@ ComparisonResult RunComparison(const CantileverImpact& problem, const Comparison
 TransientOptions NumericalRun(const ComparisonOptions& options, const ImpactModel& model,
                               RecordedHistories recorded);
 
-// Scores a numerical run against a reference computed for the same problem and window.
-ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
-                                       const ComparisonOptions& options,
-                                       std::shared_ptr<const ReferenceRun> reference,
-                                       RecordedHistories recorded = RecordedHistories::kAll);
-
-// The wall and CPU time of a point's numerical run as the median of `repeats` runs of the same
-// model, so that the cost of runs of a few microseconds is not one sample of timer noise.
+// The wall and CPU time of a point's numerical run as the lower median of `repeats` runs of the
+// same model, so that the cost of runs of a few microseconds is not one sample of timer noise.
 struct RunTiming {
   double wall_s = 0.0;
   double cpu_s = 0.0;
   int repeats = 1;
 };
 
-// Runs the numerical run of (problem, options), recording RecordedHistories::kScored as a
-// study's scored run does, again, model built once, until at least
-// min_repeats runs were made and their total wall time reaches min_total_s, or max_repeats
-// runs were made (the first one included, given as `first`); the median of all, so that a run
-// the scheduler preempted once does not set the cost. Preconditions as RunComparison's.
-RunTiming TimeRepeatedly(const CantileverImpact& problem, const ComparisonOptions& options,
-                         const RunSummary& first, double min_total_s, int min_repeats,
-                         int max_repeats);
+// How a short run is timed again: a run of less CPU time than min_total_s is run again on the
+// same model until at least min_repeats runs (the first included) total min_total_s of wall
+// time, or max_repeats runs were made.
+struct RepeatedTiming {
+  double min_total_s = 0.0;
+  int min_repeats = 1;
+  int max_repeats = 1;
+};
+
+// Scores a numerical run against a reference computed for the same problem and window. With
+// `timing`, a run that reached its end and took less CPU time than timing->min_total_s is timed
+// again on its own model (TimeRepeatedly) and `numerical` holds the lower medians of its wall
+// and CPU times.
+ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
+                                       const ComparisonOptions& options,
+                                       std::shared_ptr<const ReferenceRun> reference,
+                                       RecordedHistories recorded = RecordedHistories::kAll,
+                                       std::optional<RepeatedTiming> timing = std::nullopt);
+
+// Runs `run` on `model` again until timing's totals are reached (the first run, given as
+// `first`, included); the lower median of all, so that a run the scheduler preempted once does
+// not set the cost.
+RunTiming TimeRepeatedly(const ImpactModel& model, Scheme scheme, const TransientOptions& run,
+                         const RunSummary& first, const RepeatedTiming& timing);
 
 }  // namespace shockmap

@@ -8,14 +8,12 @@
 namespace shockmap {
 namespace {
 
-// A run of less CPU time than kTimedTotal_s is timed again until its runs total kTimedTotal_s
-// of wall time and number at least kMinTimedRuns (at most kMaxTimedRuns), and the lower median
-// is stored: single wall timings of runs of ~10 us differ a thousandfold between two runs of a
-// study on a loaded machine, one preempted for 10 ms (docs/physics.md §4.4). The budget is
-// about two of a typical point's runs, so that timing does not dominate a study's cost.
-constexpr double kTimedTotal_s = 5e-4;
-constexpr int kMinTimedRuns = 2;
-constexpr int kMaxTimedRuns = 101;
+// A run of less CPU time than 0.5 ms is timed again until 2 runs total 0.5 ms of wall time
+// (at most 101 runs), and the lower median is stored: single wall timings of runs of ~10 us
+// differ a thousandfold between two runs of a study on a loaded machine, one preempted for
+// 10 ms (docs/physics.md §4.4). The budget is about two of a typical point's runs, so that
+// timing does not dominate a study's cost.
+constexpr RepeatedTiming kShortRunTiming{5e-4, 2, 101};
 
 ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   ScoreRow s;
@@ -147,17 +145,10 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
   try {
     const ComparisonResult r =
         ScoreAgainstReference(ProblemOf(spec_, point), OptionsOf(spec_, point), reference.run,
-                              RecordedHistories::kScored);
+                              RecordedHistories::kScored, kShortRunTiming);
     out.status = r.status;
     out.message = r.message;
     out.score = ToScoreRow(r, reference_id);
-    if (r.numerical.steps_taken == r.numerical.steps_requested &&
-        r.numerical.cpu_s < kTimedTotal_s) {
-      const RunTiming t = TimeRepeatedly(ProblemOf(spec_, point), OptionsOf(spec_, point),
-                                         r.numerical, kTimedTotal_s, kMinTimedRuns, kMaxTimedRuns);
-      out.score->wall_s = t.wall_s;
-      out.score->cpu_s = t.cpu_s;
-    }
   } catch (const std::exception& e) {
     out.message = e.what();
   }

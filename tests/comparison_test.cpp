@@ -174,20 +174,20 @@ TEST(RunTiming, ShortRunsAreTimedRepeatedlyUntilTheTotal) {
   // runs that takes depends on the machine; that it takes more than one does not).
   RunSummary instant = first;
   instant.wall_s = 0.0;
-  const RunTiming t = TimeRepeatedly(problem, o, instant, 0.005, 1, 1000);
+  const RunTiming t = TimeRepeatedly(model, o.scheme, run, instant, {0.005, 1, 1000});
   EXPECT_GT(t.repeats, 1);
   EXPECT_GT(t.wall_s, 0.0) << t.repeats << " runs, median " << t.wall_s;
-  const RunTiming once = TimeRepeatedly(problem, o, first, 0.0, 1, 1000);
+  const RunTiming once = TimeRepeatedly(model, o.scheme, run, first, {0.0, 1, 1000});
   EXPECT_EQ(once.repeats, 1);
   EXPECT_EQ(once.wall_s, first.wall_s);
   // A first run that took the whole budget (preempted) is still run the minimum number of times.
   RunSummary preempted = first;
   preempted.wall_s = 1.0;
-  const RunTiming five = TimeRepeatedly(problem, o, preempted, 0.005, 5, 1000);
+  const RunTiming five = TimeRepeatedly(model, o.scheme, run, preempted, {0.005, 5, 1000});
   EXPECT_EQ(five.repeats, 5);
   EXPECT_LT(five.wall_s, 1.0);
   // Of two runs, the faster: the preempted one does not set the cost.
-  const RunTiming two = TimeRepeatedly(problem, o, preempted, 0.0, 2, 1000);
+  const RunTiming two = TimeRepeatedly(model, o.scheme, run, preempted, {0.0, 2, 1000});
   EXPECT_EQ(two.repeats, 2);
   EXPECT_LT(two.wall_s, 1.0);
 }
