@@ -5,7 +5,13 @@
 // The paper's problem is equal bit for bit in everything but its scores: the reference is
 // sampled by a rotation recurrence since (docs/performance.md, "References and study points"),
 // within ~1e-14 of the exact sum it was evaluated with, which moves Err by up to 2e-14 and SRf
-// by 1e-14 relative; they are compared to 1e-12. Scene studies are equal in status, size and steps,
+// by 1e-14 relative; they are compared to 1e-12. At R_k = 1e5 the stiff contact amplifies
+// last-digit differences of the math library: the unchanged code of 6310af1, which met 1e-12 on
+// an earlier machine, moves Err by up to 6.0e-12 and SRf by about 3e-12 relative on a later one
+// (all 28 points at R_k = 1e5 and no other, the same with 1 or 2 jobs; disabling glibc's FMA and
+// AVX2 variants with GLIBC_TUNABLES changes which points differ), so those rows are compared to
+// kStiffTolerance (1e-10).
+// Scene studies are equal in status, size and steps,
 // and their forces (SRf, the largest force, the first shock's peak) to 1e-12 relative: the one
 // reduced model sums a zone's displacement in the order the canonical model did, which moves
 // the last digit of a sum over a bundle's modes. On the stiff-wire points (1e6 N/m) the rattling
@@ -101,6 +107,10 @@ void ExpectClose(const std::string& actual, const std::string& expected, double 
       << what << ": " << actual << " vs " << expected;
 }
 
+// The stiffness ratio from which the math library's last digits show in the scores (see above).
+constexpr double kStiffRk = 1e5;
+constexpr double kStiffTolerance = 1e-10;
+
 class RefactorParity : public testing::TempDirTest {};
 
 // The fixture predates the status 'unstable' (docs/physics.md §3.1): the points it stores as
@@ -130,13 +140,15 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheCodeBeforeTheEngineAndItsU
     for (int exact : {0, 1, 2, 3, 4, 5, 8, 9}) {
       EXPECT_EQ(a[exact], e[exact]) << expected[i] << ", energy ratio " << ratio;
     }
+    const double tolerance = std::stod(e[2]) >= kStiffRk ? kStiffTolerance : 1e-12;
     for (int score : {6, 7}) {
       ASSERT_EQ(a[score] == "NULL", e[score] == "NULL") << expected[i];
       if (e[score] == "NULL") continue;
       if (score == 6) {
-        EXPECT_LE(std::abs(std::stod(a[6]) - std::stod(e[6])), 1e-12) << "Err of " << expected[i];
+        EXPECT_LE(std::abs(std::stod(a[6]) - std::stod(e[6])), tolerance)
+            << "Err of " << expected[i];
       } else {
-        ExpectClose(a[7], e[7], 1e-12, "SRf of " + expected[i]);
+        ExpectClose(a[7], e[7], tolerance, "SRf of " + expected[i]);
       }
     }
   }
