@@ -1,0 +1,85 @@
+// Hangs, resources and signals: a database whose views another program redefined, a database
+// path that is a FIFO or a device, an ensemble window of more steps than any run may take, and
+// a signal or a second run while pictures are drawn. Each must end promptly with a clear word,
+// exit 2, and leave what was on disk as it was.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "db/sqlite_handle.h"
+#include "tests/run_command.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+using testing::Outcome;
+using testing::ReadBytes;
+using testing::RunShell;
+using testing::RunShockmap;
+using testing::WriteText;
+
+// Eight explicit points with cheap references: a fraction of a second in all.
+constexpr const char* kSmallStudy = R"({
+  "name": "small",
+  "scoring": {"window_s": 0.02, "reference": {"r_fref_min": 300, "r_fref_per_sqrt_rk": 3}},
+  "grids": [{"rk": [10, 100, 1000, 3000], "rftrunc": [10, 30]}]
+})";
+
+// `shockmap ARGS`, ended by SIGKILL after `seconds` so that a hang fails the test, not the suite.
+Outcome RunBounded(const std::string& args, int seconds = 20) {
+  return RunShell("timeout -s KILL " + std::to_string(seconds) + " " + SHOCKMAP_BIN + " " + args);
+}
+
+
+class Resources : public testing::TempDirTest {
+ protected:
+  // A study database of kSmallStudy, computed.
+  std::string SmallDatabase() {
+    const std::string spec = Path("study.json"), db = Path("s.db");
+    WriteText(spec, kSmallStudy);
+    const Outcome run = RunShockmap("study run " + spec + " --db " + db + " --quiet");
+    EXPECT_EQ(run.exit_code, 0) << run.output;
+    return db;
+  }
+};
+
+TEST_F(Resources, FifoDatabaseIsRefusedWithoutOpeningIt) {
+  const std::string fifo = Path("fifo.db");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  WriteText(Path("study.json"), kSmallStudy);
+  for (const std::string& command : std::vector<std::string>{
+           "sizing", "study status", "criteria derive", "map", "report --out " + Path("r"),
+           "query 'SELECT 1'", "study run " + Path("study.json") + " --quiet"}) {
+    const Outcome out = RunBounded(command + " --db " + fifo, 10);
+    EXPECT_EQ(out.exit_code, 2) << command << ": " << out.output;
+    EXPECT_NE(out.output.find(fifo + ": not a regular file"), std::string::npos)
+        << command << ": " << out.output;
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), {}), 2);  // fifo, study
+}
+
+TEST_F(Resources, DeviceDatabaseIsRefusedBeforeSqliteWritesBesideIt) {
+  WriteText(Path("study.json"), kSmallStudy);
+  const bool journal_before = std::filesystem::exists("/dev/null-journal");
+  const Outcome out = RunBounded("study run " + Path("study.json") + " --db /dev/null --quiet");
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("/dev/null: not a regular file"), std::string::npos) << out.output;
+  if (!journal_before && std::filesystem::exists("/dev/null-journal")) {
+    std::filesystem::remove("/dev/null-journal");
+    ADD_FAILURE() << "the run created /dev/null-journal";
+  }
+}
+
+}  // namespace
+}  // namespace shockmap
