@@ -1,5 +1,6 @@
 #include "db/schema.h"
 
+#include <map>
 #include <string>
 
 #include "db/scene_points.h"
@@ -447,6 +448,45 @@ int PragmaInt(Connection& db, const char* pragma) {
   return s.Step() ? static_cast<int>(s.GetInt(0)) : 0;
 }
 
+// The definition of every view (and trigger: none) a new database gets, by name, as SQLite
+// stores them: read once from a database migrated in memory.
+const std::map<std::string, std::string>& FreshViewsAndTriggers() {
+  static const std::map<std::string, std::string> fresh = [] {
+    Connection memory(":memory:", Connection::Mode::kReadWriteCreate);
+    for (const char* migration : kMigrations) memory.Execute(migration);
+    std::map<std::string, std::string> sql;
+    Statement s =
+        memory.Prepare("SELECT name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
+    while (s.Step()) sql[s.GetText(0)] = s.GetText(1);
+    return sql;
+  }();
+  return fresh;
+}
+
+// True when `sql` is how this build defines `name` in `file`: as in a new database or, for
+// scene_params, with the columns of the parameter paths stored in the file.
+bool IsOurs(Connection& file, const std::string& name, const std::string& sql) {
+  const auto& fresh = FreshViewsAndTriggers();
+  const auto our = fresh.find(name);
+  if (our != fresh.end() && our->second == sql) return true;
+  return name == "scene_params" && sql == SceneParamsViewSql(file);
+}
+
+// Throws unless every view and trigger of the file is one this build writes, as it writes it:
+// the commands read the views, so a view another program redefined (an endless recursive
+// query, say) would hang them or feed them other rows, and a trigger would run inside writes.
+void CheckViewsAndTriggersAreOurs(Connection& db) {
+  Statement s =
+      db.Prepare("SELECT type, name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
+  while (s.Step()) {
+    if (!IsOurs(db, s.GetText(1), s.GetText(2))) {
+      throw DbError(db.Path() + ": " + s.GetText(0) + " " + s.GetText(1) +
+                    " is not the one shockmap writes (another program defined or changed "
+                    "it); refusing to read the file");
+    }
+  }
+}
+
 // Throws unless the file is empty, or ours at a version this build can read.
 int CheckedVersion(Connection& db) {
   {
@@ -471,6 +511,7 @@ int CheckedVersion(Connection& db) {
                   std::to_string(version) + ", this build reads up to " +
                   std::to_string(kSchemaVersion) + ")");
   }
+  if (version == kSchemaVersion) CheckViewsAndTriggersAreOurs(db);
   return version;
 }
 
@@ -509,6 +550,7 @@ void MigrateToCurrent(Connection& db) {
   // The migrations write scene_params without parameter columns: points already stored get
   // theirs at once.
   if (from > 0 && from < kSchemaVersion) RefreshSceneParamsView(db);
+  CheckViewsAndTriggersAreOurs(db);
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   t.Commit();

@@ -53,6 +53,65 @@ class Resources : public testing::TempDirTest {
   }
 };
 
+// `results` redefined by another program: rows only after an endless recursive query.
+constexpr const char* kEndlessResults = R"sql(
+DROP VIEW results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id
+WHERE EXISTS (WITH RECURSIVE n(i) AS (SELECT 1 UNION ALL SELECT i + 1 FROM n)
+              SELECT 1 FROM n WHERE i < 0);
+)sql";
+
+TEST_F(Resources, RedefinedViewIsRefusedInsteadOfFollowed) {
+  const std::string db = SmallDatabase();
+  Connection(db, Connection::Mode::kReadWriteCreate).Execute(kEndlessResults);
+  const std::string before = ReadBytes(db);
+  for (const std::string& command : std::vector<std::string>{
+           "criteria derive small", "map small --out " + Path("map.png"), "cost small",
+           "report small --out " + Path("report"), "study status"}) {
+    const auto start = std::chrono::steady_clock::now();
+    const Outcome out = RunBounded(command + " --db " + db);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(out.exit_code, 2) << command << ": " << out.output;
+    EXPECT_NE(out.output.find(db + ": view results is not the one shockmap writes"),
+              std::string::npos)
+        << command << ": " << out.output;
+    EXPECT_LT(seconds, 10.0) << command;
+  }
+  EXPECT_FALSE(std::filesystem::exists(Path("map.png")));
+  EXPECT_FALSE(std::filesystem::exists(Path("report/index.html")));
+  EXPECT_TRUE(ReadBytes(db) == before) << db << " changed";
+}
+
+TEST_F(Resources, ForeignTriggerIsRefusedBeforeAnyWrite) {
+  const std::string db = SmallDatabase();
+  Connection(db, Connection::Mode::kReadWriteCreate)
+      .Execute(
+          "CREATE TRIGGER erase AFTER INSERT ON runs BEGIN DELETE FROM scores; "
+          "DELETE FROM points; END");
+  const std::string before = ReadBytes(db);
+  const Outcome out = RunBounded("study run " + Path("study.json") + " --db " + db + " --quiet");
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find(db + ": trigger erase is not the one shockmap writes"),
+            std::string::npos)
+      << out.output;
+  EXPECT_TRUE(ReadBytes(db) == before) << db << " changed";
+}
+
 TEST_F(Resources, FifoDatabaseIsRefusedWithoutOpeningIt) {
   const std::string fifo = Path("fifo.db");
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
