@@ -141,7 +141,10 @@ Statement& Statement::Bind(int i, std::string_view v) {
 }
 
 Statement& Statement::Bind(int i, const std::vector<double>& blob) {
-  Check(sqlite3_bind_blob64(stmt_, i, blob.data(), blob.size() * sizeof(double), SQLITE_TRANSIENT));
+  // An empty vector is an empty blob: a null data() would bind NULL.
+  Check(blob.empty() ? sqlite3_bind_zeroblob(stmt_, i, 0)
+                     : sqlite3_bind_blob64(stmt_, i, blob.data(), blob.size() * sizeof(double),
+                                           SQLITE_TRANSIENT));
   return *this;
 }
 

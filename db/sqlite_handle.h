@@ -68,6 +68,7 @@ class Statement {
   Statement& Bind(int i, int v) { return Bind(i, static_cast<std::int64_t>(v)); }
   Statement& Bind(int i, std::string_view v);
   Statement& Bind(int i, const char* v) { return Bind(i, std::string_view(v)); }
+  // The doubles as a blob (an empty vector: an empty blob, not NULL).
   Statement& Bind(int i, const std::vector<double>& blob);
   Statement& BindNull(int i);
   Statement& BindValue(int i, const SqlValue& v);

@@ -140,5 +140,20 @@ TEST_F(Resources, DeviceDatabaseIsRefusedBeforeSqliteWritesBesideIt) {
   }
 }
 
+TEST_F(Resources, EnsembleWindowOfTooManyStepsIsRefusedBeforeAnythingRuns) {
+  const std::string spec = Path("long.json"), db = Path("long.db");
+  WriteText(spec, std::string(R"({"kind": "scene_ensemble", "name": "long", "scene": ")") +
+                      SHOCKMAP_SOURCE_DIR + R"(/scenes/bundle_row.json", "members": 3,
+      "seed": 11, "window_s": 1e4,
+      "draws": {"bundle.wire.stiffness_n_per_m": {"lognormal": {"sigma": 0.2}}}})");
+  const Outcome out = RunBounded("study run " + spec + " --db " + db + " --quiet");
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  for (const std::string& expected : std::vector<std::string>{
+           spec + ": window_s: 10000.0 s in state \"scene\"", "steps: must be <= 100000000"}) {
+    EXPECT_NE(out.output.find(expected), std::string::npos) << expected << "\n" << out.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(db));
+}
+
 }  // namespace
 }  // namespace shockmap
