@@ -40,6 +40,15 @@ Outcome RunBounded(const std::string& args, int seconds = 20) {
   return RunShell("timeout -s KILL " + std::to_string(seconds) + " " + SHOCKMAP_BIN + " " + args);
 }
 
+// The hidden temporary files shockmap leaves in `dir` (".shockmap-PID-N.tmp").
+std::vector<std::string> Temporaries(const std::filesystem::path& dir) {
+  std::vector<std::string> found;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (name.starts_with(".shockmap-")) found.push_back(entry.path().string());
+  }
+  return found;
+}
 
 class Resources : public testing::TempDirTest {
  protected:
@@ -153,6 +162,72 @@ TEST_F(Resources, EnsembleWindowOfTooManyStepsIsRefusedBeforeAnythingRuns) {
     EXPECT_NE(out.output.find(expected), std::string::npos) << expected << "\n" << out.output;
   }
   EXPECT_FALSE(std::filesystem::exists(db));
+}
+
+// A stand-in for gnuplot that starts drawing (a few bytes into the file RunGnuplot names by -e,
+// when it does) and never finishes; it writes its pid to PID_FILE and then touches STARTED.
+constexpr const char* kStuckGnuplot = R"(#!/bin/sh
+echo $$ > "$PID_FILE"
+case "$2" in shockmap_output*)
+  out=$(printf '%s' "$2" | sed "s/^[^']*'\(.*\)'$/\1/")
+  printf 'partial' > "$out";;
+esac
+touch "$STARTED"
+exec sleep 60
+)";
+
+TEST_F(Resources, SignalWhileDrawingKeepsTheGoodImageAndNoTemporary) {
+  const std::string db = SmallDatabase();
+  const std::filesystem::path out_dir = dir_ / "maps", image = out_dir / "map.png";
+  const Outcome first = RunShockmap("map small --db " + db + " --out " + image.string());
+  ASSERT_EQ(first.exit_code, 0) << first.output;
+  const std::string good = ReadBytes(image);
+
+  const std::filesystem::path bin = dir_ / "bin";
+  std::filesystem::create_directories(bin);
+  WriteText((bin / "gnuplot").string(), kStuckGnuplot);
+  std::filesystem::permissions(bin / "gnuplot", std::filesystem::perms::owner_all);
+  const std::string started = Path("started"), pid_file = Path("gnuplot.pid");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setenv("PATH", (bin.string() + ":" + std::getenv("PATH")).c_str(), 1);
+    setenv("STARTED", started.c_str(), 1);
+    setenv("PID_FILE", pid_file.c_str(), 1);
+    freopen(Path("log").c_str(), "w", stdout);
+    dup2(fileno(stdout), fileno(stderr));
+    execl(SHOCKMAP_BIN, SHOCKMAP_BIN, "map", "small", "--db", db.c_str(), "--out", image.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!std::filesystem::exists(started) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(std::filesystem::exists(started)) << ReadBytes(Path("log"));
+  ASSERT_EQ(::kill(pid, SIGTERM), 0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+
+  const pid_t gnuplot = std::atoi(ReadBytes(pid_file).c_str());
+  const bool gnuplot_ended = gnuplot > 0 && ::kill(gnuplot, 0) != 0;
+  if (!gnuplot_ended && gnuplot > 0) ::kill(gnuplot, SIGKILL);
+  EXPECT_TRUE(gnuplot_ended) << "gnuplot " << gnuplot << " outlived shockmap";
+  EXPECT_TRUE(ReadBytes(image.string()) == good) << "the good map was not kept";
+  EXPECT_EQ(Temporaries(out_dir), std::vector<std::string>{});
+}
+
+TEST_F(Resources, TwoReportsIntoOneFolderBothSucceed) {
+  const std::string db = SmallDatabase();
+  const std::string report = Path("report");
+  const std::string command =
+      std::string(SHOCKMAP_BIN) + " report small --db " + db + " --out " + report;
+  const Outcome both = RunShell("(" + command + " > " + Path("a.log") + " 2>&1; echo a=$?) & (" +
+                                command + " > " + Path("b.log") + " 2>&1; echo b=$?); wait");
+  EXPECT_NE(both.output.find("a=0"), std::string::npos) << both.output << ReadBytes(Path("a.log"));
+  EXPECT_NE(both.output.find("b=0"), std::string::npos) << both.output << ReadBytes(Path("b.log"));
+  EXPECT_TRUE(std::filesystem::exists(report + "/index.html"));
+  EXPECT_EQ(Temporaries(report), std::vector<std::string>{});
 }
 
 }  // namespace
