@@ -439,6 +439,12 @@ FROM ensemble_members p
 JOIN studies st ON st.study_id = p.study_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 8 -> 9: a member refers to its nominal run by its state's name, not by the nominal run's
+    // key, which holds the whole scene: a million members repeated it into gigabytes. The key
+    // stays, once, in ensemble_references.
+    R"sql(
+UPDATE ensemble_members SET reference_key = state;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);

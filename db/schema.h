@@ -5,7 +5,7 @@
 
 namespace shockmap {
 
-inline constexpr int kSchemaVersion = 8;
+inline constexpr int kSchemaVersion = 9;
 // PRAGMA application_id of every shockmap database ("SHMP"): tells ours from a foreign file.
 inline constexpr int kApplicationId = 0x53484D50;
 

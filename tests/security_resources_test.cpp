@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "db/sqlite_handle.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
@@ -162,6 +163,37 @@ TEST_F(Resources, EnsembleWindowOfTooManyStepsIsRefusedBeforeAnythingRuns) {
     EXPECT_NE(out.output.find(expected), std::string::npos) << expected << "\n" << out.output;
   }
   EXPECT_FALSE(std::filesystem::exists(db));
+}
+
+// The planar bundle over 5 ms, one state: a member takes a few hundredths of a second.
+std::string TinyEnsemble(int members) {
+  return std::string(R"({"kind": "scene_ensemble", "name": "tiny", "scene": ")") +
+         SHOCKMAP_SOURCE_DIR + R"(/scenes/bundle_row.json", "members": )" +
+         std::to_string(members) + R"(, "seed": 11, "window_s": 0.005,
+      "draws": {"bundle.wire.stiffness_n_per_m": {"lognormal": {"sigma": 0.2}}}})";
+}
+
+// Each member row used to repeat its nominal run's key, the whole scene as JSON (2.5 kB for the
+// bundle): a million members wrote gigabytes before computing anything.
+TEST_F(Resources, EnsembleMembersReferToTheirNominalRunByItsStateOnly) {
+  const std::string spec = Path("tiny.json"), db = Path("tiny.db");
+  WriteText(spec, TinyEnsemble(2));
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+  WriteText(spec, TinyEnsemble(3));
+  const Outcome again = RunShockmap("study run " + spec + " --db " + db);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("references   0 computed, 1 reused"), std::string::npos)
+      << again.output;
+  EXPECT_EQ(testing::Rows(db, "SELECT DISTINCT reference_key FROM ensemble_members"),
+            std::vector<std::string>{"scene"});
+  EXPECT_EQ(testing::Rows(db,
+                          "SELECT count(*), max(length(reference_key)) > 1000 FROM "
+                          "ensemble_references"),
+            std::vector<std::string>{"1|1"});
+  const Outcome sizing = RunShockmap("sizing --db " + db + " --format json");
+  ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
+  EXPECT_NE(sizing.output.find("\"members\": 3"), std::string::npos) << sizing.output;
+  EXPECT_EQ(sizing.output.find("\"nominal_n\": null"), std::string::npos) << sizing.output;
 }
 
 // A stand-in for gnuplot that starts drawing (a few bytes into the file RunGnuplot names by -e,
