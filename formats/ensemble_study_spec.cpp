@@ -295,8 +295,9 @@ std::string Where(const EnsembleStudySpec& spec, int state, int setting) {
   return " in state \"" + spec.states[state].name + "\", setting " + spec.settings[setting].dump();
 }
 
-// Every state and setting at the draws' centres, and each draw at both its bounds: each scene
-// valid and affordable (a member's dt follows its draws through the stability bound).
+// Every state and setting at the draws' centres and with each draw at both its bounds: each
+// scene valid and affordable (a member's dt follows its setting and its draws through the
+// stability bound).
 void CheckScenes(const EnsembleStudySpec& spec) {
   const std::vector<double> centres = Centres(spec);
   auto check = [&](int state, int setting, const std::vector<double>& values,
@@ -313,13 +314,13 @@ void CheckScenes(const EnsembleStudySpec& spec) {
   for (int state = 0; state < static_cast<int>(spec.states.size()); ++state) {
     for (int setting = 0; setting < static_cast<int>(spec.settings.size()); ++setting) {
       check(state, setting, centres, "");
-    }
-    for (std::size_t i = 0; i < spec.draws.size(); ++i) {
-      for (const double bound : {spec.draws[i].min, spec.draws[i].max}) {
-        std::vector<double> values = centres;
-        values[i] = bound;
-        check(state, spec.refined, values,
-              ", draws." + spec.draws[i].path + " at its bound " + Shown(Json(bound)));
+      for (std::size_t i = 0; i < spec.draws.size(); ++i) {
+        for (const double bound : {spec.draws[i].min, spec.draws[i].max}) {
+          std::vector<double> values = centres;
+          values[i] = bound;
+          check(state, setting, values,
+                ", draws." + spec.draws[i].path + " at its bound " + Shown(Json(bound)));
+        }
       }
     }
   }
