@@ -15,7 +15,7 @@ namespace shockmap {
 void InstallSignalCleanup();
 
 // While alive, `path` is removed when a signal ends the process; destroyed, it forgets the path
-// (it never removes the file itself). At most kSlots files and children at once are registered;
+// (it never removes the file itself). At most 64 files and 64 children are registered at once;
 // past that a registration is a no-op.
 class RemovedOnSignal {
  public:
