@@ -2,6 +2,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 
 #include "db/scene_points.h"
 
@@ -478,15 +479,16 @@ bool IsOurs(Connection& file, const std::string& name, const std::string& sql) {
   return name == "scene_params" && sql == SceneParamsViewSql(file);
 }
 
-// Throws unless every view and trigger of the file is one this build writes, as it writes it:
-// the commands read the views, so a view another program redefined (an endless recursive
-// query, say) would hang them or feed them other rows, and a trigger would run inside writes.
-void CheckViewsAndTriggersAreOurs(Connection& db) {
-  Statement s =
-      db.Prepare("SELECT type, name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
+// Throws unless every entry of the file's schema of type `type` ("view" or "trigger") is one this
+// build writes, as it writes it: the commands read the views, so a view another program
+// redefined (an endless recursive query, say) would hang them or feed them other rows, and a
+// trigger (shockmap writes none) would run inside a write, a migration's included.
+void CheckEntriesAreOurs(Connection& db, std::string_view type) {
+  Statement s = db.Prepare("SELECT name, sql FROM sqlite_schema WHERE type = ?");
+  s.Bind(1, type);
   while (s.Step()) {
-    if (!IsOurs(db, s.GetText(1), s.GetText(2))) {
-      throw DbError(db.Path() + ": " + s.GetText(0) + " " + s.GetText(1) +
+    if (!IsOurs(db, s.GetText(0), s.GetText(1))) {
+      throw DbError(db.Path() + ": " + std::string(type) + " " + s.GetText(0) +
                     " is not the one shockmap writes (another program defined or changed "
                     "it); refusing to read the file");
     }
@@ -517,7 +519,8 @@ int CheckedVersion(Connection& db) {
                   std::to_string(version) + ", this build reads up to " +
                   std::to_string(kSchemaVersion) + ")");
   }
-  if (version == kSchemaVersion) CheckViewsAndTriggersAreOurs(db);
+  CheckEntriesAreOurs(db, "trigger");
+  if (version == kSchemaVersion) CheckEntriesAreOurs(db, "view");  // Older ones are rewritten.
   return version;
 }
 
@@ -556,7 +559,7 @@ void MigrateToCurrent(Connection& db) {
   // The migrations write scene_params without parameter columns: points already stored get
   // theirs at once.
   if (from > 0 && from < kSchemaVersion) RefreshSceneParamsView(db);
-  CheckViewsAndTriggersAreOurs(db);
+  CheckEntriesAreOurs(db, "view");
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   t.Commit();

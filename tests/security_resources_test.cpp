@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "db/schema.h"
 #include "db/sqlite_handle.h"
 #include "tests/database_rows.h"
 #include "tests/run_command.h"
@@ -107,19 +108,24 @@ TEST_F(Resources, RedefinedViewIsRefusedInsteadOfFollowed) {
   EXPECT_TRUE(ReadBytes(db) == before) << db << " changed";
 }
 
+// A trigger runs inside the writer's statements, the migrations' included: refused at the
+// current schema version and before migrating an older file.
 TEST_F(Resources, ForeignTriggerIsRefusedBeforeAnyWrite) {
   const std::string db = SmallDatabase();
-  Connection(db, Connection::Mode::kReadWriteCreate)
-      .Execute(
-          "CREATE TRIGGER erase AFTER INSERT ON runs BEGIN DELETE FROM scores; "
-          "DELETE FROM points; END");
-  const std::string before = ReadBytes(db);
-  const Outcome out = RunBounded("study run " + Path("study.json") + " --db " + db + " --quiet");
-  EXPECT_EQ(out.exit_code, 2) << out.output;
-  EXPECT_NE(out.output.find(db + ": trigger erase is not the one shockmap writes"),
-            std::string::npos)
-      << out.output;
-  EXPECT_TRUE(ReadBytes(db) == before) << db << " changed";
+  for (const int version : {kSchemaVersion, kSchemaVersion - 1}) {
+    Connection(db, Connection::Mode::kReadWriteCreate)
+        .Execute(
+            "DROP TRIGGER IF EXISTS erase; CREATE TRIGGER erase AFTER UPDATE ON ensemble_members "
+            "BEGIN DELETE FROM scores; END; CREATE TRIGGER IF NOT EXISTS erase_too AFTER INSERT "
+            "ON runs BEGIN DELETE FROM scores; END; PRAGMA user_version = " +
+            std::to_string(version));
+    const std::string before = ReadBytes(db);
+    const Outcome out = RunBounded("study run " + Path("study.json") + " --db " + db + " --quiet");
+    EXPECT_EQ(out.exit_code, 2) << version << ": " << out.output;
+    EXPECT_NE(out.output.find(db + ": trigger erase"), std::string::npos) << out.output;
+    EXPECT_NE(out.output.find("is not the one shockmap writes"), std::string::npos) << out.output;
+    EXPECT_TRUE(ReadBytes(db) == before) << db << " changed at version " << version;
+  }
 }
 
 TEST_F(Resources, FifoDatabaseIsRefusedWithoutOpeningIt) {
