@@ -260,10 +260,15 @@ TEST_F(Resources, TwoReportsIntoOneFolderBothSucceed) {
   const std::string report = Path("report");
   const std::string command =
       std::string(SHOCKMAP_BIN) + " report small --db " + db + " --out " + report;
-  const Outcome both = RunShell("(" + command + " > " + Path("a.log") + " 2>&1; echo a=$?) & (" +
-                                command + " > " + Path("b.log") + " 2>&1; echo b=$?); wait");
-  EXPECT_NE(both.output.find("a=0"), std::string::npos) << both.output << ReadBytes(Path("a.log"));
-  EXPECT_NE(both.output.find("b=0"), std::string::npos) << both.output << ReadBytes(Path("b.log"));
+  // Three rounds: two runs do not always draw the same picture at the same moment.
+  for (int round = 0; round < 3; ++round) {
+    const Outcome both = RunShell("(" + command + " > " + Path("a.log") + " 2>&1; echo a=$?) & (" +
+                                  command + " > " + Path("b.log") + " 2>&1; echo b=$?); wait");
+    ASSERT_NE(both.output.find("a=0"), std::string::npos)
+        << round << ": " << both.output << ReadBytes(Path("a.log"));
+    ASSERT_NE(both.output.find("b=0"), std::string::npos)
+        << round << ": " << both.output << ReadBytes(Path("b.log"));
+  }
   EXPECT_TRUE(std::filesystem::exists(report + "/index.html"));
   EXPECT_EQ(Temporaries(report), std::vector<std::string>{});
 }
