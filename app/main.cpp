@@ -20,9 +20,11 @@
 #include "db/sqlite_handle.h"
 #include "engine/provenance.h"
 #include "formats/output_file.h"
+#include "formats/signal_cleanup.h"
 #include "views/gnuplot.h"
 
 int main(int argc, char** argv) {
+  shockmap::InstallSignalCleanup();
   CLI::App app{
       "shockmap: validity maps of modal reduction with explicit integration for "
       "structures with clearances"};

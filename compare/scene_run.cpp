@@ -39,7 +39,30 @@ void CheckAffordable(const Scene& scene, const TransientOptions& options,
   }
 }
 
+// The run's options: the scene's end time, its dt resolved against the model's bounds, and
+// what its outputs record. Takes the model's observed rows.
+TransientOptions RunOptions(const Scene& scene, SceneModel& model) {
+  const SceneOutputs& out = scene.outputs;
+  TransientOptions options;
+  options.end_time_s = scene.solver.end_time_s;
+  options.dt_s = scene.solver.dt.Resolve(model.bounds);
+  options.record_stride = out.record_stride;
+  options.record_energy = out.energies;
+  options.record_contact_forces = out.contact_forces || out.shocks;
+  options.recorded_contacts = out.contact_force_zones;
+  options.track_max_contact_force = out.max_contact_force;
+  options.track_impact_statistics = out.impact_statistics;
+  options.impact_counting = out.impact_counting;
+  options.observed_rows = std::move(model.observed_rows);
+  return options;
+}
+
 }  // namespace
+
+void CheckSceneAffordable(const Scene& scene) {
+  SceneModel model = BuildSceneModel(scene);
+  CheckAffordable(scene, RunOptions(scene, model), model.bounds);
+}
 
 SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progress) {
   SceneRun run;
@@ -53,17 +76,7 @@ SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progres
   run.bounds = model.bounds;
 
   const SceneOutputs& out = scene.outputs;
-  TransientOptions options;
-  options.end_time_s = scene.solver.end_time_s;
-  options.dt_s = scene.solver.dt.Resolve(model.bounds);
-  options.record_stride = out.record_stride;
-  options.record_energy = out.energies;
-  options.record_contact_forces = out.contact_forces || out.shocks;
-  options.recorded_contacts = out.contact_force_zones;
-  options.track_max_contact_force = out.max_contact_force;
-  options.track_impact_statistics = out.impact_statistics;
-  options.impact_counting = out.impact_counting;
-  options.observed_rows = std::move(model.observed_rows);
+  TransientOptions options = RunOptions(scene, model);
   options.on_progress = std::move(on_progress);
   CheckAffordable(scene, options, model.bounds);
   run.result = RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0,

@@ -32,6 +32,12 @@ struct SceneRun {
   std::vector<ImpactStatistics> impact_statistics;
 };
 
+// Builds the scene's model and checks, without integrating, what RunScene checks before it
+// integrates: the step count its dt resolves to (at most TransientOptions::max_steps) and the
+// size of the histories it records. Throws InputError as RunScene does. Precondition: as
+// RunScene's.
+void CheckSceneAffordable(const Scene& scene);
+
 // Preconditions: the scene was validated (LoadScene). Integrates with central differences at
 // scene.solver.dt resolved against the model's bounds.
 // `on_progress` gets the simulated time every few dozen steps (TransientOptions::on_progress).

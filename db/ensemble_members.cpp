@@ -45,7 +45,7 @@ EnsembleZoneRow ZoneAt(const Statement& s, int first) {
 std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t study_id) {
   Statement s = c.Prepare(
       "SELECT reference_id, reference_key, state, status, message, zones_json, max_force_n, "
-      "steps, wall_s FROM ensemble_references WHERE reference_key IN (SELECT reference_key FROM "
+      "steps, wall_s FROM ensemble_references WHERE reference_id IN (SELECT reference_id FROM "
       "ensemble_members WHERE study_id = ?) ORDER BY reference_id");
   s.Bind(1, study_id);
   std::vector<EnsembleReferenceRow> rows;

@@ -13,7 +13,7 @@ std::string Quoted(const std::string& text, char quote) {
 
 }  // namespace
 
-void RefreshSceneParamsView(Connection& c) {
+std::string SceneParamsViewSql(Connection& c) {
   std::string columns;
   Statement paths = c.Prepare(
       "SELECT DISTINCT j.key FROM scene_points p, json_each(p.parameters_json) j ORDER BY j.key");
@@ -22,8 +22,12 @@ void RefreshSceneParamsView(Connection& c) {
     columns += ", json_extract(r.parameters_json, " + Quoted("$.\"" + path + "\"", '\'') + ") AS " +
                Quoted("params_" + path, '"');
   }
+  return "CREATE VIEW scene_params AS SELECT r.*" + columns + " FROM scene_results r";
+}
+
+void RefreshSceneParamsView(Connection& c) {
   c.Execute("DROP VIEW IF EXISTS scene_params");
-  c.Execute("CREATE VIEW scene_params AS SELECT r.*" + columns + " FROM scene_results r");
+  c.Execute(SceneParamsViewSql(c));
 }
 
 const PointTable kScenePoints{"scene_points", {"parameters_json"}, RefreshSceneParamsView};

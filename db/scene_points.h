@@ -32,6 +32,8 @@ struct SceneScoreRow {
 // parameter path of any scene study (json_extract of parameters_json; NULL where a study does
 // not sweep it), in the order of the paths.
 void RefreshSceneParamsView(Connection& c);
+// The CREATE VIEW statement RefreshSceneParamsView runs for the points stored now.
+std::string SceneParamsViewSql(Connection& c);
 
 struct SceneReferenceRow {
   std::int64_t reference_id = 0;

@@ -1,6 +1,8 @@
 #include "db/schema.h"
 
+#include <map>
 #include <string>
+#include <string_view>
 
 #include "db/scene_points.h"
 
@@ -438,6 +440,12 @@ FROM ensemble_members p
 JOIN studies st ON st.study_id = p.study_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 8 -> 9: a member refers to its nominal run by its state's name, not by the nominal run's
+    // key, which holds the whole scene: a million members repeated it into gigabytes. The key
+    // stays, once, in ensemble_references.
+    R"sql(
+UPDATE ensemble_members SET reference_key = state;
+)sql",
 };
 constexpr int kMigrationCount = static_cast<int>(std::size(kMigrations));
 static_assert(kMigrationCount == kSchemaVersion);
@@ -445,6 +453,46 @@ static_assert(kMigrationCount == kSchemaVersion);
 int PragmaInt(Connection& db, const char* pragma) {
   Statement s = db.Prepare(std::string("PRAGMA ") + pragma);
   return s.Step() ? static_cast<int>(s.GetInt(0)) : 0;
+}
+
+// The definition of every view (and trigger: none) a new database gets, by name, as SQLite
+// stores them: read once from a database migrated in memory.
+const std::map<std::string, std::string>& FreshViewsAndTriggers() {
+  static const std::map<std::string, std::string> fresh = [] {
+    Connection memory(":memory:", Connection::Mode::kReadWriteCreate);
+    for (const char* migration : kMigrations) memory.Execute(migration);
+    std::map<std::string, std::string> sql;
+    Statement s =
+        memory.Prepare("SELECT name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
+    while (s.Step()) sql[s.GetText(0)] = s.GetText(1);
+    return sql;
+  }();
+  return fresh;
+}
+
+// True when `sql` is how this build defines `name` in `file`: as in a new database or, for
+// scene_params, with the columns of the parameter paths stored in the file.
+bool IsOurs(Connection& file, const std::string& name, const std::string& sql) {
+  const auto& fresh = FreshViewsAndTriggers();
+  const auto our = fresh.find(name);
+  if (our != fresh.end() && our->second == sql) return true;
+  return name == "scene_params" && sql == SceneParamsViewSql(file);
+}
+
+// Throws unless every entry of the file's schema of type `type` ("view" or "trigger") is one this
+// build writes, as it writes it: the commands read the views, so a view another program
+// redefined (an endless recursive query, say) would hang them or feed them other rows, and a
+// trigger (shockmap writes none) would run inside a write, a migration's included.
+void CheckEntriesAreOurs(Connection& db, std::string_view type) {
+  Statement s = db.Prepare("SELECT name, sql FROM sqlite_schema WHERE type = ?");
+  s.Bind(1, type);
+  while (s.Step()) {
+    if (!IsOurs(db, s.GetText(0), s.GetText(1))) {
+      throw DbError(db.Path() + ": " + std::string(type) + " " + s.GetText(0) +
+                    " is not the one shockmap writes (another program defined or changed "
+                    "it); refusing to read the file");
+    }
+  }
 }
 
 // Throws unless the file is empty, or ours at a version this build can read.
@@ -471,6 +519,8 @@ int CheckedVersion(Connection& db) {
                   std::to_string(version) + ", this build reads up to " +
                   std::to_string(kSchemaVersion) + ")");
   }
+  CheckEntriesAreOurs(db, "trigger");
+  if (version == kSchemaVersion) CheckEntriesAreOurs(db, "view");  // Older ones are rewritten.
   return version;
 }
 
@@ -509,6 +559,7 @@ void MigrateToCurrent(Connection& db) {
   // The migrations write scene_params without parameter columns: points already stored get
   // theirs at once.
   if (from > 0 && from < kSchemaVersion) RefreshSceneParamsView(db);
+  CheckEntriesAreOurs(db, "view");
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));
   t.Commit();

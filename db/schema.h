@@ -5,14 +5,16 @@
 
 namespace shockmap {
 
-inline constexpr int kSchemaVersion = 8;
+inline constexpr int kSchemaVersion = 9;
 // PRAGMA application_id of every shockmap database ("SHMP"): tells ours from a foreign file.
 inline constexpr int kApplicationId = 0x53484D50;
 
 // Brings a database to kSchemaVersion, all pending migrations in one transaction. A new, empty
 // file is initialized. Throws DbError without modifying the file when it is not a shockmap
 // database (foreign application id or foreign tables), was written by a newer shockmap
-// (user_version > kSchemaVersion), or fails PRAGMA quick_check.
+// (user_version > kSchemaVersion), fails PRAGMA quick_check, or holds a view or trigger that is
+// not one this build writes, as it writes it (another program's view could make every reader
+// run for ever, a trigger could run inside any write).
 void MigrateToCurrent(Connection& db);
 
 // The same checks without writing: for read-only connections.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 
 namespace shockmap {
 namespace {
@@ -38,6 +39,21 @@ std::string ReadOnlyUri(const std::string& path) {
   return uri + (OpensImmutable(path) ? "?mode=ro&immutable=1" : "?mode=ro");
 }
 
+// Throws unless `path` names a regular file, or nothing yet when a writer may create it: SQLite
+// would block for ever opening a FIFO, and write a -journal beside a device.
+void CheckIsDatabaseFile(const std::string& path, Connection::Mode mode) {
+  std::error_code ec;
+  const auto type = std::filesystem::status(path, ec).type();
+  if (type == std::filesystem::file_type::regular) return;
+  if (type == std::filesystem::file_type::not_found) {
+    if (mode == Connection::Mode::kReadOnly) throw DbError("no database at " + path);
+    return;
+  }
+  if (ec) throw DbError("cannot open database " + path + ": " + ec.message());
+  throw DbError("cannot open database " + path +
+                ": not a regular file (a study database is a regular file); nothing was opened");
+}
+
 }  // namespace
 
 bool OpensImmutable(const std::string& path) {
@@ -51,6 +67,7 @@ bool OpensImmutable(const std::string& path) {
 }
 
 Connection::Connection(const std::string& path, Mode mode) : path_(path) {
+  CheckIsDatabaseFile(path, mode);
   const bool read_only = mode == Mode::kReadOnly;
   const std::string name = read_only ? ReadOnlyUri(path) : path;
   const int flags = read_only ? SQLITE_OPEN_READONLY | SQLITE_OPEN_URI
@@ -124,7 +141,10 @@ Statement& Statement::Bind(int i, std::string_view v) {
 }
 
 Statement& Statement::Bind(int i, const std::vector<double>& blob) {
-  Check(sqlite3_bind_blob64(stmt_, i, blob.data(), blob.size() * sizeof(double), SQLITE_TRANSIENT));
+  // An empty vector is an empty blob: a null data() would bind NULL.
+  Check(blob.empty() ? sqlite3_bind_zeroblob(stmt_, i, 0)
+                     : sqlite3_bind_blob64(stmt_, i, blob.data(), blob.size() * sizeof(double),
+                                           SQLITE_TRANSIENT));
   return *this;
 }
 

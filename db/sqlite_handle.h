@@ -32,10 +32,11 @@ bool OpensImmutable(const std::string& path);
 class Connection {
  public:
   enum class Mode { kReadWriteCreate, kReadOnly };
-  // Opens `path`. Throws DbError naming the path when it cannot be opened. A read-only
-  // connection never creates the file and sets PRAGMA query_only; where nothing can write the
-  // file (see OpensImmutable) it opens it immutable, so that SQLite neither locks it nor creates
-  // -wal or -shm files beside it.
+  // Opens `path`. Throws DbError naming the path when it cannot be opened: before SQLite
+  // touches anything when the path is not a regular file (a FIFO, a device, a folder) or, for
+  // a read-only connection, names nothing. A read-only connection never creates the file and
+  // sets PRAGMA query_only; where nothing can write the file (see OpensImmutable) it opens it
+  // immutable, so that SQLite neither locks it nor creates -wal or -shm files beside it.
   Connection(const std::string& path, Mode mode);
   ~Connection();
   Connection(const Connection&) = delete;
@@ -67,6 +68,7 @@ class Statement {
   Statement& Bind(int i, int v) { return Bind(i, static_cast<std::int64_t>(v)); }
   Statement& Bind(int i, std::string_view v);
   Statement& Bind(int i, const char* v) { return Bind(i, std::string_view(v)); }
+  // The doubles as a blob (an empty vector: an empty blob, not NULL).
   Statement& Bind(int i, const std::vector<double>& blob);
   Statement& BindNull(int i);
   Statement& BindValue(int i, const SqlValue& v);

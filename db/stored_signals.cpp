@@ -1,7 +1,6 @@
 #include "db/stored_signals.h"
 
 #include <bit>
-#include <filesystem>
 #include <memory>
 
 #include "db/read_only_query.h"
@@ -15,9 +14,6 @@ static_assert(std::endian::native == std::endian::little,
               "stored signals are little-endian float64 (docs/database.md)");
 
 std::unique_ptr<Connection> OpenReadOnly(const std::string& database_path) {
-  if (!std::filesystem::is_regular_file(database_path)) {
-    throw DbError("no database at " + database_path);
-  }
   auto db = std::make_unique<Connection>(database_path, Connection::Mode::kReadOnly);
   CheckSchema(*db);
   return db;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "compare/scene_run.h"
 
 namespace shockmap {
@@ -82,7 +84,7 @@ bool EnsembleStudy::KeepsSettingsOf(const Json& stored, const std::string&) cons
 
 NewPoint EnsembleStudy::Describe(const Point& m) const {
   return {MemberKey(spec_, m),
-          NominalKey(spec_, m.state),
+          spec_.states[m.state].name,
           {spec_.states[m.state].name, spec_.settings[m.setting].dump(),
            static_cast<std::int64_t>(m.member)}};
 }
@@ -109,8 +111,11 @@ EnsembleStudy::Reference EnsembleStudy::ComputeReference(const Point& point) con
 }
 
 std::optional<StoredReference<EnsembleStudy::Reference>> EnsembleStudy::FindReference(
-    StudyDatabase& db, const std::string& key) const {
-  auto row = FindEnsembleReference(db, key);
+    StudyDatabase& db, const std::string& state) const {
+  const auto& states = spec_.states;
+  const auto found = std::ranges::find(states, state, &ClearanceState::name);
+  if (found == states.end()) return std::nullopt;
+  auto row = FindEnsembleReference(db, NominalKey(spec_, static_cast<int>(found - states.begin())));
   if (!row) return std::nullopt;
   const std::int64_t id = row->reference_id;
   return StoredReference<Reference>{id, std::move(*row)};

@@ -27,14 +27,17 @@ class EnsembleStudy {
       "the member count, the settings and new clearance states";
   bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
-  // Keyed by state, setting and index; its reference by the state's nominal run.
+  // Keyed by state, setting and index; its reference key is its state's name, a few bytes in
+  // each of up to a million rows (the nominal run's own key, NominalKey, holds the whole scene
+  // and is stored once, in its ensemble_references row).
   NewPoint Describe(const Point& point) const;
 
   double ReferenceCost(const Point&) const { return 1.0; }
   // The state's nominal scene at the refined setting.
   Reference ComputeReference(const Point& point) const;
+  // The stored nominal run of the state named `state` (a member's reference key).
   std::optional<StoredReference<Reference>> FindReference(StudyDatabase& db,
-                                                          const std::string& key) const;
+                                                          const std::string& state) const;
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
 

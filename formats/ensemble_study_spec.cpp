@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "formats/json_reader.h"
 #include "formats/parameter_path.h"
@@ -278,28 +279,48 @@ std::vector<double> Centres(const EnsembleStudySpec& spec) {
   return centres;
 }
 
-// Every state and setting at the draws' centres, and each draw at both its bounds.
+// Throws InputError naming the file, window_s and its value, and `where` (the state and setting)
+// unless `scene` runs in at most TransientOptions::max_steps steps (compare/scene_run.h).
+void CheckAffordableWindow(const EnsembleStudySpec& spec, const Scene& scene,
+                           const std::string& where) {
+  try {
+    CheckSceneAffordable(scene);
+  } catch (const InputError& e) {
+    throw InputError(spec.file + ": window_s: " + Shown(Json(spec.window_s)) + " s" + where + ": " +
+                     e.what());
+  }
+}
+
+std::string Where(const EnsembleStudySpec& spec, int state, int setting) {
+  return " in state \"" + spec.states[state].name + "\", setting " + spec.settings[setting].dump();
+}
+
+// Every state and setting at the draws' centres and with each draw at both its bounds: each
+// scene valid and affordable (a member's dt follows its setting and its draws through the
+// stability bound).
 void CheckScenes(const EnsembleStudySpec& spec) {
   const std::vector<double> centres = Centres(spec);
   auto check = [&](int state, int setting, const std::vector<double>& values,
                    const std::string& what) {
+    Scene scene;
     try {
-      SceneOf(spec, VariantJson(spec, state, setting, values, 0));
+      scene = SceneOf(spec, VariantJson(spec, state, setting, values, 0));
     } catch (const InputError& e) {
       throw InputError(spec.file + ": state \"" + spec.states[state].name + "\", setting " +
                        spec.settings[setting].dump() + what + ": " + e.what());
     }
+    CheckAffordableWindow(spec, scene, Where(spec, state, setting) + what);
   };
   for (int state = 0; state < static_cast<int>(spec.states.size()); ++state) {
     for (int setting = 0; setting < static_cast<int>(spec.settings.size()); ++setting) {
       check(state, setting, centres, "");
-    }
-    for (std::size_t i = 0; i < spec.draws.size(); ++i) {
-      for (const double bound : {spec.draws[i].min, spec.draws[i].max}) {
-        std::vector<double> values = centres;
-        values[i] = bound;
-        check(state, spec.refined, values,
-              ", draws." + spec.draws[i].path + " at its bound " + Shown(Json(bound)));
+      for (std::size_t i = 0; i < spec.draws.size(); ++i) {
+        for (const double bound : {spec.draws[i].min, spec.draws[i].max}) {
+          std::vector<double> values = centres;
+          values[i] = bound;
+          check(state, setting, values,
+                ", draws." + spec.draws[i].path + " at its bound " + Shown(Json(bound)));
+        }
       }
     }
   }
@@ -366,6 +387,10 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   CheckDisjointPaths(r, spec);
   r.Finish();
   CheckScenes(spec);
+  for (int state = 0; state < static_cast<int>(spec.states.size()); ++state) {
+    CheckAffordableWindow(spec, NominalScene(spec, state),
+                          Where(spec, state, spec.refined) + " (its nominal run)");
+  }
   spec.points = MemberMajor(spec);
   Json stored = json;
   stored["scene_json"] = spec.scene;

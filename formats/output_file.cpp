@@ -132,11 +132,15 @@ std::filesystem::path UnusedTemporaryName(const std::filesystem::path& dir) {
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)), stream_(nullptr) {
   const auto dir = path_.has_parent_path() ? path_.parent_path() : std::filesystem::path(".");
   int fd = -1;
+  int error = 0;
   do {
     temp_ = UnusedTemporaryName(dir);
+    temp_on_signal_.emplace(temp_);
     fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  } while (fd < 0 && errno == EEXIST);
-  if (fd < 0) throw InputError("cannot write " + path_.string() + ": " + Reason(errno));
+    error = errno;
+    if (fd < 0) temp_on_signal_.reset();  // Not ours to remove.
+  } while (fd < 0 && error == EEXIST);
+  if (fd < 0) throw InputError("cannot write " + path_.string() + ": " + Reason(error));
   buffer_ = std::make_unique<Buffer>(fd);
   stream_.rdbuf(buffer_.get());
   stream_.imbue(std::locale(std::locale::classic(), new ShortestRoundTrip));
@@ -158,6 +162,7 @@ void AtomicFile::Commit() {
                      "; the file was left as it was");
   }
   committed_ = true;
+  temp_on_signal_.reset();
 }
 
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view bytes) {

@@ -4,9 +4,12 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
+
+#include "formats/signal_cleanup.h"
 
 namespace shockmap {
 
@@ -23,7 +26,8 @@ void PrepareOutputDirectory(const std::filesystem::path& dir, std::string_view f
 
 // One output file, written in full or not at all: the bytes go to a temporary file in the same
 // folder, which Commit() renames over `path`. Destroyed without Commit() (an exception on the
-// way), the temporary is removed and whatever `path` held before is untouched. Doubles are
+// way) or ended by a signal (formats/signal_cleanup.h), the process removes the temporary, and
+// whatever `path` held before is untouched. Doubles are
 // written with the shortest digits that read back as the same value (docs/database.md).
 class AtomicFile {
  public:
@@ -42,6 +46,7 @@ class AtomicFile {
   class Buffer;
   std::filesystem::path path_;
   std::filesystem::path temp_;
+  std::optional<RemovedOnSignal> temp_on_signal_;
   std::unique_ptr<Buffer> buffer_;
   std::ostream stream_;
   bool committed_ = false;

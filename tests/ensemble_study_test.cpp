@@ -182,7 +182,7 @@ TEST_F(EnsembleStudyTest, SizingIsTheStatisticsOfTheStoredMaxima) {
     Connection c(db, Connection::Mode::kReadOnly);
     Statement zone = c.Prepare(
         "SELECT z.max_force_n FROM ensemble_members p JOIN ensemble_member_zones z USING "
-        "(point_id) JOIN ensemble_references r ON r.reference_key = p.reference_key, "
+        "(point_id) JOIN ensemble_references r ON r.reference_id = p.reference_id, "
         "json_each(r.zones_json) j WHERE j.key = z.zone AND json_extract(j.value, '$.name') = ? "
         "ORDER BY p.point_id");
     zone.Bind(1, row["zone"].get<std::string>());

@@ -166,7 +166,9 @@ TEST_F(GnuplotProcess, MissingGnuplotIsNamedAsSuch) {
 TEST_F(GnuplotProcess, FailingGnuplotGivesItsStatusAndMessageAndKeepsTheOldImage) {
   ASSERT_EQ(Map("a.png").exit_code, 0);
   const std::string before = ReadBytes(Path("a.png"));
-  const Outcome o = Map("a.png", FakeGnuplot("echo 'line 3: boom' >&2; printf x > a.png; exit 3"));
+  // It starts the file it is told to draw (-e "shockmap_output = './NAME'") and fails.
+  const Outcome o = Map("a.png", FakeGnuplot("out=${2#*\\'}; out=${out%\\'}; echo 'line 3: boom' "
+                                             ">&2; printf x > \"$out\"; exit 3"));
   EXPECT_EQ(o.exit_code, 1) << o.output;
   EXPECT_NE(o.output.find("status 3"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("line 3: boom"), std::string::npos) << o.output;

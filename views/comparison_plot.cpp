@@ -32,7 +32,7 @@ plot 'reference.csv' using 1:($3/1000) skip 1 with lines lw 2 lc rgb '#1f77b4' t
      'numerical.csv' using 1:($4/1000) skip 1 with lines lw 1.5 dt 2 lc rgb '#d62728' title 'numerical'
 unset multiplot
 )",
-      fmt::arg("png", GnuplotFileName(png)),
+      fmt::arg("png", GnuplotOutputName(png)),
       fmt::arg("title", GnuplotQuoted(fmt::format(
                             "Tip of the beam, R_k = {:g}, R_{{ftrunc}} = {:g} ({} modes, {}, dt = "
                             "{:.3g} s) - {}",

@@ -205,7 +205,7 @@ set multiplot layout {rows},{columns} title {title} font ',13' noenhanced
 )",
       fmt::arg("terminal", TerminalFor(file, layout.columns == 1 ? 900 : 480 * layout.columns + 200,
                                        layout.rows * 560 + 80)),
-      fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("cb", e.largest_between > 0.0 ? e.largest_between : 1.0),
       fmt::arg("rows", layout.rows), fmt::arg("columns", layout.columns),
       fmt::arg("cblabel", GnuplotQuoted(quantity + " between beams (N)")),

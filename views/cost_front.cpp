@@ -132,7 +132,7 @@ plot {data} using 1:($4 == 0 ? $2 : 1/0):(log10($6)) with points pt 7 ps 1.5 lc 
      '' using 1:($4 == 1 ? $2 : 1/0) with points pt 9 ps 2 lc rgb '#000000' title 'implicit full model', \
      '' using 1:($5 == 1 ? $2 : 1/0) with linespoints lw 2 pt 6 ps 2.2 lc rgb '#d73027' title 'Pareto front'
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("title", GnuplotQuoted(fmt::format("{}: what accuracy costs at R_k = {:.4g}", study,
                                                   table.r_k))),
       fmt::arg("data", GnuplotFileName(data_file)));

@@ -132,7 +132,7 @@ set yrange [0:1.05]
 plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'{unconverged_key}
 unset multiplot
 )gp",
-      fmt::arg("terminal", TerminalFor(file, 1400, 700)), fmt::arg("out", GnuplotFileName(file)),
+      fmt::arg("terminal", TerminalFor(file, 1400, 700)), fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("x0", range.first / 2), fmt::arg("x1", range.second * 2),
       fmt::arg("title", GnuplotQuoted(study + ": the paper's Fig. 4 (finest time step per point)")),
       fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),

@@ -14,6 +14,7 @@
 
 #include "core/input_error.h"
 #include "formats/output_file.h"
+#include "formats/signal_cleanup.h"
 
 extern char** environ;
 
@@ -22,6 +23,9 @@ namespace {
 
 // How much of gnuplot's output a failure message quotes (its last bytes, where errors are).
 constexpr std::size_t kExcerptBytes = 600;
+
+// The variable by which RunGnuplot names the file a script draws (see GnuplotOutputName).
+constexpr const char* kOutputVariable = "shockmap_output";
 
 struct ChildOutcome {
   int status = 0;      // As waitpid reports it.
@@ -41,18 +45,22 @@ std::string ReadTail(int fd, std::size_t keep) {
   return text;
 }
 
-// Runs `gnuplot ./NAME` in the script's folder with stdin from /dev/null and its output piped
-// back. Throws PlotError when gnuplot cannot be started.
+// Runs `gnuplot -e "shockmap_output = './DRAWING'" ./NAME` in the script's folder with stdin
+// from /dev/null and its output piped back; a signal that ends this process kills it. Throws
+// PlotError when gnuplot cannot be started.
 ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
-                          const std::filesystem::path& image) {
+                          const std::filesystem::path& image,
+                          const std::filesystem::path& drawing) {
   int pipe_fds[2];
   if (::pipe2(pipe_fds, O_CLOEXEC) != 0)
     throw PlotError("pipe: " + std::string(std::strerror(errno)));
   const std::string dir =
       script_file.has_parent_path() ? script_file.parent_path().string() : std::string(".");
   // "./" keeps a name such as "-m.gp" from being read as an option.
-  std::string arg0 = "gnuplot", arg1 = "./" + script_file.filename().string();
-  char* argv[] = {arg0.data(), arg1.data(), nullptr};
+  std::string arg0 = "gnuplot", arg1 = "-e",
+              arg2 = std::string(kOutputVariable) + " = " + GnuplotFileName(drawing),
+              arg3 = "./" + script_file.filename().string();
+  char* argv[] = {arg0.data(), arg1.data(), arg2.data(), arg3.data(), nullptr};
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
@@ -70,6 +78,7 @@ ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
                                  : "cannot start gnuplot for " + script_file.string() + ": " +
                                        std::strerror(rc));
   }
+  const KilledOnSignal child(pid);
   ChildOutcome outcome;
   outcome.output = ReadTail(pipe_fds[0], 4 * kExcerptBytes);
   ::close(pipe_fds[0]);
@@ -84,10 +93,10 @@ std::string Excerpt(const std::string& output) {
   return "it printed: " + output.substr(from);
 }
 
-// True when `image` ends as a whole PNG (its IEND chunk) or SVG (its closing tag) does: gnuplot
-// exits 0 even when the disk took only part of the image.
-bool IsCompleteImage(const std::filesystem::path& image) {
-  std::ifstream in(image, std::ios::binary);
+// True when `drawing` ends as a whole PNG (its IEND chunk) or SVG (its closing tag), as
+// `image` names it, does: gnuplot exits 0 even when the disk took only part of the image.
+bool IsCompleteImage(const std::filesystem::path& drawing, const std::filesystem::path& image) {
+  std::ifstream in(drawing, std::ios::binary);
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   if (!in || size < 12) return false;
@@ -99,9 +108,11 @@ bool IsCompleteImage(const std::filesystem::path& image) {
   return end.ends_with(std::string("IEND\xae\x42\x60\x82", 8));
 }
 
-// Why the run failed, or "" when it drew `image`; `partial` tells the image was cut short.
+// Why the run failed, or "" when it drew `image` into `drawing`; `partial` tells the image was
+// cut short.
 std::string Failure(bool& partial, const ChildOutcome& child,
-                    const std::filesystem::path& script_file, const std::filesystem::path& image) {
+                    const std::filesystem::path& script_file, const std::filesystem::path& image,
+                    const std::filesystem::path& drawing) {
   if (WIFSIGNALED(child.status)) {
     return fmt::format("gnuplot was killed by signal {} ({}) on {}; {}", WTERMSIG(child.status),
                        strsignal(WTERMSIG(child.status)), script_file.string(),
@@ -112,15 +123,15 @@ std::string Failure(bool& partial, const ChildOutcome& child,
                        script_file.string(), Excerpt(child.output));
   }
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(image, ec)) {
+  if (!std::filesystem::is_regular_file(drawing, ec)) {
     return fmt::format("gnuplot ended without writing {} (script {}); {}", image.string(),
                        script_file.string(), Excerpt(child.output));
   }
-  if (!IsCompleteImage(image)) {
+  if (!IsCompleteImage(drawing, image)) {
     partial = true;
     return fmt::format("gnuplot wrote only part of {} ({} bytes; is the disk full?), script {}; {}",
-                       image.string(), std::filesystem::file_size(image, ec), script_file.string(),
-                       Excerpt(child.output));
+                       image.string(), std::filesystem::file_size(drawing, ec),
+                       script_file.string(), Excerpt(child.output));
   }
   return "";
 }
@@ -164,27 +175,32 @@ std::string GnuplotFileName(const std::filesystem::path& file) {
   return GnuplotQuoted("./" + name);
 }
 
+std::string GnuplotOutputName(const std::filesystem::path& image) {
+  return fmt::format("(exists('{0}') ? {0} : {1})", kOutputVariable, GnuplotFileName(image));
+}
+
 void RunGnuplot(const std::string& script, const std::filesystem::path& script_file,
                 const std::filesystem::path& image) {
   WriteFileAtomically(script_file, script);
-  std::error_code ec;
   const auto dir = image.has_parent_path() ? image.parent_path() : std::filesystem::path(".");
-  const auto previous = UnusedTemporaryName(dir);
-  const bool had_image = std::filesystem::exists(image, ec);
-  if (had_image) std::filesystem::rename(image, previous);
+  const auto drawing = UnusedTemporaryName(dir);
+  const RemovedOnSignal drawing_on_signal(drawing);
   std::string failure;
   bool partial = false;
   try {
-    failure = Failure(partial, SpawnGnuplot(script_file, image), script_file, image);
+    failure =
+        Failure(partial, SpawnGnuplot(script_file, image, drawing), script_file, image, drawing);
   } catch (const PlotError& e) {
     failure = e.what();
   }
+  std::error_code ec;
   if (failure.empty()) {
-    if (had_image) std::filesystem::remove(previous, ec);
-    return;
+    std::filesystem::rename(drawing, image, ec);
+    if (!ec) return;
+    failure = "cannot write " + image.string() + ": " + ec.message();
+    partial = true;  // Drawn, but not where asked: an output that could not be written.
   }
-  std::filesystem::remove(image, ec);
-  if (had_image) std::filesystem::rename(previous, image, ec);
+  std::filesystem::remove(drawing, ec);
   if (partial) throw InputError(failure + "; " + image.string() + " was left as it was");
   throw PlotError(failure);
 }

@@ -29,9 +29,16 @@ std::string GnuplotQuoted(std::string_view text);
 // name holds a control character, which no gnuplot string can carry.
 std::string GnuplotFileName(const std::filesystem::path& file);
 
+// The file name for the `set output` of a script that draws `image`: a temporary file of
+// RunGnuplot's choosing when RunGnuplot runs the script, `image` (as GnuplotFileName) when
+// someone runs it by hand.
+std::string GnuplotOutputName(const std::filesystem::path& image);
+
 // Writes `script` to script_file (in full or not at all) and runs gnuplot on it from the
 // script's folder, without a shell: its file names are relative to that folder. `image` is the
-// file the script draws; an image already there is kept until the new one is complete.
+// file the script draws, naming it by GnuplotOutputName: gnuplot draws a temporary file that is
+// renamed over `image` once complete, so that an image already there is replaced only by a
+// whole one, and a signal ending the process leaves neither (formats/signal_cleanup.h).
 // Throws PlotError when gnuplot is not found, ends with a non-zero status or a signal (quoting
 // what it printed), or ends without writing `image`; InputError when it wrote only part of the
 // image (gnuplot exits 0 on a full disk), as for any output file that could not be written.

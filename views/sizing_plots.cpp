@@ -33,7 +33,7 @@ double Upper(const QuantileInterval& q) { return q.upper_bounded ? q.upper : q.e
 fs::path Draw(const fs::path& image, const std::string& body, int width = 900, int height = 600) {
   const std::string script = fmt::format(
       "set terminal {}\nset output {}\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n{}",
-      TerminalFor(image, width, height), GnuplotFileName(image), body);
+      TerminalFor(image, width, height), GnuplotOutputName(image), body);
   RunGnuplot(script, fs::path(image).replace_extension(".gp"), image);
   return image;
 }

@@ -189,7 +189,7 @@ set samples 400
 plot {cells}{overlays}
 )",
       fmt::arg("terminal", TerminalFor(f.image, 1100, 850)),
-      fmt::arg("out", GnuplotFileName(f.image)), fmt::arg("title", GnuplotQuoted(f.title)),
+      fmt::arg("out", GnuplotOutputName(f.image)), fmt::arg("title", GnuplotQuoted(f.title)),
       fmt::arg("tics", f.tics), fmt::arg("ylabel", GnuplotQuoted(f.ylabel)),
       fmt::arg("cb", GnuplotQuoted(style.cb)), fmt::arg("palette", style.palette),
       fmt::arg("xmin", f.xmin), fmt::arg("xmax", f.xmax), fmt::arg("ymin", f.ymin),
