@@ -1,6 +1,8 @@
 #include "db/schema.h"
 
+#include <set>
 #include <string>
+#include <vector>
 
 #include "db/scene_points.h"
 
@@ -447,7 +449,77 @@ int PragmaInt(Connection& db, const char* pragma) {
   return s.Step() ? static_cast<int>(s.GetInt(0)) : 0;
 }
 
-// Throws unless the file is empty, or ours at a version this build can read.
+// What a schema version is made of, one entry per table, view and table column: "table points",
+// "column points.host", "view results" (a view's columns vary: scene_params).
+using SchemaObjects = std::set<std::string>;
+
+SchemaObjects ObjectsOf(Connection& db) {
+  SchemaObjects objects;
+  std::vector<std::string> tables;
+  Statement s = db.Prepare(
+      "SELECT type, name FROM sqlite_schema WHERE type IN ('table', 'view') AND name NOT LIKE "
+      "'sqlite\\_%' ESCAPE '\\'");
+  while (s.Step()) {
+    objects.insert(s.GetText(0) + " " + s.GetText(1));
+    if (s.GetText(0) == "table") tables.push_back(s.GetText(1));
+  }
+  for (const std::string& table : tables) {
+    Statement columns = db.Prepare("SELECT name FROM pragma_table_info(?)");
+    columns.Bind(1, table);
+    while (columns.Step()) objects.insert("column " + table + "." + columns.GetText(0));
+  }
+  return objects;
+}
+
+// The objects of every schema version, index = version: the migrations applied in turn to an
+// empty database in memory, once per process.
+const std::vector<SchemaObjects>& ObjectsOfEachVersion() {
+  static const std::vector<SchemaObjects> versions = [] {
+    Connection scratch(":memory:", Connection::Mode::kReadWriteCreate);
+    std::vector<SchemaObjects> v{ObjectsOf(scratch)};
+    for (const char* migration : kMigrations) {
+      scratch.Execute(migration);
+      v.push_back(ObjectsOf(scratch));
+    }
+    return v;
+  }();
+  return versions;
+}
+
+// The first of `objects` not in `in`, tables and views before columns (a table that is missing
+// is named, not its first column), or "" when `objects` lies within `in`.
+std::string FirstMissing(const SchemaObjects& objects, const SchemaObjects& in) {
+  for (const bool columns : {false, true}) {
+    for (const std::string& o : objects) {
+      if (o.starts_with("column ") == columns && !in.contains(o)) return o;
+    }
+  }
+  return "";
+}
+
+// Throws unless the file's tables agree with its version: it holds every table, view and column
+// of that version, and none that the next migration adds (it would fail on them half-way).
+void CheckTablesMatch(Connection& db, int version) {
+  const std::vector<SchemaObjects>& versions = ObjectsOfEachVersion();
+  const SchemaObjects present = ObjectsOf(db);
+  const std::string corrupt = db.Path() + ": database corrupt: schema version " +
+                              std::to_string(version) + " disagrees with its tables: ";
+  if (const std::string missing = FirstMissing(versions[version], present); !missing.empty()) {
+    throw DbError(corrupt + missing + " of version " + std::to_string(version) + " is missing");
+  }
+  if (version == kSchemaVersion) return;
+  SchemaObjects added;
+  for (const std::string& o : versions[version + 1]) {
+    if (!versions[version].contains(o) && present.contains(o)) added.insert(o);
+  }
+  if (const std::string first = FirstMissing(added, {}); !first.empty()) {
+    throw DbError(corrupt + first + ", added by version " + std::to_string(version + 1) +
+                  ", is already there");
+  }
+}
+
+// Throws unless the file is empty, or ours at a version this build can read with the tables of
+// that version.
 int CheckedVersion(Connection& db) {
   {
     Statement check = db.Prepare("PRAGMA quick_check");
@@ -471,6 +543,12 @@ int CheckedVersion(Connection& db) {
                   std::to_string(version) + ", this build reads up to " +
                   std::to_string(kSchemaVersion) + ")");
   }
+  if (version < 0) {
+    throw DbError(db.Path() + ": database corrupt: schema version " + std::to_string(version) +
+                  " (PRAGMA user_version) is none shockmap writes (0 to " +
+                  std::to_string(kSchemaVersion) + ")");
+  }
+  CheckTablesMatch(db, version);
   return version;
 }
 

@@ -11,8 +11,10 @@ inline constexpr int kApplicationId = 0x53484D50;
 
 // Brings a database to kSchemaVersion, all pending migrations in one transaction. A new, empty
 // file is initialized. Throws DbError without modifying the file when it is not a shockmap
-// database (foreign application id or foreign tables), was written by a newer shockmap
-// (user_version > kSchemaVersion), or fails PRAGMA quick_check.
+// database (foreign application id), was written by a newer shockmap (user_version >
+// kSchemaVersion), holds a negative user_version or tables that disagree with its version (the
+// tables, views and columns of that version must be there, none the next version adds), or fails
+// PRAGMA quick_check.
 void MigrateToCurrent(Connection& db);
 
 // The same checks without writing: for read-only connections.
