@@ -47,6 +47,14 @@ protected:
     ASSERT_EQ(run.exit_code, 0) << run.output;
   }
   void Canonical() { RunStudy(kCanonicalStudy); }
+  void Ensemble() {
+    RunStudy(
+        R"({"kind": "scene_ensemble", "name": "ens", "scene": ")" +
+        std::string(SHOCKMAP_SOURCE_DIR) +
+        R"(/scenes/bundle_row.json", "members": 3, "seed": 11, "window_s": 0.01,
+        "draws": {"bundle.wire.stiffness_n_per_m": {"lognormal": {"sigma": 0.2}}},
+        "clearance_states": [{"name": "new", "pin_gap_m": {"mean": 5e-5, "std": 5e-6}}]})");
+  }
   void Scene() {
     RunStudy(
         R"({"name": "sc", "scene": ")" + std::string(SHOCKMAP_SOURCE_DIR) +
@@ -192,5 +200,70 @@ TEST_F(DatabaseCorruption, SceneReferenceSignalsOfUnequalLengthAreRefused) {
   EXPECT_FALSE(std::filesystem::exists(Path("ref.csv")));
 }
 
-}  // namespace
-}  // namespace shockmap
+TEST_F(DatabaseCorruption,
+       CorruptStoredShocksAreADatabaseErrorNotAnInternalOne) {
+  Canonical();
+  Edit("UPDATE reference_runs SET shocks_json = '{bad' WHERE reference_id = 1");
+  ExpectRefused("export point --id 1 --out " + Path("point"),
+                "database corrupt: reference 1: shocks_json: parse error");
+  Edit("UPDATE reference_runs SET shocks_json = '[1]' WHERE reference_id = 1");
+  ExpectRefused("export point --id 1 --out " + Path("point"),
+                "database corrupt: reference 1: shocks_json: cannot use at() "
+                "with number");
+}
+
+TEST_F(DatabaseCorruption,
+       CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizing) {
+  Ensemble();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"UPDATE ensemble_references SET zones_json = '{bad'",
+       "database corrupt: ensemble reference 1: zones_json: parse error"},
+      {"UPDATE ensemble_references SET zones_json = '[1, 2]'",
+       "database corrupt: ensemble reference 1: zones_json: cannot use at() "
+       "with number"},
+      {"UPDATE ensemble_references SET zones_json = '[{\"name\": \"a\"}]'",
+       "database corrupt: ensemble reference 1: zones_json: 1 zones, but "
+       "max_force_n holds 127 "
+       "forces"},
+      {"UPDATE ensemble_members SET setting_json = '[1' WHERE point_id = 2",
+       "database corrupt: ensemble member 2: setting_json: parse error"},
+      {"DELETE FROM ensemble_member_zones WHERE point_id = 3 AND zone > 5",
+       "database corrupt: ensemble member 3: 6 zone rows, its nominal run 127 "
+       "zones"}};
+  const std::string pristine = ReadBytes(db());
+  for (const auto &[sql, message] : cases) {
+    WriteText(db(), pristine);
+    Edit(sql);
+    ExpectRefused("sizing", message);
+    ExpectRefused("report --out " + Path("report"), message);
+  }
+  WriteText(db(), pristine);
+  Edit("UPDATE studies SET spec_json = json_remove(spec_json, '$.scene_json')");
+  ExpectRefused(
+      "report --out " + Path("report"),
+      "database corrupt: study ens: spec_json: key 'scene_json' not found");
+}
+
+TEST_F(DatabaseCorruption,
+       ReportSkipsTheFigureOfACorruptReferenceAndWritesTheRest) {
+  Canonical();
+  Edit("UPDATE reference_runs SET shocks_json = '{bad' WHERE reference_id = 1");
+  const auto r =
+      RunShockmap("report --db " + db() + " --out " + Path("report"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find(
+                "warning: Fig. 3 of point 1 not drawn: " + db() +
+                ": database corrupt: reference 1: shocks_json: parse error"),
+            std::string::npos)
+      << r.output;
+  const std::string index = ReadBytes(Path("report/index.html"));
+  EXPECT_NE(index.find("Figures not drawn"), std::string::npos);
+  EXPECT_NE(index.find("point 1: " + db() +
+                       ": database corrupt: reference 1: shocks_json"),
+            std::string::npos);
+  // The points of the sound reference keep their figures.
+  EXPECT_TRUE(std::filesystem::exists(Path("report/points/point_3/fig3.png")));
+}
+
+} // namespace
+} // namespace shockmap
