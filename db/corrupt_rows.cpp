@@ -13,6 +13,15 @@ void ThrowCorrupt(const std::string& database_path, const std::string& row,
   throw DbError(database_path + ": database corrupt: " + row + ": " + reason);
 }
 
+const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
+                              const std::string& row, const std::string& column) {
+  if (const auto* text = std::get_if<std::string>(&cell)) return *text;
+  const char* held = std::holds_alternative<std::monostate>(cell) ? "NULL"
+                     : std::holds_alternative<double>(cell)       ? "a real"
+                                                                  : "an integer";
+  ThrowCorrupt(database_path, row, column + " holds " + held + " where text belongs");
+}
+
 void CheckFinite(const std::string& database_path, const std::string& row,
                  const StoredSamples& signal) {
   for (std::size_t i = 0; i < signal.values.size(); ++i) {

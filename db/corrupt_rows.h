@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "db/canonical_points.h"
+#include "db/read_only_query.h"
 #include "db/scene_points.h"
 
 namespace shockmap {
@@ -17,6 +18,12 @@ namespace shockmap {
 // Throws DbError "<database_path>: database corrupt: <row>: <reason>".
 [[noreturn]] void ThrowCorrupt(const std::string& database_path, const std::string& row,
                                const std::string& reason);
+
+// The text of a cell its column declares TEXT NOT NULL; DbError "<database_path>: database
+// corrupt: <row>: <column> holds <what it holds> where text belongs" when the file holds
+// something else there (SQLite does not check the constraint on reading).
+const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
+                              const std::string& row, const std::string& column);
 
 // One stored signal, named by its column.
 struct StoredSamples {

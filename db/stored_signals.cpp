@@ -108,7 +108,8 @@ std::optional<std::string> CanonicalPointKey(const std::string& database_path,
       "p.point_id = CAST(?2 AS INTEGER)",
       {study, std::to_string(point_id)});
   if (r.rows.empty()) return std::nullopt;
-  return std::get<std::string>(r.rows.front().front());
+  return StoredText(r.rows.front().front(), database_path, "point " + std::to_string(point_id),
+                    "point_key");
 }
 
 }  // namespace shockmap

@@ -3,6 +3,7 @@
 #include <variant>
 
 #include "core/input_error.h"
+#include "db/corrupt_rows.h"
 #include "db/study_queries.h"
 
 namespace shockmap {
@@ -48,7 +49,8 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.point_id = std::get<std::int64_t>(row[0]);
     p.r_k = Real(row[1]);
     p.r_ftrunc = Real(row[2]);
-    const std::string& status = std::get<std::string>(row[3]);
+    const std::string& status =
+        StoredText(row[3], database_path, "point " + std::to_string(p.point_id), "status");
     const auto parsed = RunStatusFromString(status);
     if (!parsed) {
       throw InputError(database_path + ": point " + std::to_string(p.point_id) +
