@@ -22,6 +22,20 @@ const std::string& StoredText(const QueryCell& cell, const std::string& database
   ThrowCorrupt(database_path, row, column + " holds " + held + " where text belongs");
 }
 
+std::int64_t StoredCount(const QueryCell& cell, const std::string& database_path,
+                         const std::string& row, const std::string& column, std::int64_t max) {
+  const auto* count = std::get_if<std::int64_t>(&cell);
+  if (count == nullptr || *count < 0 || *count > max) {
+    const std::string held = count != nullptr ? std::to_string(*count)
+                             : std::holds_alternative<double>(cell)
+                                 ? fmt::format("{}", std::get<double>(cell))
+                                 : std::string("no integer");
+    ThrowCorrupt(database_path, row,
+                 fmt::format("{} holds {} (a count from 0 to {})", column, held, max));
+  }
+  return *count;
+}
+
 void CheckFinite(const std::string& database_path, const std::string& row,
                  const StoredSamples& signal) {
   for (std::size_t i = 0; i < signal.values.size(); ++i) {

@@ -25,6 +25,11 @@ namespace shockmap {
 const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
                               const std::string& row, const std::string& column);
 
+// A count stored as an integer from 0 to `max` (modes, steps); DbError "... <column> holds
+// <value> (a count from 0 to <max>)" otherwise.
+std::int64_t StoredCount(const QueryCell& cell, const std::string& database_path,
+                         const std::string& row, const std::string& column, std::int64_t max);
+
 // One stored signal, named by its column.
 struct StoredSamples {
   std::string_view column;

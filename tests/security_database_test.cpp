@@ -247,6 +247,17 @@ TEST_F(DatabaseCorruption, StoredTextThatIsNotTextIsADatabaseErrorNotAnInternalO
                 "database corrupt: study small: spec_json holds NULL where text belongs");
 }
 
+TEST_F(DatabaseCorruption, StoredCountsOutOfRangeAreADatabaseError) {
+  Canonical();
+  Edit("UPDATE scores SET n_modes = 1e300 WHERE point_id = 2");
+  ExpectRefused("criteria derive",
+                "database corrupt: point 2: n_modes holds 1e+300 (a count from 0 to 2147483647)");
+  Edit("UPDATE scores SET n_modes = 3, steps = -5 WHERE point_id = 2");
+  ExpectRefused("cost",
+                "database corrupt: point 2: steps holds -5 (a count from 0 to "
+                "9223372036854775807)");
+}
+
 TEST_F(DatabaseCorruption, ReportSkipsTheFigureOfACorruptReferenceAndWritesTheRest) {
   Canonical();
   Edit("UPDATE reference_runs SET shocks_json = '{bad' WHERE reference_id = 1");
