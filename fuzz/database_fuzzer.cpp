@@ -248,7 +248,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Tolerating([&] {
     for (const std::string& study : StudyNames(db)) Tolerating([&] { ReadStudy(db, study); });
   });
-  for (const char* leftover : {"-wal", "-shm", "-journal"}) unlink((db + leftover).c_str());
+  for (const char* file : {"", "-wal", "-shm", "-journal"}) unlink((db + file).c_str());
   return 0;
 }
 
