@@ -15,6 +15,7 @@
 #include "db/ensemble_members.h"
 #include "db/report_queries.h"
 #include "db/schema.h"
+#include "db/sqlite_handle.h"
 #include "db/study_database.h"
 #include "engine/provenance.h"
 #include "engine/reference_store.h"
@@ -43,7 +44,8 @@ std::optional<PointFigure> DrawFig3(const ReportContext& ctx, const StudySpec& s
                                     std::int64_t point_id, const StoredStudyPoint& stored) {
   const auto row = StoredReference(ctx.database_path, stored.reference_key);
   if (!row) return std::nullopt;
-  const auto reference = std::make_shared<const ReferenceRun>(FromReferenceRow(*row));
+  const auto reference =
+      std::make_shared<const ReferenceRun>(FromReferenceRow(*row, ctx.database_path));
   const ComparisonResult r = ScoreAgainstReference(ProblemOf(spec, stored.point),
                                                    OptionsOf(spec, stored.point), reference);
   const auto dir = ctx.dir / "points" / fmt::format("point_{}", point_id);
@@ -64,6 +66,7 @@ std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::
   const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
   const auto chosen = PointsWorthFig3(points, ctx.thresholds);
   std::map<std::int64_t, PointFigure> figures;
+  std::map<std::int64_t, std::string> skipped;  // A corrupt reference spoils its points only.
   const bool terminal = ::isatty(STDOUT_FILENO) != 0;
   for (std::int64_t id : chosen) {
     if (terminal)
@@ -71,11 +74,19 @@ std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::
     std::fflush(stdout);
     const auto found = stored.find(id);
     if (found == stored.end()) continue;
-    if (auto figure = DrawFig3(ctx, spec, id, found->second)) figures[id] = *figure;
+    try {
+      if (auto figure = DrawFig3(ctx, spec, id, found->second)) figures[id] = *figure;
+    } catch (const DbError& e) {
+      std::cerr << "shockmap: warning: Fig. 3 of point " << id << " not drawn: " << e.what()
+                << '\n';
+      skipped[id] = e.what();
+    }
   }
   fmt::print("  Fig. 3 drawn for {} of {} points; the other points' pages give the command\n",
              figures.size(), stored.size());
-  return CanonicalSections(ctx, spec, figures);
+  auto sections = CanonicalSections(ctx, spec, figures);
+  if (!skipped.empty()) sections.insert(sections.begin(), SkippedFigures(skipped));
+  return sections;
 }
 
 // "bundle.wire.stiffness_n_per_m = 1e+05, solver.r_ftrunc = 1000"

@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
 #include "db/schema.h"
+#include "db/stored_json.h"
 #include "db/study_database.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
@@ -98,9 +99,11 @@ void Size(const SizingFlags& f) {
 
 Scene StoredEnsembleScene(const StoredEnsemble& stored, const std::string& database_path,
                           const std::string& study) {
-  const nlohmann::json spec =
-      ParseJsonText(stored.spec_json, database_path + ": stored study " + study);
-  return ParseScene(spec.at("scene_json"), database_path + ": scene of study " + study);
+  return ReadStoredJson({database_path, "study " + study, "spec_json"}, stored.spec_json,
+                        [&](const nlohmann::json& spec) {
+                          return ParseScene(spec.at("scene_json"),
+                                            database_path + ": scene of study " + study);
+                        });
 }
 
 void AddSizingCommand(CLI::App& app) {

@@ -1,5 +1,7 @@
 #include "db/canonical_points.h"
 
+#include "db/corrupt_rows.h"
+
 namespace shockmap {
 
 const PointTable kCanonicalPoints{
@@ -58,14 +60,16 @@ void WriteScore(Connection& db, std::int64_t point_id, const std::optional<Score
 
 std::optional<ReferenceRow> FindReference(StudyDatabase& db, const std::string& reference_key) {
   using R = ReferenceRow;
-  return FindRow(db,
-                 "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, "
-                 "n_modes_free, n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, "
-                 "force_n, shocks_json FROM reference_runs WHERE reference_key = ?",
-                 reference_key, &R::reference_key, &R::reference_id, &R::r_k, &R::r_fref,
-                 &R::r_fref_check, &R::window_s, &R::convergence, &R::n_modes_free,
-                 &R::n_modes_contact, &R::n_transitions, &R::wall_s, &R::output_dt_s, &R::tip_m,
-                 &R::force_n, &R::shocks_json);
+  auto row = FindRow(db,
+                     "SELECT reference_id, r_k, r_fref, r_fref_check, window_s, convergence, "
+                     "n_modes_free, n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, "
+                     "force_n, shocks_json FROM reference_runs WHERE reference_key = ?",
+                     reference_key, &R::reference_key, &R::reference_id, &R::r_k, &R::r_fref,
+                     &R::r_fref_check, &R::window_s, &R::convergence, &R::n_modes_free,
+                     &R::n_modes_contact, &R::n_transitions, &R::wall_s, &R::output_dt_s, &R::tip_m,
+                     &R::force_n, &R::shocks_json);
+  if (row) CheckReference(db.Raw().Path(), *row);
+  return row;
 }
 
 std::int64_t StoreReference(StudyDatabase& db, const ReferenceRow& r, std::int64_t run_id) {

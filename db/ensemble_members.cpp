@@ -1,5 +1,10 @@
 #include "db/ensemble_members.h"
 
+#include <fmt/format.h>
+
+#include "db/corrupt_rows.h"
+#include "db/stored_json.h"
+
 namespace shockmap {
 
 const PointTable kEnsembleMembers{"ensemble_members", {"state", "setting_json", "member"}};
@@ -42,6 +47,13 @@ EnsembleZoneRow ZoneAt(const Statement& s, int first) {
   return z;
 }
 
+// A nominal run's largest forces, one per zone, are finite (the zones' count is the views'
+// to check against zones_json).
+void CheckEnsembleReference(const std::string& database_path, const EnsembleReferenceRow& r) {
+  CheckFinite(database_path, "ensemble reference " + std::to_string(r.reference_id),
+              {"max_force_n", r.max_force_n});
+}
+
 std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t study_id) {
   Statement s = c.Prepare(
       "SELECT reference_id, reference_key, state, status, message, zones_json, max_force_n, "
@@ -53,6 +65,7 @@ std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t stu
     EnsembleReferenceRow r;
     s.ReadColumns(r.reference_id, r.reference_key, r.state, r.status, r.message, r.zones_json,
                   r.max_force_n, r.steps, r.wall_s);
+    CheckEnsembleReference(c.Path(), r);
     rows.push_back(std::move(r));
   }
   return rows;
@@ -101,11 +114,13 @@ void WriteScore(Connection& c, std::int64_t point_id,
 std::optional<EnsembleReferenceRow> FindEnsembleReference(StudyDatabase& db,
                                                           const std::string& key) {
   using R = EnsembleReferenceRow;
-  return FindRow(db,
-                 "SELECT reference_id, state, status, message, zones_json, max_force_n, steps, "
-                 "wall_s FROM ensemble_references WHERE reference_key = ?",
-                 key, &R::reference_key, &R::reference_id, &R::state, &R::status, &R::message,
-                 &R::zones_json, &R::max_force_n, &R::steps, &R::wall_s);
+  auto row = FindRow(db,
+                     "SELECT reference_id, state, status, message, zones_json, max_force_n, steps, "
+                     "wall_s FROM ensemble_references WHERE reference_key = ?",
+                     key, &R::reference_key, &R::reference_id, &R::state, &R::status, &R::message,
+                     &R::zones_json, &R::max_force_n, &R::steps, &R::wall_s);
+  if (row) CheckEnsembleReference(db.Raw().Path(), *row);
+  return row;
 }
 
 std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRow& r,
@@ -117,6 +132,54 @@ std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRo
                    r.reference_key, r.state, r.status, r.message, r.zones_json, r.max_force_n,
                    r.steps, r.wall_s, run_id, UtcNow());
 }
+
+namespace {
+
+// The zones of a nominal run, by name, from its zones_json: [{"name": ..., ...}, ...].
+std::size_t ZoneCount(const std::string& database_path, const EnsembleReferenceRow& r) {
+  const StoredCell cell{database_path, "ensemble reference " + std::to_string(r.reference_id),
+                        "zones_json"};
+  const std::size_t zones = ReadStoredJson(cell, r.zones_json, [](const nlohmann::json& zones) {
+    for (const auto& z : zones.get<std::vector<nlohmann::json>>()) z.at("name").get<std::string>();
+    return zones.size();
+  });
+  if (!r.max_force_n.empty() && r.max_force_n.size() != zones) {
+    ThrowCorruptCell(cell, fmt::format("{} zones, but max_force_n holds {} forces", zones,
+                                       r.max_force_n.size()));
+  }
+  return zones;
+}
+
+// What the views read of a stored ensemble is whole: its spec and settings are JSON objects,
+// every nominal run names the same zones, and every member has a row for each.
+void CheckEnsemble(const std::string& database_path, const std::string& study,
+                   const StoredEnsemble& e) {
+  const StoredCell spec{database_path, "study " + study, "spec_json"};
+  if (!ParseStoredJson(spec, e.spec_json).is_object()) ThrowCorruptCell(spec, "not a JSON object");
+  std::optional<std::size_t> zones;
+  for (const EnsembleReferenceRow& r : e.references) {
+    if (r.zones_json.empty()) continue;
+    const std::size_t count = ZoneCount(database_path, r);
+    if (zones && count != *zones) {
+      ThrowCorrupt(database_path, "ensemble reference " + std::to_string(r.reference_id),
+                   fmt::format("{} zones, another nominal run of the study {}", count, *zones));
+    }
+    zones = count;
+  }
+  for (const StoredMember& m : e.members) {
+    const std::string row = "ensemble member " + std::to_string(m.point_id);
+    const StoredCell setting{database_path, row, "setting_json"};
+    if (!ParseStoredJson(setting, m.setting_json).is_object()) {
+      ThrowCorruptCell(setting, "not a JSON object");
+    }
+    if (zones && m.zones.size() != *zones) {
+      ThrowCorrupt(database_path, row,
+                   fmt::format("{} zone rows, its nominal run {} zones", m.zones.size(), *zones));
+    }
+  }
+}
+
+}  // namespace
 
 StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   Statement find = c.Prepare(
@@ -135,6 +198,7 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   }
   e.references = ReadReferences(c, study_id);
   e.members = ReadMembers(c, study_id);
+  CheckEnsemble(c.Path(), study, e);
   return e;
 }
 

@@ -1,5 +1,6 @@
 #include "db/report_queries.h"
 
+#include "db/corrupt_rows.h"
 #include "db/stored_signals.h"
 
 namespace shockmap {
@@ -51,7 +52,7 @@ std::optional<std::string> StoredStudySpec(const std::string& database_path,
   const QueryResult spec =
       RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = ?1", {study});
   if (spec.rows.empty()) return std::nullopt;
-  return std::get<std::string>(spec.rows.front().front());
+  return StoredText(spec.rows.front().front(), database_path, "study " + study, "spec_json");
 }
 
 }  // namespace shockmap

@@ -1,5 +1,7 @@
 #include "db/scene_points.h"
 
+#include "db/corrupt_rows.h"
+
 namespace shockmap {
 
 namespace {
@@ -52,13 +54,16 @@ void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneS
 
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key) {
   using R = SceneReferenceRow;
-  return FindRow(db,
-                 "SELECT reference_id, parameters_json, status, message, output_dt_s, "
-                 "displacement_m, force_n, steps, wall_s, max_energy_ratio FROM scene_references "
-                 "WHERE reference_key = ?",
-                 key, &R::reference_key, &R::reference_id, &R::parameters_json, &R::status,
-                 &R::message, &R::output_dt_s, &R::displacement_m, &R::force_n, &R::steps,
-                 &R::wall_s, &R::max_energy_ratio);
+  auto row =
+      FindRow(db,
+              "SELECT reference_id, parameters_json, status, message, output_dt_s, "
+              "displacement_m, force_n, steps, wall_s, max_energy_ratio FROM scene_references "
+              "WHERE reference_key = ?",
+              key, &R::reference_key, &R::reference_id, &R::parameters_json, &R::status,
+              &R::message, &R::output_dt_s, &R::displacement_m, &R::force_n, &R::steps, &R::wall_s,
+              &R::max_energy_ratio);
+  if (row) CheckSceneReference(db.Raw().Path(), *row);
+  return row;
 }
 
 std::int64_t StoreSceneReference(StudyDatabase& db, const SceneReferenceRow& r,

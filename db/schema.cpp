@@ -1,8 +1,10 @@
 #include "db/schema.h"
 
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "db/scene_points.h"
 
@@ -455,25 +457,89 @@ int PragmaInt(Connection& db, const char* pragma) {
   return s.Step() ? static_cast<int>(s.GetInt(0)) : 0;
 }
 
-// The definition of every view (and trigger: none) a new database gets, by name, as SQLite
-// stores them: read once from a database migrated in memory.
-const std::map<std::string, std::string>& FreshViewsAndTriggers() {
-  static const std::map<std::string, std::string> fresh = [] {
-    Connection memory(":memory:", Connection::Mode::kReadWriteCreate);
-    for (const char* migration : kMigrations) memory.Execute(migration);
-    std::map<std::string, std::string> sql;
+// What a schema version is made of, one entry per table, view and table column: "table points",
+// "column points.host", "view results" (a view's columns vary: scene_params).
+using SchemaObjects = std::set<std::string>;
+
+SchemaObjects ObjectsOf(Connection& db) {
+  SchemaObjects objects;
+  std::vector<std::string> tables;
+  Statement s = db.Prepare(
+      "SELECT type, name FROM sqlite_schema WHERE type IN ('table', 'view') AND name NOT LIKE "
+      "'sqlite\\_%' ESCAPE '\\'");
+  while (s.Step()) {
+    objects.insert(s.GetText(0) + " " + s.GetText(1));
+    if (s.GetText(0) == "table") tables.push_back(s.GetText(1));
+  }
+  for (const std::string& table : tables) {
+    Statement columns = db.Prepare("SELECT name FROM pragma_table_info(?)");
+    columns.Bind(1, table);
+    while (columns.Step()) objects.insert("column " + table + "." + columns.GetText(0));
+  }
+  return objects;
+}
+
+// What a new database is made of: the migrations applied in turn to an empty database in
+// memory, once per process.
+struct FreshSchema {
+  std::vector<SchemaObjects> objects;  // Of each version, index = version.
+  // The definition of every view and trigger (none) of the current version, by name, as SQLite
+  // stores them.
+  std::map<std::string, std::string> views_and_triggers;
+};
+
+const FreshSchema& Fresh() {
+  static const FreshSchema fresh = [] {
+    Connection scratch(":memory:", Connection::Mode::kReadWriteCreate);
+    FreshSchema f{{ObjectsOf(scratch)}, {}};
+    for (const char* migration : kMigrations) {
+      scratch.Execute(migration);
+      f.objects.push_back(ObjectsOf(scratch));
+    }
     Statement s =
-        memory.Prepare("SELECT name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
-    while (s.Step()) sql[s.GetText(0)] = s.GetText(1);
-    return sql;
+        scratch.Prepare("SELECT name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
+    while (s.Step()) f.views_and_triggers[s.GetText(0)] = s.GetText(1);
+    return f;
   }();
   return fresh;
+}
+
+// The first of `objects` not in `in`, tables and views before columns (a table that is missing
+// is named, not its first column), or "" when `objects` lies within `in`.
+std::string FirstMissing(const SchemaObjects& objects, const SchemaObjects& in) {
+  for (const bool columns : {false, true}) {
+    for (const std::string& o : objects) {
+      if (o.starts_with("column ") == columns && !in.contains(o)) return o;
+    }
+  }
+  return "";
+}
+
+// Throws unless the file's tables agree with its version: it holds every table, view and column
+// of that version, and none that the next migration adds (it would fail on them half-way).
+void CheckTablesMatch(Connection& db, int version) {
+  const std::vector<SchemaObjects>& versions = Fresh().objects;
+  const SchemaObjects present = ObjectsOf(db);
+  const std::string corrupt = db.Path() + ": database corrupt: schema version " +
+                              std::to_string(version) + " disagrees with its tables: ";
+  if (const std::string missing = FirstMissing(versions[version], present); !missing.empty()) {
+    throw DbError(corrupt + missing + " of version " + std::to_string(version) + " is missing");
+  }
+  if (version == kSchemaVersion) return;
+  SchemaObjects added;
+  for (const std::string& o : versions[version + 1]) {
+    if (!versions[version].contains(o) && present.contains(o)) added.insert(o);
+  }
+  if (const std::string first = FirstMissing(added, {}); !first.empty()) {
+    throw DbError(corrupt + first + ", added by version " + std::to_string(version + 1) +
+                  ", is already there");
+  }
 }
 
 // True when `sql` is how this build defines `name` in `file`: as in a new database or, for
 // scene_params, with the columns of the parameter paths stored in the file.
 bool IsOurs(Connection& file, const std::string& name, const std::string& sql) {
-  const auto& fresh = FreshViewsAndTriggers();
+  const auto& fresh = Fresh().views_and_triggers;
   const auto our = fresh.find(name);
   if (our != fresh.end() && our->second == sql) return true;
   return name == "scene_params" && sql == SceneParamsViewSql(file);
@@ -495,7 +561,8 @@ void CheckEntriesAreOurs(Connection& db, std::string_view type) {
   }
 }
 
-// Throws unless the file is empty, or ours at a version this build can read.
+// Throws unless the file is empty, or ours at a version this build can read with the tables of
+// that version and no view or trigger of another program.
 int CheckedVersion(Connection& db) {
   {
     Statement check = db.Prepare("PRAGMA quick_check");
@@ -519,6 +586,12 @@ int CheckedVersion(Connection& db) {
                   std::to_string(version) + ", this build reads up to " +
                   std::to_string(kSchemaVersion) + ")");
   }
+  if (version < 0) {
+    throw DbError(db.Path() + ": database corrupt: schema version " + std::to_string(version) +
+                  " (PRAGMA user_version) is none shockmap writes (0 to " +
+                  std::to_string(kSchemaVersion) + ")");
+  }
+  CheckTablesMatch(db, version);
   CheckEntriesAreOurs(db, "trigger");
   if (version == kSchemaVersion) CheckEntriesAreOurs(db, "view");  // Older ones are rewritten.
   return version;

@@ -204,6 +204,10 @@ std::optional<double> Statement::GetOptionalDouble(int i) const {
 std::vector<double> Statement::GetBlob(int i) const {
   const void* p = sqlite3_column_blob(stmt_, i);
   const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, i));
+  if (bytes % sizeof(double) != 0) {
+    throw DbError("database corrupt: column " + ColumnName(i) + " holds " + std::to_string(bytes) +
+                  " bytes, not a whole number of 8-byte float64 values");
+  }
   std::vector<double> v(bytes / sizeof(double));
   if (p != nullptr && !v.empty()) std::memcpy(v.data(), p, v.size() * sizeof(double));
   return v;

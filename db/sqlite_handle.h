@@ -98,6 +98,7 @@ class Statement {
   std::int64_t GetInt(int i) const;
   std::string GetText(int i) const;
   std::optional<double> GetOptionalDouble(int i) const;
+  // A blob of little-endian float64 values; DbError when its size is not a multiple of 8.
   std::vector<double> GetBlob(int i) const;
   // Reads the current row's columns 0, 1, ... into `out` in order, each by its type (double,
   // std::int64_t, int, std::string, std::optional<double> or a blob of doubles).

@@ -3,6 +3,7 @@
 #include <bit>
 #include <memory>
 
+#include "db/corrupt_rows.h"
 #include "db/read_only_query.h"
 #include "db/schema.h"
 
@@ -55,6 +56,7 @@ std::optional<ReferenceRow> ReadReference(const std::string& database_path,
   s.ReadColumns(r.reference_key, r.r_k, r.r_fref, r.r_fref_check, r.window_s, r.convergence,
                 r.n_modes_free, r.n_modes_contact, r.n_transitions, r.wall_s, r.output_dt_s,
                 r.tip_m, r.force_n, r.shocks_json);
+  CheckReference(database_path, r);
   return r;
 }
 
@@ -80,12 +82,18 @@ std::optional<StoredSignals> ReadSceneReferenceSignals(const std::string& databa
                                                        std::int64_t reference_id) {
   const auto db = OpenReadOnly(database_path);
   Statement s = db->Prepare(
-      "SELECT output_dt_s, displacement_m, force_n FROM scene_references WHERE reference_id = ?");
+      "SELECT status, output_dt_s, displacement_m, force_n FROM scene_references WHERE "
+      "reference_id = ?");
   s.Bind(1, reference_id);
   if (!s.Step()) return std::nullopt;
-  StoredSignals signals{reference_id, 0.0, {"displacement_m", "contact_force_n"}, {{}, {}}};
-  s.ReadColumns(signals.output_dt_s, signals.values[0], signals.values[1]);
-  return signals;
+  SceneReferenceRow r;
+  r.reference_id = reference_id;
+  s.ReadColumns(r.status, r.output_dt_s, r.displacement_m, r.force_n);
+  CheckSceneReference(database_path, r);
+  return StoredSignals{reference_id,
+                       r.output_dt_s,
+                       {"displacement_m", "contact_force_n"},
+                       {std::move(r.displacement_m), std::move(r.force_n)}};
 }
 
 std::optional<std::string> CanonicalPointKey(const std::string& database_path,
@@ -96,7 +104,8 @@ std::optional<std::string> CanonicalPointKey(const std::string& database_path,
       "p.point_id = CAST(?2 AS INTEGER)",
       {study, std::to_string(point_id)});
   if (r.rows.empty()) return std::nullopt;
-  return std::get<std::string>(r.rows.front().front());
+  return StoredText(r.rows.front().front(), database_path, "point " + std::to_string(point_id),
+                    "point_key");
 }
 
 }  // namespace shockmap

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "db/corrupt_rows.h"
 #include "db/study_database.h"
 
 namespace shockmap {
@@ -34,7 +35,8 @@ QueryResult StudyOrigins(const std::string& database_path) {
 std::vector<std::string> StudyNames(const std::string& database_path) {
   const QueryResult r = RunReadOnlyQuery(database_path, "SELECT name FROM studies ORDER BY name");
   std::vector<std::string> names;
-  for (const auto& row : r.rows) names.push_back(std::get<std::string>(row[0]));
+  for (const auto& row : r.rows)
+    names.push_back(StoredText(row[0], database_path, "a study", "name"));
   return names;
 }
 

@@ -125,8 +125,8 @@ std::optional<StoredReference<CanonicalStudy::Reference>> CanonicalStudy::FindRe
   return StoredReference<Reference>{
       row->reference_id,
       {key, row->r_k, row->window_s,
-       std::make_shared<const ReferenceRun>(
-           WithTipSpectrum(FromReferenceRow(*row), spec_.scoring.psd, row->window_s))}};
+       std::make_shared<const ReferenceRun>(WithTipSpectrum(FromReferenceRow(*row, db.Raw().Path()),
+                                                            spec_.scoring.psd, row->window_s))}};
 }
 
 std::int64_t CanonicalStudy::StoreReference(StudyDatabase& db, const Reference& reference,

@@ -35,9 +35,9 @@ ReplayedPoint ReplayCanonicalPoint(const std::string& database_path, const std::
   const auto reference = ReadReference(database_path, *reference_id);
   if (!reference) throw InputError(what + ": its reference is missing from " + database_path);
   ReplayedPoint replay{{}, ProblemOf(spec, *point), OptionsOf(spec, *point)};
-  replay.result =
-      ScoreAgainstReference(replay.problem, replay.options,
-                            std::make_shared<const ReferenceRun>(FromReferenceRow(*reference)));
+  replay.result = ScoreAgainstReference(
+      replay.problem, replay.options,
+      std::make_shared<const ReferenceRun>(FromReferenceRow(*reference, database_path)));
   return replay;
 }
 

@@ -2,8 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "db/stored_json.h"
 #include "formats/comparison_json.h"
-#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -44,12 +44,19 @@ ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& referenc
   return row;
 }
 
-ReferenceRun FromReferenceRow(const ReferenceRow& row) {
+ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& database_path) {
   ReferenceRun run;
   run.tip_m = {0.0, row.output_dt_s, row.tip_m};
   run.force_n = {0.0, row.output_dt_s, row.force_n};
-  for (const auto& s : ParseJsonText(row.shocks_json, "stored reference shocks"))
-    run.shocks.push_back(ShockFromJson(s));
+  run.shocks = ReadStoredJson(
+      {database_path, "reference " + std::to_string(row.reference_id), "shocks_json"},
+      row.shocks_json, [](const nlohmann::json& shocks) {
+        std::vector<Shock> read;
+        for (const auto& s : shocks.get<std::vector<nlohmann::json>>()) {
+          read.push_back(ShockFromJson(s));
+        }
+        return read;
+      });
   run.summary.n_modes_free = row.n_modes_free;
   run.summary.n_modes_contact = row.n_modes_contact;
   run.summary.n_transitions = row.n_transitions;

@@ -8,6 +8,7 @@ namespace shockmap {
 
 ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& reference_key, double r_k,
                             double window_s);
-ReferenceRun FromReferenceRow(const ReferenceRow& row);
+// Throws DbError when its stored shocks (shocks_json) are not what ToReferenceRow writes.
+ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& database_path);
 
 }  // namespace shockmap

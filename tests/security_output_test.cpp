@@ -3,7 +3,6 @@
 // unbounded queries, databases on read-only media. One suite per class of fault.
 
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 #include <unistd.h>
 
 #include <array>
@@ -364,10 +363,9 @@ TEST_F(ReadOnlyMedia, ReadOnlyDatabaseFileGetsNoWalOrShmBesideIt) {
 }
 
 TEST_F(ReadOnlyMedia, OldSchemaAdviceNamesACommandThatMigrates) {
-  sqlite3* db = nullptr;
-  ASSERT_EQ(sqlite3_open(Path("ro/s.db").c_str(), &db), SQLITE_OK);
-  sqlite3_exec(db, "PRAGMA user_version = 1", nullptr, nullptr, nullptr);
-  sqlite3_close(db);
+  // A file of schema version 2, as an older shockmap wrote it.
+  std::filesystem::copy_file(std::string(SHOCKMAP_SOURCE_DIR) + "/tests/data/schema_v2.db",
+                             Path("ro/s.db"), std::filesystem::copy_options::overwrite_existing);
   const Outcome o = Shell(kBin + " query 'SELECT 1' --db " + Sh(Path("ro/s.db")));
   EXPECT_EQ(o.exit_code, 2) << o.output;
   EXPECT_NE(o.output.find("study run"), std::string::npos) << o.output;

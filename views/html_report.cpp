@@ -205,6 +205,14 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
   };
 }
 
+ReportSection SkippedFigures(const std::map<std::int64_t, std::string>& reasons) {
+  std::string html = "<p>Fig. 3 was not drawn for these points:</p>\n<ul>\n";
+  for (const auto& [point_id, reason] : reasons) {
+    html += fmt::format("<li>point {}: {}</li>\n", point_id, HtmlEscaped(reason));
+  }
+  return {"skipped-figures", "Figures not drawn", html + "</ul>\n"};
+}
+
 std::filesystem::path WriteReportIndex(const ReportContext& ctx,
                                        const std::vector<ReportSection>& sections) {
   const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);

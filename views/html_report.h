@@ -47,6 +47,10 @@ std::vector<std::int64_t> PointsWorthFig3(const std::vector<ScoredPoint>& points
 std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const StudySpec& spec,
                                              const std::map<std::int64_t, PointFigure>& figures);
 
+// The points whose Fig. 3 the report could not draw, each with why (a corrupt stored
+// reference: the database's message).
+ReportSection SkippedFigures(const std::map<std::int64_t, std::string>& reasons);
+
 // A contact-force map drawn for a scene study: what it shows, and the map's image.
 struct SceneForceMap {
   std::string label;

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "db/corrupt_rows.h"
 #include "db/report_queries.h"
 #include "views/html_text.h"
 #include "views/report_page.h"
@@ -84,9 +85,11 @@ std::map<std::int64_t, StoredStudyPoint> StudyPointsById(const std::string& data
   for (const StudyPoint& p : spec.points) by_key[PointKey(p)] = &p;
   std::map<std::int64_t, StoredStudyPoint> points;
   for (const auto& row : PointKeys(database_path, study).rows) {
-    const auto found = by_key.find(std::get<std::string>(row[1]));
+    const std::int64_t id = std::get<std::int64_t>(row[0]);  // point_id: INTEGER PRIMARY KEY.
+    const std::string what = "point " + std::to_string(id);
+    const auto found = by_key.find(StoredText(row[1], database_path, what, "point_key"));
     if (found == by_key.end()) continue;
-    points[std::get<std::int64_t>(row[0])] = {*found->second, std::get<std::string>(row[2])};
+    points[id] = {*found->second, StoredText(row[2], database_path, what, "reference_key")};
   }
   return points;
 }

@@ -1,8 +1,10 @@
 #include "views/scored_points.h"
 
+#include <limits>
 #include <variant>
 
 #include "core/input_error.h"
+#include "db/corrupt_rows.h"
 #include "db/study_queries.h"
 
 namespace shockmap {
@@ -48,7 +50,8 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.point_id = std::get<std::int64_t>(row[0]);
     p.r_k = Real(row[1]);
     p.r_ftrunc = Real(row[2]);
-    const std::string& status = std::get<std::string>(row[3]);
+    const std::string what = "point " + std::to_string(p.point_id);
+    const std::string& status = StoredText(row[3], database_path, what, "status");
     const auto parsed = RunStatusFromString(status);
     if (!parsed) {
       throw InputError(database_path + ": point " + std::to_string(p.point_id) +
@@ -61,8 +64,10 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.dt_sharp_s = Real(row[7]);
     p.dt_paper_s = Real(row[8]);
     p.wall_s = Real(row[9]);
-    p.n_modes = static_cast<int>(Real(row[10]));
-    p.steps = static_cast<std::int64_t>(Real(row[11]));
+    p.n_modes = static_cast<int>(
+        StoredCount(row[10], database_path, what, "n_modes", std::numeric_limits<int>::max()));
+    p.steps = StoredCount(row[11], database_path, what, "steps",
+                          std::numeric_limits<std::int64_t>::max());
     p.cpu_s = Real(row[12]);
     points.push_back(p);
   }

@@ -1,0 +1,60 @@
+#pragma once
+// Checks of rows read back from a study database. A file that was mailed, edited or damaged
+// must be refused with DbError "<file>: database corrupt: <row>: <reason>", never used: a
+// signal of the wrong length would be read past its end, a wrong sampling step would rescore
+// a point against another history.
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "db/canonical_points.h"
+#include "db/read_only_query.h"
+#include "db/scene_points.h"
+
+namespace shockmap {
+
+// Throws DbError "<database_path>: database corrupt: <row>: <reason>".
+[[noreturn]] void ThrowCorrupt(const std::string& database_path, const std::string& row,
+                               const std::string& reason);
+
+// The text of a cell its column declares TEXT NOT NULL; DbError "<database_path>: database
+// corrupt: <row>: <column> holds <what it holds> where text belongs" when the file holds
+// something else there (SQLite does not check the constraint on reading).
+const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
+                              const std::string& row, const std::string& column);
+
+// A count stored as an integer from 0 to `max` (modes, steps); DbError "... <column> holds
+// <value> (a count from 0 to <max>)" otherwise.
+std::int64_t StoredCount(const QueryCell& cell, const std::string& database_path,
+                         const std::string& row, const std::string& column, std::int64_t max);
+
+// One stored signal, named by its column.
+struct StoredSamples {
+  std::string_view column;
+  const std::vector<double>& values;
+};
+
+// Throws unless every value of `signal` is finite.
+void CheckFinite(const std::string& database_path, const std::string& row,
+                 const StoredSamples& signal);
+
+// Signals sampled together: throws unless every one holds as many samples as the first.
+void CheckEqualLengths(const std::string& database_path, const std::string& row,
+                       std::initializer_list<StoredSamples> signals);
+
+// Signals sampled together every output_dt_s: throws unless output_dt_s is finite and > 0,
+// every signal holds as many samples as the first, and every sample is finite.
+void CheckSampledTogether(const std::string& database_path, const std::string& row,
+                          double output_dt_s, std::initializer_list<StoredSamples> signals);
+
+// A reference of the paper's problem: its signals sampled together, as many samples as its
+// window sampled every output_dt_s holds (as the reference solver samples it).
+void CheckReference(const std::string& database_path, const ReferenceRow& reference);
+
+// A scene study's reference: its signals sampled together when it ended 'ok'; of equal lengths
+// otherwise (a failed or diverged reference scores nothing, and may hold no signal).
+void CheckSceneReference(const std::string& database_path, const SceneReferenceRow& reference);
+
+}  // namespace shockmap
