@@ -1,0 +1,87 @@
+// Results that used to be silently wrong, and checks that disagreed between commands: small
+// or edited ensembles, settings matched by their text, picture files shared by two states,
+// parameters a study overrides, windows inside one step, unchecked criteria and gap laws, and
+// flags refused by one command and taken by another. Each either works as documented or is
+// refused with exit code 2 and a message naming the file, key or flag, leaving no file behind.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "tests/run_command.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using testing::Outcome;
+using testing::RunShockmap;
+using testing::WriteText;
+
+// The planar bundle over 0.01 s (a few milliseconds per member), two clearance states, two
+// settings of the truncation.
+json SmallEnsemble(int members) {
+  return {{"kind", "scene_ensemble"},
+          {"name", "small"},
+          {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json"},
+          {"members", members},
+          {"seed", 11},
+          {"window_s", 0.01},
+          {"clearance_states",
+           {{{"name", "new"}, {"pin_gap_m", {{"mean", 5e-5}, {"std", 5e-6}}}},
+            {{"name", "worn"}, {"pin_gap_m", {{"mean", 1e-5}, {"std", 5e-6}}}}}},
+          {"settings", {{"solver.r_ftrunc", {30, 100}}}},
+          {"refined", {{"solver.r_ftrunc", 100.0}}}};
+}
+
+class SecurityResults : public testing::TempDirTest {
+ protected:
+  std::string Write(const json& spec, const std::string& name = "study.json") {
+    const std::string file = Path(name);
+    WriteText(file, spec.dump(2));
+    return file;
+  }
+  Outcome RunStudy(const json& spec, const std::string& db = "e.db") {
+    return RunShockmap("study run " + Write(spec) + " --db " + Path(db) + " --jobs 2 --quiet");
+  }
+  // A refusal: exit code 2, every expected word in the message, no database created.
+  void ExpectRefused(const json& spec, const std::vector<std::string>& words) {
+    const Outcome o = RunStudy(spec, "refused.db");
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    for (const std::string& w : words) EXPECT_NE(o.output.find(w), std::string::npos) << o.output;
+    EXPECT_FALSE(fs::exists(Path("refused.db")));
+  }
+};
+
+bool Has(const Outcome& o, const std::string& text) {
+  return o.output.find(text) != std::string::npos;
+}
+
+// The window and the outputs are the study's own; varying them is refused.
+TEST_F(SecurityResults, WindowAndOutputsCannotBeVaried) {
+  json settings = SmallEnsemble(3);
+  settings["settings"] = {{"solver.end_time_s", {0.01, 0.02}}};
+  settings["refined"] = {{"solver.end_time_s", 0.02}};
+  ExpectRefused(settings, {"settings.solver.end_time_s", "window_s", "override"});
+  json draws = SmallEnsemble(3);
+  draws["draws"] = {{"outputs.record_stride", {{"uniform", {{"min", 1}, {"max", 20}}}}}};
+  ExpectRefused(draws, {"draws.outputs.record_stride", "records", "override"});
+  const json sweep = {
+      {"kind", "scene_sweep"},
+      {"name", "sweep"},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json"},
+      {"sweep", {{"solver.end_time_s", {0.01, 0.02}}}},
+      {"reference", {{"solver.r_ftrunc", 1000}}},
+      {"scoring",
+       {{"displacement", "duct_top"}, {"zone", "duct-pad"}, {"rest_duration_s", 0.005}}}};
+  ExpectRefused(sweep, {"sweep.solver.end_time_s", "window_s"});
+}
+
+}  // namespace
+}  // namespace shockmap
