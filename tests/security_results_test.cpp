@@ -63,6 +63,17 @@ bool Has(const Outcome& o, const std::string& text) {
   return o.output.find(text) != std::string::npos;
 }
 
+// Two states whose names give the same picture files are refused, naming both.
+TEST_F(SecurityResults, StateNamesSharingPictureFilesAreRefused) {
+  for (const char* second : {"a_b", "A B"}) {
+    json spec = SmallEnsemble(3);
+    spec["clearance_states"][0]["name"] = "a b";
+    spec["clearance_states"][1]["name"] = second;
+    ExpectRefused(spec, {"clearance_states[1]", "name", std::string("\"") + second + "\"",
+                         "\"a b\"", "same picture files"});
+  }
+}
+
 // The window and the outputs are the study's own; varying them is refused.
 TEST_F(SecurityResults, WindowAndOutputsCannotBeVaried) {
   json settings = SmallEnsemble(3);
