@@ -63,6 +63,31 @@ bool Has(const Outcome& o, const std::string& text) {
   return o.output.find(text) != std::string::npos;
 }
 
+// Fewer than 10 members per state still give every table and picture.
+TEST_F(SecurityResults, SmallEnsembleWritesItsPicturesAndReport) {
+  ASSERT_EQ(RunStudy(SmallEnsemble(3)).exit_code, 0);
+  const Outcome sizing = RunShockmap("sizing --db " + Path("e.db") + " --out " + Path("sizing"));
+  ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
+  for (const char* picture : {"convergence_new.png", "convergence_worn.png", "histogram_new.png",
+                              "map_worn.png", "states.png", "settings.png"}) {
+    EXPECT_GT(fs::file_size(Path(std::string("sizing/") + picture)), 1000u) << picture;
+  }
+  const Outcome report = RunShockmap("report --db " + Path("e.db") + " --out " + Path("report"));
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_TRUE(fs::exists(Path("report/index.html")));
+  EXPECT_TRUE(fs::exists(Path("report/sizing/convergence_new.png")));
+}
+
+// Class 8: "refined": 100.0 names the setting 100 (as the study file accepted it).
+TEST_F(SecurityResults, RefinedSettingIsMatchedByValue) {
+  ASSERT_EQ(RunStudy(SmallEnsemble(3)).exit_code, 0);
+  const Outcome o = RunShockmap("sizing --db " + Path("e.db") + " --out " + Path("sizing"));
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(Has(o, "{\"solver.r_ftrunc\":100} (refined)")) << o.output;
+  EXPECT_FALSE(Has(o, "{\"solver.r_ftrunc\":100} against the refined setting")) << o.output;
+  EXPECT_GT(fs::file_size(Path("sizing/settings.png")), 1000u);
+}
+
 // Two states whose names give the same picture files are refused, naming both.
 TEST_F(SecurityResults, StateNamesSharingPictureFilesAreRefused) {
   for (const char* second : {"a_b", "A B"}) {

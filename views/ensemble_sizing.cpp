@@ -26,10 +26,11 @@ void CheckOptions(const SizingOptions& o) {
   }
 }
 
-// The refined setting as the members store it: the file's "refined", or its only setting.
-std::string RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) {
-  if (spec.contains("refined")) return spec.at("refined").dump();
-  return members.front().setting_json;
+// The refined setting: the file's "refined", or the members' only setting. Compared by value,
+// as the study file matched it (100.0 is the setting 100).
+Json RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) {
+  if (spec.contains("refined")) return spec.at("refined");
+  return Json::parse(members.front().setting_json);
 }
 
 std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
@@ -44,7 +45,7 @@ std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
 
 // The members of each (state, setting), in the order the study lists them.
 std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> Groups(
-    const StoredEnsemble& stored, const std::string& refined) {
+    const StoredEnsemble& stored, const Json& refined) {
   std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> groups;
   std::map<std::pair<std::string, std::string>, std::size_t> index;
   for (const StoredMember& m : stored.members) {
@@ -53,7 +54,7 @@ std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> Groups(
       GroupSizing g;
       g.state = m.state;
       g.setting_json = m.setting_json;
-      g.refined = m.setting_json == refined;
+      g.refined = Json::parse(m.setting_json) == refined;
       groups.push_back({std::move(g), {}});
     }
     groups[it->second].second.push_back(&m);

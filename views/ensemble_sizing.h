@@ -82,8 +82,9 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
 // when either interval is unbounded.
 std::optional<bool> Agrees(const ZoneSizing& setting, const ZoneSizing& refined, double tolerance);
 
-// The sizing estimate of the first n members for growing n (10 to all, about 12 per decade),
-// and the least-squares slope of log(interval width) against log(n) over the bounded ones.
+// The sizing estimate of the first n members for growing n (10, or all when fewer, to all;
+// about 12 per decade), and the least-squares slope of log(interval width) against log(n) over
+// the bounded ones.
 struct ConvergencePoint {
   int members = 0;
   QuantileInterval sizing;

@@ -44,20 +44,21 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
   const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
                                         Percent(s.options.quantile), g.zones[g.hottest].name,
                                         Percent(s.options.confidence));
-  return Draw(image,
-              fmt::format(
-                  R"(set title {title} noenhanced
+  return Draw(
+      image,
+      fmt::format(
+          R"(set title {title} noenhanced
 set xlabel 'members'
 set ylabel 'force (N)'
 set logscale x
-set xrange [9:{last}]
+set xrange [{first}:{last}]
 set key top left
 plot {data} using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' fs solid 0.5 title 'interval (both sides bounded)', \
      '' using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate', \
      '' using 1:($6 > 0 ? 1/0 : $2) with points pt 9 ps 1.5 lc rgb '#de2d26' title 'upper side unbounded (too few members)'
 )",
-                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", 1.15 * forces.size()),
-                  fmt::arg("data", GnuplotFileName(data))));
+          fmt::arg("title", GnuplotQuoted(title)), fmt::arg("first", 0.9 * points.front().members),
+          fmt::arg("last", 1.15 * forces.size()), fmt::arg("data", GnuplotFileName(data))));
 }
 
 fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
@@ -242,7 +243,8 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
                                         "streamed) per clearance state",
                                         q)});
   }
-  if (s.groups.size() > RefinedGroups(s).size()) {
+  // Each state's settings are drawn about its refined group's hottest zone.
+  if (!RefinedGroups(s).empty() && s.groups.size() > RefinedGroups(s).size()) {
     pictures.push_back(
         {Settings(s, folder), fmt::format("{} of the hottest zone per numerical setting", q)});
   }
