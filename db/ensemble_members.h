@@ -83,6 +83,8 @@ struct StoredEnsemble {
   std::vector<EnsembleReferenceRow> references;  // One per state whose nominal was stored.
   std::vector<StoredMember> members;             // By point_id.
   std::int64_t pending = 0, failed = 0;          // Members not computed, or not ok.
+  // Computed members the study file, as last run, no longer has (views' CurrentMembers).
+  std::int64_t superseded = 0;
 };
 // Throws DbError when the study does not exist or is not an ensemble study.
 StoredEnsemble ReadEnsemble(Connection& c, const std::string& study);

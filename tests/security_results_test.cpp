@@ -119,5 +119,23 @@ TEST_F(SecurityResults, WindowAndOutputsCannotBeVaried) {
   ExpectRefused(sweep, {"sweep.solver.end_time_s", "window_s"});
 }
 
+// Members, states and settings the study file no longer has are not counted.
+TEST_F(SecurityResults, SizingCountsOnlyTheMembersOfTheCurrentFile) {
+  ASSERT_EQ(RunStudy(SmallEnsemble(4)).exit_code, 0);
+  json fewer = SmallEnsemble(2);
+  fewer["clearance_states"].erase(1);
+  fewer["settings"] = {{"solver.r_ftrunc", {100}}};
+  const Outcome rerun = RunStudy(fewer);
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
+  const Outcome o = RunShockmap("sizing --db " + Path("e.db") + " --format csv");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_FALSE(Has(o, "worn")) << o.output;
+  EXPECT_FALSE(Has(o, "\":30}")) << o.output;
+  EXPECT_TRUE(Has(o, "new,\"{\"\"solver.r_ftrunc\"\":100} (refined)\",2,")) << o.output;
+  const Outcome table = RunShockmap("sizing --db " + Path("e.db"));
+  EXPECT_TRUE(Has(table, "14 stored members the study file no longer has: not counted"))
+      << table.output;
+}
+
 }  // namespace
 }  // namespace shockmap

@@ -33,6 +33,19 @@ Json RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) 
   return Json::parse(members.front().setting_json);
 }
 
+// Whether `setting` (a member's, {"path": value}) is one of the product of the file's
+// "settings" axes ({"path": [values]}; absent: the empty setting).
+bool IsSettingOf(const Json& setting, const Json& axes) {
+  if (setting.size() != (axes.is_object() ? axes.size() : 0)) return false;
+  for (const auto& [path, value] : setting.items()) {
+    const auto axis = axes.find(path);
+    if (axis == axes.end() || !axis->is_array() ||
+        std::find(axis->begin(), axis->end(), value) == axis->end())
+      return false;
+  }
+  return true;
+}
+
 std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
   for (const EnsembleReferenceRow& r : stored.references) {
     if (r.zones_json.empty()) continue;
@@ -188,6 +201,23 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
   return z;
 }
 
+StoredEnsemble CurrentMembers(StoredEnsemble stored) {
+  const Json spec = Json::parse(stored.spec_json);
+  const Json states = spec.value("clearance_states", Json::array({Json{{"name", "scene"}}}));
+  const Json axes = spec.value("settings", Json::object());
+  const int members = spec.value("members", 0);
+  std::erase_if(stored.members, [&](const StoredMember& m) {
+    const bool current =
+        m.member < members &&
+        std::any_of(states.begin(), states.end(),
+                    [&](const Json& s) { return s.value("name", "") == m.state; }) &&
+        IsSettingOf(Json::parse(m.setting_json), axes);
+    stored.superseded += current ? 0 : 1;
+    return !current;
+  });
+  return stored;
+}
+
 EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& study,
                             const SizingOptions& options) {
   CheckOptions(options);
@@ -201,6 +231,7 @@ EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& stu
   sizing.options = options;
   sizing.pending = stored.pending;
   sizing.failed = stored.failed;
+  sizing.superseded = stored.superseded;
   sizing.zone_names = ZoneNames(stored);
   const Json spec = Json::parse(stored.spec_json);
   for (auto& [group, members] : Groups(stored, RefinedSetting(spec, stored.members))) {

@@ -67,8 +67,14 @@ struct EnsembleSizing {
   SizingOptions options;
   std::vector<std::string> zone_names;
   std::vector<GroupSizing> groups;  // States in the file's order, then settings.
-  std::int64_t pending = 0, failed = 0;
+  std::int64_t pending = 0, failed = 0, superseded = 0;
 };
+
+// The stored members that the study file, as last run, still has: an index below its member
+// count, one of its clearance states, one of its settings (compared by value). Members of an
+// earlier file (more members, a state or a setting since removed) are dropped and counted in
+// `superseded`, so that the statistics are those of the current file.
+StoredEnsemble CurrentMembers(StoredEnsemble stored);
 
 // Throws InputError when the options are out of range, or the study holds no computed member.
 EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& study,
