@@ -137,5 +137,40 @@ TEST_F(SecurityResults, SizingCountsOnlyTheMembersOfTheCurrentFile) {
       << table.output;
 }
 
+// A window inside one step has nothing to score: the run fails, never passes.
+TEST_F(SecurityResults, WindowShorterThanOneStepFails) {
+  const Outcome compare = RunShockmap("compare --rk 10 --rftrunc 10 --window 1e-7");
+  EXPECT_TRUE(Has(compare,
+                  "status            failed (the window 1e-07 s is shorter than one "
+                  "time step (0.000231"))
+      << compare.output;
+  EXPECT_TRUE(Has(compare, " s): nothing to score)")) << compare.output;
+  EXPECT_TRUE(Has(compare, "Err               not scored")) << compare.output;
+  const json study = {
+      {"name", "short"},
+      {"scoring",
+       {{"window_s", 1e-7}, {"reference", {{"r_fref_min", 300}, {"r_fref_per_sqrt_rk", 3}}}}},
+      {"grids", {{{"rk", {10, 100}}, {"rftrunc", {10}}}}}};
+  ASSERT_EQ(RunStudy(study, "short.db").exit_code, 0);
+  const Outcome q = RunShockmap("query --db " + Path("short.db") +
+                                " --format csv \"SELECT status, err FROM results ORDER BY r_k\"");
+  EXPECT_EQ(q.output, "status,err\nfailed,\nfailed,\n");
+  const json sweep = {
+      {"kind", "scene_sweep"},
+      {"name", "sweep"},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
+      {"sweep", {{"solver.r_ftrunc", {30}}}},
+      {"reference", {{"solver.r_ftrunc", 100}}},
+      {"scoring",
+       {{"displacement", "tip"},
+        {"zone", "tip_spring"},
+        {"window_s", 1e-8},
+        {"rest_duration_s", 0.005}}}};
+  ASSERT_EQ(RunStudy(sweep, "sweep.db").exit_code, 0);
+  const Outcome s = RunShockmap("query --db " + Path("sweep.db") +
+                                " --format csv \"SELECT status, err, message FROM scene_results\"");
+  EXPECT_TRUE(Has(s, "failed,,the window 1e-08 s is shorter than one time step")) << s.output;
+}
+
 }  // namespace
 }  // namespace shockmap
