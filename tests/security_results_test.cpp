@@ -172,5 +172,30 @@ TEST_F(SecurityResults, WindowShorterThanOneStepFails) {
   EXPECT_TRUE(Has(s, "failed,,the window 1e-08 s is shorter than one time step")) << s.output;
 }
 
+// A criteria file's numbers are checked as every input file's are.
+TEST_F(SecurityResults, CriteriaFileValuesAreChecked) {
+  const json baseline = json::parse(
+      testing::ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json"));
+  const std::string scene = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json";
+  struct Case {
+    std::string key;
+    std::function<void(json&)> edit;
+    std::string words;
+  };
+  for (const auto& [key, edit, words] : std::vector<Case>{
+           {"dt_ratio_max", [](json& c) { c["dt_ratio_max"] = -1; }, "must lie in (0, 1]"},
+           {"dt_ratio_max", [](json& c) { c["dt_ratio_max"] = 1e300; }, "stability bound"},
+           {"fit.p", [](json& c) { c["fit"]["p"] = 1e300; }, "must lie in [-10, 10]"},
+           {"boundary[0].r_k", [](json& c) { c["boundary"][0]["r_k"] = 0; }, "(0, 1e+12]"}}) {
+    json criteria = baseline;
+    edit(criteria);
+    const std::string file = Write(criteria, "criteria.json");
+    const Outcome o = RunShockmap("advise " + scene + " --criteria " + file);
+    EXPECT_EQ(o.exit_code, 2) << key << ": " << o.output;
+    EXPECT_TRUE(Has(o, file + ": " + key + ": value")) << o.output;
+    EXPECT_TRUE(Has(o, words)) << o.output;
+  }
+}
+
 }  // namespace
 }  // namespace shockmap
