@@ -137,6 +137,10 @@ GapLaw ParseGapLaw(const Json& value, const std::string& file, const std::string
   if (std::abs(g.min_m) > 1.0)
     r.Fail("min", "value " + Shown(Json(g.min_m)) +
                       " must lie in [-1, 1] m (a negative gap is a preloaded contact)");
+  if (g.min_m > g.mean_m)
+    r.Fail("min", "value " + Shown(Json(g.min_m)) + " m" + (r.Has("min") ? "" : " (the default)") +
+                      " lies above the mean " + Shown(Json(g.mean_m)) +
+                      " m: the nominal run, at the mean, would have a gap no member has");
   return g;
 }
 

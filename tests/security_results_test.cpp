@@ -197,5 +197,17 @@ TEST_F(SecurityResults, CriteriaFileValuesAreChecked) {
   }
 }
 
+// A gap law's bound above its mean, and a preload deeper than the pin pitch.
+TEST_F(SecurityResults, GapLawsAndPreloadsAreCheckedAgainstTheGeometry) {
+  json above = SmallEnsemble(3);
+  above["clearance_states"][0]["pin_gap_m"] = {{"mean", 1e-5}, {"std", 1e-6}, {"min", 2e-5}};
+  ExpectRefused(above, {"clearance_states[0].pin_gap_m.min: value 2e-05 m lies above the mean"});
+  json deep = SmallEnsemble(3);
+  deep["clearance_states"][1]["pin_gap_m"] = {{"mean", -0.1}, {"std", 0.0}, {"min", -0.1}};
+  ExpectRefused(deep, {"state \"worn\"", "bundle.wire.gap_m",
+                       "-0.1 m is a preload deeper than "
+                       "the pin pitch (0.0072644 m)"});
+}
+
 }  // namespace
 }  // namespace shockmap
