@@ -209,5 +209,36 @@ TEST_F(SecurityResults, GapLawsAndPreloadsAreCheckedAgainstTheGeometry) {
                        "the pin pitch (0.0072644 m)"});
 }
 
+// The same limits, and words that say what is wrong, on every flag.
+TEST_F(SecurityResults, FlagChecksAgreeAcrossCommands) {
+  const Outcome rk = RunShockmap("compare --rk 1e20 --rftrunc 10");
+  EXPECT_EQ(rk.exit_code, 2) << rk.output;
+  EXPECT_TRUE(Has(rk, "--rk: value 1e20 must be finite and > 0 and <= 1e+12")) << rk.output;
+  const Outcome tiny = RunShockmap("compare --rk 4.9e-324 --rftrunc 10");
+  EXPECT_EQ(tiny.exit_code, 2);
+  EXPECT_TRUE(Has(tiny, "--rk: value 4.9e-324 is out of range")) << tiny.output;
+  const Outcome factor = RunShockmap("compare --rk 10 --rftrunc 10 --dt-factor 1e-300");
+  EXPECT_EQ(factor.exit_code, 2) << factor.output;
+  EXPECT_TRUE(Has(factor,
+                  "--dt-factor: 1e-300 of the sharp bound, 2.311e-303 s, over the 0.06 s "
+                  "window is 2.6e+301 steps; at most 100000000 are allowed"))
+      << factor.output;
+
+  ASSERT_EQ(RunStudy(SmallEnsemble(1)).exit_code, 0);
+  const Outcome point =
+      RunShockmap("export point --db " + Path("e.db") + " --id 1 --out " + Path("point"));
+  EXPECT_EQ(point.exit_code, 2) << point.output;
+  EXPECT_FALSE(fs::exists(Path("point")));
+  const Outcome inf = RunShockmap("query --db " + Path("e.db") +
+                                  " --format json \"SELECT 1e999 AS a, -1e999 AS b, NULL AS c\"");
+  EXPECT_EQ(json::parse(inf.output), json::parse(R"([{"a": "inf", "b": "-inf", "c": null}])"))
+      << inf.output;
+
+  const Outcome zsh = RunShockmap("completion zsh");
+  EXPECT_EQ(zsh.exit_code, 2);
+  EXPECT_TRUE(Has(zsh, "completion: \"zsh\" is not a shell shockmap completes; the shells: bash"))
+      << zsh.output;
+}
+
 }  // namespace
 }  // namespace shockmap
