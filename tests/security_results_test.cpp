@@ -186,7 +186,9 @@ TEST_F(SecurityResults, CriteriaFileValuesAreChecked) {
            {"dt_ratio_max", [](json& c) { c["dt_ratio_max"] = -1; }, "must lie in (0, 1]"},
            {"dt_ratio_max", [](json& c) { c["dt_ratio_max"] = 1e300; }, "stability bound"},
            {"fit.p", [](json& c) { c["fit"]["p"] = 1e300; }, "must lie in [-10, 10]"},
-           {"boundary[0].r_k", [](json& c) { c["boundary"][0]["r_k"] = 0; }, "(0, 1e+12]"}}) {
+           {"boundary[0].r_k", [](json& c) { c["boundary"][0]["r_k"] = 0; }, "(0, 1e+12]"},
+           {"tolerances.dt_ratio_factor", [](json& c) { c["tolerances"]["dt_ratio_factor"] = 0.5; },
+            "must lie in [1, 1000]"}}) {
     json criteria = baseline;
     edit(criteria);
     const std::string file = Write(criteria, "criteria.json");

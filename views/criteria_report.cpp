@@ -39,6 +39,8 @@ constexpr Allowed kRftrunc{1.0, 1e5, false};
 constexpr Allowed kExponent{-10.0, 10.0, false};
 constexpr Allowed kCoefficient{0.0, 1e12};
 constexpr Allowed kThreshold{0.0, 1.0, false};
+constexpr Allowed kSpread{0.0, 1e3, false};  // A standard error or residual.
+constexpr Allowed kFactor{1.0, 1e3, false};  // A ratio either way.
 
 double Checked(JsonObjectReader& r, const std::string& key, double v, const Allowed& a) {
   if (!((a.lo_open ? v > a.lo : v >= a.lo) && v <= a.hi)) {
@@ -50,6 +52,10 @@ double Checked(JsonObjectReader& r, const std::string& key, double v, const Allo
 
 double RequiredIn(JsonObjectReader& r, const std::string& key, const Allowed& a) {
   return Checked(r, key, r.RequiredNumber(key), a);
+}
+
+double NumberIn(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
+  return Checked(r, key, r.Number(key, fallback), a);
 }
 
 std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key,
@@ -149,15 +155,14 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     p.n = f.Integer("n", 0);
     p.knee_r_k = RequiredIn(f, "knee_r_k", kRk);
     p.p = RequiredIn(f, "p", kExponent);
-    p.p_stderr = f.Number("p_stderr", 0.0);
-    p.p_low = f.Number("p_low", p.p);
-    p.p_high = f.Number("p_high", p.p);
-    c.options.confidence =
-        Checked(f, "confidence", f.Number("confidence", c.options.confidence), kConfidence);
+    p.p_stderr = NumberIn(f, "p_stderr", 0.0, kSpread);
+    p.p_low = NumberIn(f, "p_low", p.p, kExponent);
+    p.p_high = NumberIn(f, "p_high", p.p, kExponent);
+    c.options.confidence = NumberIn(f, "confidence", c.options.confidence, kConfidence);
     p.c = RequiredIn(f, "c", kCoefficient);
-    p.log10_c_stderr = f.Number("log10_c_stderr", 0.0);
+    p.log10_c_stderr = NumberIn(f, "log10_c_stderr", 0.0, kSpread);
     p.c_envelope = RequiredIn(f, "c_envelope", kCoefficient);
-    p.rms_residual_log10 = f.Number("rms_residual_log10", 0.0);
+    p.rms_residual_log10 = NumberIn(f, "rms_residual_log10", 0.0, kSpread);
     f.Get("sqrt_rk_inside_interval");
     f.Finish();
     c.fit = p;
@@ -167,9 +172,11 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
   c.smallest_diverged_dt_ratio = OptionalNumber(r, "smallest_diverged_dt_ratio", kDtRatio);
   if (const Json* t = r.Get("tolerances"); t != nullptr && tolerances != nullptr) {
     JsonObjectReader tr(*t, file, r.PathOf("tolerances"));
-    tolerances->p = tr.Number("p", tolerances->p);
-    tolerances->c_envelope_factor = tr.Number("c_envelope_factor", tolerances->c_envelope_factor);
-    tolerances->dt_ratio_factor = tr.Number("dt_ratio_factor", tolerances->dt_ratio_factor);
+    tolerances->p = NumberIn(tr, "p", tolerances->p, kSpread);
+    tolerances->c_envelope_factor =
+        NumberIn(tr, "c_envelope_factor", tolerances->c_envelope_factor, kFactor);
+    tolerances->dt_ratio_factor =
+        NumberIn(tr, "dt_ratio_factor", tolerances->dt_ratio_factor, kFactor);
     tr.Finish();
   }
   r.Finish();
