@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "db/sqlite_handle.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
@@ -122,6 +123,10 @@ TEST_F(SecurityResults, WindowAndOutputsCannotBeVaried) {
 // Members, states and settings the study file no longer has are not counted.
 TEST_F(SecurityResults, SizingCountsOnlyTheMembersOfTheCurrentFile) {
   ASSERT_EQ(RunStudy(SmallEnsemble(4)).exit_code, 0);
+  {  // Members the next file drops, stored as not ok: not to be counted as such either.
+    Connection c(Path("e.db"), Connection::Mode::kReadWriteCreate);
+    c.Execute("UPDATE ensemble_members SET status = 'failed' WHERE state = 'worn' OR member = 3");
+  }
   json fewer = SmallEnsemble(2);
   fewer["clearance_states"].erase(1);
   fewer["settings"] = {{"solver.r_ftrunc", {100}}};
@@ -133,8 +138,9 @@ TEST_F(SecurityResults, SizingCountsOnlyTheMembersOfTheCurrentFile) {
   EXPECT_FALSE(Has(o, "\":30}")) << o.output;
   EXPECT_TRUE(Has(o, "new,\"{\"\"solver.r_ftrunc\"\":100} (refined)\",2,")) << o.output;
   const Outcome table = RunShockmap("sizing --db " + Path("e.db"));
-  EXPECT_TRUE(Has(table, "14 stored members the study file no longer has: not counted"))
+  EXPECT_TRUE(Has(table, "4 stored members the study file no longer has: not counted"))
       << table.output;
+  EXPECT_FALSE(Has(table, "not ok")) << table.output;
 }
 
 // A window inside one step has nothing to score: the run fails, never passes.

@@ -206,15 +206,18 @@ StoredEnsemble CurrentMembers(StoredEnsemble stored) {
   const Json states = spec.value("clearance_states", Json::array({Json{{"name", "scene"}}}));
   const Json axes = spec.value("settings", Json::object());
   const int members = spec.value("members", 0);
-  std::erase_if(stored.members, [&](const StoredMember& m) {
-    const bool current =
-        m.member < members &&
-        std::any_of(states.begin(), states.end(),
-                    [&](const Json& s) { return s.value("name", "") == m.state; }) &&
-        IsSettingOf(Json::parse(m.setting_json), axes);
-    stored.superseded += current ? 0 : 1;
-    return !current;
+  const auto superseded = [&](const StoredMember& m) {
+    return !(m.member < members &&
+             std::any_of(states.begin(), states.end(),
+                         [&](const Json& s) { return s.value("name", "") == m.state; }) &&
+             IsSettingOf(Json::parse(m.setting_json), axes));
+  };
+  stored.superseded = static_cast<std::int64_t>(std::erase_if(stored.members, superseded));
+  std::erase_if(stored.not_ok, superseded);
+  stored.pending = std::count_if(stored.not_ok.begin(), stored.not_ok.end(), [](const auto& m) {
+    return m.status == "pending" || m.status == "running";
   });
+  stored.failed = static_cast<std::int64_t>(stored.not_ok.size()) - stored.pending;
   return stored;
 }
 

@@ -73,7 +73,8 @@ struct EnsembleSizing {
 // The stored members that the study file, as last run, still has: an index below its member
 // count, one of its clearance states, one of its settings (compared by value). Members of an
 // earlier file (more members, a state or a setting since removed) are dropped and counted in
-// `superseded`, so that the statistics are those of the current file.
+// `superseded` (if computed), so that the statistics and the counts of members pending and not
+// ok are those of the current file.
 StoredEnsemble CurrentMembers(StoredEnsemble stored);
 
 // Throws InputError when the options are out of range, or the study holds no computed member.
