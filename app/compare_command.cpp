@@ -12,6 +12,7 @@
 #include "formats/comparison_json.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
+#include "formats/study_spec.h"
 #include "reference/reference_cost.h"
 #include "views/comparison_plot.h"
 
@@ -90,6 +91,26 @@ void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions
                                o.window_s, excess));
 }
 
+// Refuses a step, given (--dt) or resolved on the model's bounds as the run will resolve it
+// (--dt-factor), that takes more steps over the window than a run may.
+void CheckStepCount(const CompareFlags& f) {
+  const bool given = f.options.dt.dt_s.has_value();
+  const double dt_s =
+      given ? *f.options.dt.dt_s
+            : f.options.dt.Resolve(BuildImpactModel(f.problem, f.options.scheme, f.options.r_ftrunc,
+                                                    f.options.n_elements)
+                                       .bounds);
+  const auto max_steps = TransientOptions{}.max_steps;
+  if (!(f.options.window_s / dt_s <= max_steps)) {
+    const std::string step = given ? fmt::format("--dt: {:g} s", dt_s)
+                                   : fmt::format("--dt-factor: {:g} of the {} bound, {:.4g} s,",
+                                                 f.options.dt.factor, f.dt_rule, dt_s);
+    throw InputError(
+        fmt::format("{} over the {:g} s window is {:.3g} steps; at most {} are allowed", step,
+                    f.options.window_s, f.options.window_s / dt_s, max_steps));
+  }
+}
+
 void Run(const CompareFlags& flags) {
   CompareFlags f = flags;
   if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
@@ -97,17 +118,9 @@ void Run(const CompareFlags& flags) {
   f.options.scheme = *SchemeFromString(f.scheme);
   std::string error;
   if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
-  if (const auto max_steps = TransientOptions{}.max_steps;
-      f.options.dt.dt_s && f.options.window_s / *f.options.dt.dt_s > max_steps) {
-    throw InputError(
-        fmt::format("--dt: {:g} s over the {:g} s window is {:.3g} steps; at most {} "
-                    "are allowed",
-                    *f.options.dt.dt_s, f.options.window_s, f.options.window_s / *f.options.dt.dt_s,
-                    max_steps));
-  }
-
   CheckMeshCost(f.options);
   CheckReferenceCost(f.problem, f.options);
+  CheckStepCount(f);  // After the mesh check: resolving a factor builds the model.
   // The outputs are checked before the run and written before anything is reported.
   if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
   const ComparisonResult result = RunComparison(f.problem, f.options);
@@ -137,7 +150,7 @@ void AddCompareCommand(CLI::App& app) {
       "beam-impact problem and score them (Err, SRf)");
   cmd->add_option("--rk", flags->problem.r_k, "stiffness ratio R_k = k_s / K_bend")
       ->required()
-      ->check(Positive());
+      ->check(FiniteIn(0.0, true, kMaxRk));
   cmd->add_option("--rftrunc", flags->options.r_ftrunc, "modal truncation ratio f_trunc / f1")
       ->required()
       ->check(FiniteAbove(1.0, false));

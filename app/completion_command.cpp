@@ -3,7 +3,11 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <string>
 #include <vector>
+
+#include "core/input_error.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 namespace {
@@ -83,7 +87,17 @@ complete -o default -F _shockmap shockmap
 void AddCompletionCommand(CLI::App& app) {
   CLI::App* completion =
       app.add_subcommand("completion", "Print a shell completion script for shockmap");
-  completion->require_subcommand(1);
+  // A shell not listed is named in the refusal, with the shells there are.
+  completion->require_subcommand(0, 1)->allow_extras();
+  completion->callback([completion] {
+    if (!completion->get_subcommands().empty()) return;
+    const std::vector<std::string> extras = completion->remaining();
+    throw InputError(
+        "completion: " +
+        (extras.empty() ? std::string("name a shell")
+                        : "\"" + Excerpt(extras.front()) + "\" is not a shell shockmap completes") +
+        "; the shells: bash");
+  });
   CLI::App* bash = completion->add_subcommand(
       "bash",
       "Bash completion of every command and option (source it, or save it as "

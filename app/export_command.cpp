@@ -78,11 +78,12 @@ void ExportReference(const ExportFlags& f) {
              signals->values.front().size(), signals->output_dt_s, f.out);
 }
 
+// The folder is created once the point is computed again, so that a refusal leaves none.
 void ExportPoint(const ExportFlags& f) {
-  PrepareOutputDirectory(f.out, "--out");
   CheckPathLength(std::filesystem::path(f.out) / "reference.csv", "--out");
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const ReplayedPoint replay = ReplayCanonicalPoint(f.database_path, study, f.point_id);
+  PrepareOutputDirectory(f.out, "--out");
   WriteComparisonCsv(replay.result, f.out);
   const auto score = [](const std::optional<double>& v) {
     return v ? fmt::format("{}", *v) : std::string("not scored");

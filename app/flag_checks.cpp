@@ -1,8 +1,10 @@
 #include "app/flag_checks.h"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "db/study_database.h"
@@ -69,20 +71,26 @@ void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {
 }
 
 CLI::Validator FiniteAbove(double lo, bool strict) {
+  return FiniteIn(lo, strict, std::numeric_limits<double>::max());
+}
+
+CLI::Validator FiniteIn(double lo, bool strict, double hi) {
   std::ostringstream allowed;
   allowed << "finite and " << (strict ? "> " : ">= ") << lo;
+  if (hi < std::numeric_limits<double>::max()) allowed << " and <= " << hi;
   const std::string description = allowed.str();
   return CLI::Validator(
       [=](std::string& text) -> std::string {
-        std::size_t used = 0;
-        double value = 0.0;
-        try {
-          value = std::stod(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
+        char* end = nullptr;
+        errno = 0;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || end != text.c_str() + text.size())
+          return "value '" + text + "' is not a number";
+        if (errno == ERANGE) {
+          return "value " + text +
+                 " is out of range: a double holds magnitudes from 2.2e-308 to 1.8e+308";
         }
-        if (used == 0 || used != text.size()) return "value '" + text + "' is not a number";
-        if (!std::isfinite(value) || value < lo || (strict && value == lo)) {
+        if (!std::isfinite(value) || value < lo || (strict && value == lo) || value > hi) {
           return "value " + text + " must be " + description;
         }
         return "";

@@ -22,6 +22,8 @@ void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds);
 // be read.
 void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access);
 
+// A finite number > lo (strict) or >= lo, and at most hi.
+CLI::Validator FiniteIn(double lo, bool strict, double hi);
 // A finite number > lo (strict) or >= lo.
 CLI::Validator FiniteAbove(double lo, bool strict);
 inline CLI::Validator Positive() { return FiniteAbove(0.0, true); }

@@ -25,6 +25,7 @@
 #include "formats/study_file.h"
 #include "views/comparison_plot.h"
 #include "views/contact_force_map.h"
+#include "views/ensemble_sizing.h"
 #include "views/html_report.h"
 #include "views/scored_points.h"
 
@@ -133,7 +134,7 @@ std::vector<ReportSection> SceneReport(const ReportContext& ctx, const std::stri
 std::vector<ReportSection> EnsembleReport(const ReportContext& ctx) {
   Connection db(ctx.database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
-  const StoredEnsemble stored = ReadEnsemble(db, ctx.study);
+  const StoredEnsemble stored = CurrentMembers(ReadEnsemble(db, ctx.study));
   return EnsembleSections(ctx, stored, StoredEnsembleScene(stored, ctx.database_path, ctx.study));
 }
 

@@ -53,6 +53,9 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   if (s.pending + s.failed > 0) {
     fmt::print("  {} members pending, {} not ok: not counted\n", s.pending, s.failed);
   }
+  if (s.superseded > 0) {
+    fmt::print("  {} stored members the study file no longer has: not counted\n", s.superseded);
+  }
   WriteQueryResult(HottestZoneTable(s, true), QueryFormat::kTable, std::cout);
   for (const GroupSizing& g : s.groups) {
     const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
@@ -72,7 +75,7 @@ void Size(const SizingFlags& f) {
   Connection db(f.database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
   const std::string study = ResolveEnsemble(db, f.study);
-  const StoredEnsemble stored = ReadEnsemble(db, study);
+  const StoredEnsemble stored = CurrentMembers(ReadEnsemble(db, study));
   const EnsembleSizing sizing = SizeEnsemble(stored, study, f.options);
   if (f.format == "table") {
     PrintTable(sizing, stored);

@@ -1,5 +1,7 @@
 #include "compare/comparison.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include "core/validity.h"
@@ -90,6 +92,14 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   if (!run.IsValid(&error)) {
     result.status = RunStatus::kFailed;
     result.message = error;
+    return result;
+  }
+  // A window inside one step holds no history to compare: Err would be 0 and the point pass.
+  if (options.window_s < run.dt_s) {
+    result.status = RunStatus::kFailed;
+    result.message =
+        fmt::format("the window {:g} s is shorter than one time step ({:g} s): nothing to score",
+                    options.window_s, run.dt_s);
     return result;
   }
   result.histories =

@@ -85,9 +85,24 @@ std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
       StoredMember m;
       m.point_id = id;
       s.ReadColumns(m.point_id, m.state, m.setting_json, m.member, m.wall_s, m.cpu_s);
+      m.status = "ok";
       members.push_back(std::move(m));
     }
     members.back().zones.push_back(ZoneAt(s, 6));
+  }
+  return members;
+}
+
+std::vector<StoredMember> ReadMembersNotOk(Connection& c, std::int64_t study_id) {
+  Statement s = c.Prepare(
+      "SELECT point_id, state, setting_json, member, status FROM ensemble_members WHERE "
+      "study_id = ? AND status != 'ok' ORDER BY point_id");
+  s.Bind(1, study_id);
+  std::vector<StoredMember> members;
+  while (s.Step()) {
+    StoredMember m;
+    s.ReadColumns(m.point_id, m.state, m.setting_json, m.member, m.status);
+    members.push_back(std::move(m));
   }
   return members;
 }
@@ -198,6 +213,7 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   }
   e.references = ReadReferences(c, study_id);
   e.members = ReadMembers(c, study_id);
+  e.not_ok = ReadMembersNotOk(c, study_id);
   CheckEnsemble(c.Path(), study, e);
   return e;
 }

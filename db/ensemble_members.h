@@ -70,10 +70,10 @@ std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRo
                                     std::int64_t run_id);
 
 // What the sizing view reads of one study: every computed member (status 'ok'), with its
-// zones.
+// zones, and the others without.
 struct StoredMember {
   std::int64_t point_id = 0;
-  std::string state, setting_json;
+  std::string state, setting_json, status;
   int member = 0;
   double wall_s = 0.0, cpu_s = 0.0;
   std::vector<EnsembleZoneRow> zones;
@@ -82,7 +82,10 @@ struct StoredEnsemble {
   std::string spec_json;
   std::vector<EnsembleReferenceRow> references;  // One per state whose nominal was stored.
   std::vector<StoredMember> members;             // By point_id.
-  std::int64_t pending = 0, failed = 0;          // Members not computed, or not ok.
+  std::vector<StoredMember> not_ok;              // Pending, running or not ok; no zones.
+  std::int64_t pending = 0, failed = 0;          // Of not_ok: not computed yet, or not ok.
+  // Computed members the study file, as last run, no longer has (views' CurrentMembers).
+  std::int64_t superseded = 0;
 };
 // Throws DbError when the study does not exist or is not an ensemble study.
 StoredEnsemble ReadEnsemble(Connection& c, const std::string& study);

@@ -1,5 +1,7 @@
 #include "engine/scene_study.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -100,7 +102,13 @@ SceneStudy::Outcome SceneStudy::Score(const Point& point, const Reference& ref,
     score.reference_id = reference_id;
     out.status = s.status;
     out.message = s.message;
-    if (s.status == RunStatus::kOk) {
+    // A window inside one step holds no history to compare: Err would be 0 and the point pass.
+    if (s.status == RunStatus::kOk && spec_.scoring.window_s < s.dt_requested_s) {
+      out.status = RunStatus::kFailed;
+      out.message =
+          fmt::format("the window {:g} s is shorter than one time step ({:g} s): nothing to score",
+                      spec_.scoring.window_s, s.dt_requested_s);
+    } else if (s.status == RunStatus::kOk) {
       const UniformSignal ref_displacement{0.0, ref.output_dt_s, ref.displacement_m};
       const UniformSignal ref_force{0.0, ref.output_dt_s, ref.force_n};
       ShockSegmentationOptions segmentation;

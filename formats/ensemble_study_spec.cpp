@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "formats/json_reader.h"
+#include "formats/output_file.h"
 #include "formats/parameter_path.h"
 #include "formats/study_spec.h"
 
@@ -136,6 +138,10 @@ GapLaw ParseGapLaw(const Json& value, const std::string& file, const std::string
   if (std::abs(g.min_m) > 1.0)
     r.Fail("min", "value " + Shown(Json(g.min_m)) +
                       " must lie in [-1, 1] m (a negative gap is a preloaded contact)");
+  if (g.min_m > g.mean_m)
+    r.Fail("min", "value " + Shown(Json(g.min_m)) + " m" + (r.Has("min") ? "" : " (the default)") +
+                      " lies above the mean " + Shown(Json(g.mean_m)) +
+                      " m: the nominal run, at the mean, would have a gap no member has");
   return g;
 }
 
@@ -156,6 +162,7 @@ std::vector<ClearanceState> ParseStates(JsonObjectReader& r, const Json& scene,
   }
   std::vector<ClearanceState> states;
   std::set<std::string> names;
+  std::map<std::string, std::string> by_file_part;  // Lower-case file name part -> name.
   for (std::size_t i = 0; i < v->size(); ++i) {
     JsonObjectReader s((*v)[i], file, r.PathOf("clearance_states") + "[" + std::to_string(i) + "]");
     ClearanceState state;
@@ -164,6 +171,15 @@ std::vector<ClearanceState> ParseStates(JsonObjectReader& r, const Json& scene,
       s.Fail("name", "must be 1 to 100 characters");
     if (!names.insert(state.name).second)
       s.Fail("name", "state \"" + state.name + "\" is given twice; names must be unique");
+    std::string part = FileNamePart(state.name);
+    std::transform(part.begin(), part.end(), part.begin(), ::tolower);
+    if (const auto [it, fresh] = by_file_part.emplace(part, state.name); !fresh) {
+      const std::string same = "\" would write the same picture files as state \"";
+      s.Fail("name", "state \"" + Excerpt(state.name) + same + Excerpt(it->second) + "\" (map_" +
+                         FileNamePart(state.name) +
+                         ".png): names must differ in a letter (not only in case), a digit, '-' "
+                         "or '_'");
+    }
     const Json* pin = s.Get("pin_gap_m");
     if (pin == nullptr) s.Fail("pin_gap_m", "required: {\"mean\": m, \"std\": m, \"min\": m}");
     state.pin_gap = ParseGapLaw(*pin, file, s.PathOf("pin_gap_m"));

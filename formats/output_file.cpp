@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <climits>
@@ -118,6 +119,14 @@ class AtomicFile::Buffer : public std::streambuf {
   int error_ = 0;
   std::array<char, 1 << 16> data_{};
 };
+
+std::string FileNamePart(std::string_view name) {
+  std::string part(name);
+  for (char& c : part) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
+  }
+  return part;
+}
 
 std::filesystem::path UnusedTemporaryName(const std::filesystem::path& dir) {
   static std::atomic<unsigned> counter{0};

@@ -55,6 +55,11 @@ class AtomicFile {
 // `bytes` as the whole content of `path`, through an AtomicFile.
 void WriteFileAtomically(const std::filesystem::path& path, std::string_view bytes);
 
+// `name` as part of a file name: letters, digits, '-' and '_' kept, every other byte as '_'.
+// Names that give the same part (or parts differing only in case, as on a case-insensitive
+// file system) would share their files: the study files refuse such names.
+std::string FileNamePart(std::string_view name);
+
 // A name in `dir` that no file has yet, for a temporary file of this process.
 std::filesystem::path UnusedTemporaryName(const std::filesystem::path& dir);
 

@@ -17,6 +17,24 @@ using Json = nlohmann::json;
              "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
 }
 
+// A study sets the scene's end time (its window) and its outputs (what it records) itself, so
+// a value of its own there would be overridden and every "different" run would be the same.
+void CheckStudyMayVary(const Json::json_pointer& pointer, const std::string& path,
+                       const std::string& file, const std::string& where) {
+  if (pointer == Json::json_pointer("/solver/end_time_s")) {
+    FailAt(file, where,
+           "\"" + path +
+               "\" cannot be varied: the study runs every point to its window (\"window_s\"), "
+               "which would override each value");
+  }
+  if (!pointer.empty() && pointer.to_string().starts_with("/outputs/")) {
+    FailAt(file, where,
+           "\"" + path +
+               "\" cannot be varied: the study chooses what a run records, which would override "
+               "each value");
+  }
+}
+
 }  // namespace
 
 std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
@@ -44,6 +62,7 @@ Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
                                     const std::string& file, const std::string& where) {
   const auto pointer = ParameterPointer(path);
   if (!pointer) FailPath(path, file, where);
+  CheckStudyMayVary(*pointer, path, file, where);
   if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
     FailAt(file, where,
            "the scene has no number at \"" + path +
@@ -57,6 +76,7 @@ Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path,
   if (value.is_number()) return NumericParameter(scene, path, file, where);
   const auto pointer = ParameterPointer(path);
   if (!pointer) FailPath(path, file, where);
+  CheckStudyMayVary(*pointer, path, file, where);
   if (!value.is_boolean()) {
     FailAt(file, where, "expected a number or true/false, got " + Shown(value));
   }

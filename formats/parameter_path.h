@@ -13,7 +13,8 @@ namespace shockmap {
 std::optional<nlohmann::json::json_pointer> ParameterPointer(const std::string& path);
 
 // Where the numeric parameter `path` sits in the scene; InputError (naming `file` and `where`)
-// unless the scene holds a number there.
+// unless the scene holds a number there, or when the path is one a study sets itself
+// (solver.end_time_s, the window; outputs.*, what it records).
 nlohmann::json::json_pointer NumericParameter(const nlohmann::json& scene, const std::string& path,
                                               const std::string& file, const std::string& where);
 

@@ -140,11 +140,17 @@ SceneBeam ParseBeamProperties(JsonObjectReader& r) {
 
 // Gap values for `count` zones: a number, {"uniform": g}, {"list": [...]} or
 // {"normal": {"mean", "std", "seed", "min"}} (drawn with mt19937_64 and Box-Muller, so the same
-// seed gives the same gaps on every platform).
+// seed gives the same gaps on every platform). A negative gap (a preload) must be shallower
+// than the pin pitch: deeper, a pin would sit past its neighbour.
 std::vector<double> Gaps(const Json& v, const std::string& file, const std::string& path,
-                         std::size_t count) {
+                         std::size_t count, double pitch_m) {
   auto check = [&](double g, const std::string& at) {
     if (std::abs(g) > 1.0) FailAt(file, at, "gap " + Shown(Json(g)) + " m must lie in [-1, 1] m");
+    if (!(g > -pitch_m)) {
+      FailAt(file, at,
+             "gap " + Shown(Json(g)) + " m is a preload deeper than the pin pitch (" +
+                 Shown(Json(pitch_m)) + " m): a negative gap must lie in (-pitch, 0)");
+    }
     return g;
   };
   if (v.is_number()) return std::vector<double>(count, check(NumberAt(v, file, path), path));
@@ -169,6 +175,7 @@ std::vector<double> Gaps(const Json& v, const std::string& file, const std::stri
     const int seed = n.Integer("seed", 1);
     n.Finish();
     if (sd < 0) n.Fail("std", "must be >= 0");
+    check(lo, n.PathOf("min"));
     std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
     auto uniform = [&] { return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53; };
     for (std::size_t i = 0; i < count; ++i) {
@@ -369,13 +376,14 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
 
 // Draws the gaps (pairs first, then walls, so that a seed gives the same gaps as before) and
 // appends the zones, pairs first.
-void AddBundleZones(BundleZones zones, const BundleParts& p, const std::string& file,
-                    Scene& scene) {
-  const auto pair_gaps = Gaps(*p.pin_gap, file, p.pin_gap_path, zones.pairs.size());
+void AddBundleZones(BundleZones zones, const BundleParts& p, double pitch_m,
+                    const std::string& file, Scene& scene) {
+  const auto pair_gaps = Gaps(*p.pin_gap, file, p.pin_gap_path, zones.pairs.size(), pitch_m);
   const auto wall_gaps =
-      p.wrapper_gap != nullptr ? Gaps(*p.wrapper_gap, file, p.wrapper_gap_path, zones.walls.size())
-      : pair_gaps.empty()      ? std::vector<double>(zones.walls.size(), 0.0)
-                               : std::vector<double>(zones.walls.size(), pair_gaps.front());
+      p.wrapper_gap != nullptr
+          ? Gaps(*p.wrapper_gap, file, p.wrapper_gap_path, zones.walls.size(), pitch_m)
+      : pair_gaps.empty() ? std::vector<double>(zones.walls.size(), 0.0)
+                          : std::vector<double>(zones.walls.size(), pair_gaps.front());
   for (std::size_t i = 0; i < zones.pairs.size(); ++i) zones.pairs[i].gap_m = pair_gaps[i];
   for (std::size_t i = 0; i < zones.walls.size(); ++i) zones.walls[i].gap_m = wall_gaps[i];
   scene.zones.insert(scene.zones.end(), zones.pairs.begin(), zones.pairs.end());
@@ -395,7 +403,8 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   CheckBundle(lattice, parts, file);
   const int wrapper = static_cast<int>(scene.beams.size());
   const auto index = AddBundleBeams(lattice, parts, scene);
-  AddBundleZones(GenerateBundleZones(lattice, parts, index, wrapper, scene), parts, file, scene);
+  AddBundleZones(GenerateBundleZones(lattice, parts, index, wrapper, scene), parts, lattice.pitch_m,
+                 file, scene);
 }
 
 // True when `file` lies in `folder` or below it (both canonical).

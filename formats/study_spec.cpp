@@ -171,7 +171,7 @@ std::vector<double> ParseTruncationAxis(const Json& value, const std::string& fi
   return ModeEntryTruncations((*modes)[0].get<int>(), (*modes)[1].get<int>());
 }
 
-const Range kRk{0.0, true, 1e12};
+const Range kRk{0.0, true, kMaxRk};
 const Range kRftrunc{1.0, false, 1e5};
 const Range kWindow{0.0, true, 100.0};
 const Range kDamping{0.0, false, 1e6};

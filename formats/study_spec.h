@@ -15,6 +15,8 @@ namespace shockmap {
 
 // Refused above this many points: a grid that large is a typing mistake, not a study.
 inline constexpr std::size_t kMaxStudyPoints = 1'000'000;
+// The largest stiffness ratio R_k a study's axis or `compare --rk` takes.
+inline constexpr double kMaxRk = 1e12;
 
 // Truncation of the reference for each R_k: the shock frequency sqrt(R_k) f1 (paper eq. 10)
 // must lie well inside it, so r_fref = max(r_fref_min, r_fref_per_sqrt_rk * sqrt(R_k)).

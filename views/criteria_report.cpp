@@ -8,6 +8,7 @@
 
 #include "formats/counted.h"
 #include "formats/json_reader.h"
+#include "formats/study_spec.h"
 
 namespace shockmap {
 namespace {
@@ -19,10 +20,49 @@ Json OrNull(const std::optional<T>& v) {
   return v ? Json(*v) : Json(nullptr);
 }
 
-std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key) {
+// What a criteria file may hold: a range per number, each end open or closed.
+struct Allowed {
+  double lo, hi;
+  bool lo_open = true;
+  const char* why = "";  // What lies outside, for the message.
+};
+
+// dt / dt_sharp where points pass: criteria are of the explicit scheme (as written below),
+// which is unstable past its sharp bound, a ratio of 1.
+constexpr Allowed kPassingDtRatio{0.0, 1.0, true,
+                                  "above 1 the explicit scheme is past its stability bound"};
+constexpr Allowed kDtRatio{0.0, 1e3};
+constexpr Allowed kConfidence{0.0, 1.0};
+// As a study's axes allow (formats/study_spec.cpp).
+constexpr Allowed kRk{0.0, kMaxRk};
+constexpr Allowed kRftrunc{1.0, 1e5, false};
+constexpr Allowed kExponent{-10.0, 10.0, false};
+constexpr Allowed kCoefficient{0.0, 1e12};
+constexpr Allowed kThreshold{0.0, 1.0, false};
+constexpr Allowed kSpread{0.0, 1e3, false};  // A standard error or residual.
+constexpr Allowed kFactor{1.0, 1e3, false};  // A ratio either way.
+
+double Checked(JsonObjectReader& r, const std::string& key, double v, const Allowed& a) {
+  if (!((a.lo_open ? v > a.lo : v >= a.lo) && v <= a.hi)) {
+    r.Fail(key, fmt::format("value {} must lie in {}{:g}, {:g}]{}{}", Shown(Json(v)),
+                            a.lo_open ? "(" : "[", a.lo, a.hi, *a.why ? ": " : "", a.why));
+  }
+  return v;
+}
+
+double RequiredIn(JsonObjectReader& r, const std::string& key, const Allowed& a) {
+  return Checked(r, key, r.RequiredNumber(key), a);
+}
+
+double NumberIn(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
+  return Checked(r, key, r.Number(key, fallback), a);
+}
+
+std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key,
+                                     const Allowed& a) {
   const Json* v = r.Get(key);
   if (v == nullptr || v->is_null()) return std::nullopt;
-  return NumberAt(*v, r.File(), r.PathOf(key));
+  return Checked(r, key, NumberAt(*v, r.File(), r.PathOf(key)), a);
 }
 
 std::string Num(std::optional<double> v) { return v ? fmt::format("{:.4g}", *v) : "-"; }
@@ -86,23 +126,23 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     const Json* th = r.Get("thresholds");
     if (th == nullptr) r.Fail("thresholds", "required object is missing");
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));
-    c.options.err_max = t.RequiredNumber("err_max");
-    c.options.srf_min = t.RequiredNumber("srf_min");
+    c.options.err_max = RequiredIn(t, "err_max", kThreshold);
+    c.options.srf_min = RequiredIn(t, "srf_min", kThreshold);
     t.Finish();
   }
-  c.r_ftrunc_smallest_studied = r.RequiredNumber("r_ftrunc_smallest_studied");
+  c.r_ftrunc_smallest_studied = RequiredIn(r, "r_ftrunc_smallest_studied", kRftrunc);
   if (const Json* boundary = r.Get("boundary"); boundary != nullptr && boundary->is_array()) {
     for (std::size_t i = 0; i < boundary->size(); ++i) {
       JsonObjectReader b((*boundary)[i], file,
                          r.PathOf("boundary") + "[" + std::to_string(i) + "]");
       RkBoundary rb;
-      rb.r_k = b.RequiredNumber("r_k");
+      rb.r_k = RequiredIn(b, "r_k", kRk);
       rb.n_points = b.Integer("n_points", 0);
       rb.n_passing = b.Integer("n_passing", 0);
-      rb.r_ftrunc_min = OptionalNumber(b, "r_ftrunc_min");
-      rb.dt_ratio_max = OptionalNumber(b, "dt_ratio_max");
-      rb.largest_stable_dt_ratio = OptionalNumber(b, "largest_stable_dt_ratio");
-      rb.smallest_diverged_dt_ratio = OptionalNumber(b, "smallest_diverged_dt_ratio");
+      rb.r_ftrunc_min = OptionalNumber(b, "r_ftrunc_min", kRftrunc);
+      rb.dt_ratio_max = OptionalNumber(b, "dt_ratio_max", kPassingDtRatio);
+      rb.largest_stable_dt_ratio = OptionalNumber(b, "largest_stable_dt_ratio", kDtRatio);
+      rb.smallest_diverged_dt_ratio = OptionalNumber(b, "smallest_diverged_dt_ratio", kDtRatio);
       b.Finish();
       c.boundary.push_back(rb);
     }
@@ -113,28 +153,30 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     JsonObjectReader f(*fit, file, r.PathOf("fit"));
     PowerLawFit p;
     p.n = f.Integer("n", 0);
-    p.knee_r_k = f.RequiredNumber("knee_r_k");
-    p.p = f.RequiredNumber("p");
-    p.p_stderr = f.Number("p_stderr", 0.0);
-    p.p_low = f.Number("p_low", p.p);
-    p.p_high = f.Number("p_high", p.p);
-    c.options.confidence = f.Number("confidence", c.options.confidence);
-    p.c = f.RequiredNumber("c");
-    p.log10_c_stderr = f.Number("log10_c_stderr", 0.0);
-    p.c_envelope = f.RequiredNumber("c_envelope");
-    p.rms_residual_log10 = f.Number("rms_residual_log10", 0.0);
+    p.knee_r_k = RequiredIn(f, "knee_r_k", kRk);
+    p.p = RequiredIn(f, "p", kExponent);
+    p.p_stderr = NumberIn(f, "p_stderr", 0.0, kSpread);
+    p.p_low = NumberIn(f, "p_low", p.p, kExponent);
+    p.p_high = NumberIn(f, "p_high", p.p, kExponent);
+    c.options.confidence = NumberIn(f, "confidence", c.options.confidence, kConfidence);
+    p.c = RequiredIn(f, "c", kCoefficient);
+    p.log10_c_stderr = NumberIn(f, "log10_c_stderr", 0.0, kSpread);
+    p.c_envelope = RequiredIn(f, "c_envelope", kCoefficient);
+    p.rms_residual_log10 = NumberIn(f, "rms_residual_log10", 0.0, kSpread);
     f.Get("sqrt_rk_inside_interval");
     f.Finish();
     c.fit = p;
   }
-  c.dt_ratio_max = OptionalNumber(r, "dt_ratio_max");
-  c.largest_stable_dt_ratio = OptionalNumber(r, "largest_stable_dt_ratio");
-  c.smallest_diverged_dt_ratio = OptionalNumber(r, "smallest_diverged_dt_ratio");
+  c.dt_ratio_max = OptionalNumber(r, "dt_ratio_max", kPassingDtRatio);
+  c.largest_stable_dt_ratio = OptionalNumber(r, "largest_stable_dt_ratio", kDtRatio);
+  c.smallest_diverged_dt_ratio = OptionalNumber(r, "smallest_diverged_dt_ratio", kDtRatio);
   if (const Json* t = r.Get("tolerances"); t != nullptr && tolerances != nullptr) {
     JsonObjectReader tr(*t, file, r.PathOf("tolerances"));
-    tolerances->p = tr.Number("p", tolerances->p);
-    tolerances->c_envelope_factor = tr.Number("c_envelope_factor", tolerances->c_envelope_factor);
-    tolerances->dt_ratio_factor = tr.Number("dt_ratio_factor", tolerances->dt_ratio_factor);
+    tolerances->p = NumberIn(tr, "p", tolerances->p, kSpread);
+    tolerances->c_envelope_factor =
+        NumberIn(tr, "c_envelope_factor", tolerances->c_envelope_factor, kFactor);
+    tolerances->dt_ratio_factor =
+        NumberIn(tr, "dt_ratio_factor", tolerances->dt_ratio_factor, kFactor);
     tr.Finish();
   }
   r.Finish();

@@ -38,6 +38,10 @@ std::string About(const EnsembleSizing& s, const std::string& spec_json) {
     html +=
         fmt::format("<p>{} members pending, {} not ok: not counted.</p>\n", s.pending, s.failed);
   }
+  if (s.superseded > 0) {
+    html += fmt::format("<p>{} stored members the study file no longer has: not counted.</p>\n",
+                        s.superseded);
+  }
   return html;
 }
 

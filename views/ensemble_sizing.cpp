@@ -26,10 +26,24 @@ void CheckOptions(const SizingOptions& o) {
   }
 }
 
-// The refined setting as the members store it: the file's "refined", or its only setting.
-std::string RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) {
-  if (spec.contains("refined")) return spec.at("refined").dump();
-  return members.front().setting_json;
+// The refined setting: the file's "refined", or the members' only setting. Compared by value,
+// as the study file matched it (100.0 is the setting 100).
+Json RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) {
+  if (spec.contains("refined")) return spec.at("refined");
+  return Json::parse(members.front().setting_json);
+}
+
+// Whether `setting` (a member's, {"path": value}) is one of the product of the file's
+// "settings" axes ({"path": [values]}; absent: the empty setting).
+bool IsSettingOf(const Json& setting, const Json& axes) {
+  if (setting.size() != (axes.is_object() ? axes.size() : 0)) return false;
+  for (const auto& [path, value] : setting.items()) {
+    const auto axis = axes.find(path);
+    if (axis == axes.end() || !axis->is_array() ||
+        std::find(axis->begin(), axis->end(), value) == axis->end())
+      return false;
+  }
+  return true;
 }
 
 std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
@@ -44,7 +58,7 @@ std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
 
 // The members of each (state, setting), in the order the study lists them.
 std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> Groups(
-    const StoredEnsemble& stored, const std::string& refined) {
+    const StoredEnsemble& stored, const Json& refined) {
   std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> groups;
   std::map<std::pair<std::string, std::string>, std::size_t> index;
   for (const StoredMember& m : stored.members) {
@@ -53,7 +67,7 @@ std::vector<std::pair<GroupSizing, std::vector<const StoredMember*>>> Groups(
       GroupSizing g;
       g.state = m.state;
       g.setting_json = m.setting_json;
-      g.refined = m.setting_json == refined;
+      g.refined = Json::parse(m.setting_json) == refined;
       groups.push_back({std::move(g), {}});
     }
     groups[it->second].second.push_back(&m);
@@ -187,6 +201,26 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
   return z;
 }
 
+StoredEnsemble CurrentMembers(StoredEnsemble stored) {
+  const Json spec = Json::parse(stored.spec_json);
+  const Json states = spec.value("clearance_states", Json::array({Json{{"name", "scene"}}}));
+  const Json axes = spec.value("settings", Json::object());
+  const int members = spec.value("members", 0);
+  const auto superseded = [&](const StoredMember& m) {
+    return !(m.member < members &&
+             std::any_of(states.begin(), states.end(),
+                         [&](const Json& s) { return s.value("name", "") == m.state; }) &&
+             IsSettingOf(Json::parse(m.setting_json), axes));
+  };
+  stored.superseded = static_cast<std::int64_t>(std::erase_if(stored.members, superseded));
+  std::erase_if(stored.not_ok, superseded);
+  stored.pending = std::count_if(stored.not_ok.begin(), stored.not_ok.end(), [](const auto& m) {
+    return m.status == "pending" || m.status == "running";
+  });
+  stored.failed = static_cast<std::int64_t>(stored.not_ok.size()) - stored.pending;
+  return stored;
+}
+
 EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& study,
                             const SizingOptions& options) {
   CheckOptions(options);
@@ -200,6 +234,7 @@ EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& stu
   sizing.options = options;
   sizing.pending = stored.pending;
   sizing.failed = stored.failed;
+  sizing.superseded = stored.superseded;
   sizing.zone_names = ZoneNames(stored);
   const Json spec = Json::parse(stored.spec_json);
   for (auto& [group, members] : Groups(stored, RefinedSetting(spec, stored.members))) {

@@ -67,8 +67,15 @@ struct EnsembleSizing {
   SizingOptions options;
   std::vector<std::string> zone_names;
   std::vector<GroupSizing> groups;  // States in the file's order, then settings.
-  std::int64_t pending = 0, failed = 0;
+  std::int64_t pending = 0, failed = 0, superseded = 0;
 };
+
+// The stored members that the study file, as last run, still has: an index below its member
+// count, one of its clearance states, one of its settings (compared by value). Members of an
+// earlier file (more members, a state or a setting since removed) are dropped and counted in
+// `superseded` (if computed), so that the statistics and the counts of members pending and not
+// ok are those of the current file.
+StoredEnsemble CurrentMembers(StoredEnsemble stored);
 
 // Throws InputError when the options are out of range, or the study holds no computed member.
 EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& study,
@@ -82,8 +89,9 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
 // when either interval is unbounded.
 std::optional<bool> Agrees(const ZoneSizing& setting, const ZoneSizing& refined, double tolerance);
 
-// The sizing estimate of the first n members for growing n (10 to all, about 12 per decade),
-// and the least-squares slope of log(interval width) against log(n) over the bounded ones.
+// The sizing estimate of the first n members for growing n (10, or all when fewer, to all;
+// about 12 per decade), and the least-squares slope of log(interval width) against log(n) over
+// the bounded ones.
 struct ConvergencePoint {
   int members = 0;
   QuantileInterval sizing;

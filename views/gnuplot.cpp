@@ -129,9 +129,16 @@ std::string Failure(bool& partial, const ChildOutcome& child,
   }
   if (!IsCompleteImage(drawing, image)) {
     partial = true;
-    return fmt::format("gnuplot wrote only part of {} ({} bytes; is the disk full?), script {}; {}",
-                       image.string(), std::filesystem::file_size(drawing, ec),
-                       script_file.string(), Excerpt(child.output));
+    // Say what is known, the bytes written and the room left, rather than guess at the cause.
+    const std::uintmax_t bytes = std::filesystem::file_size(drawing, ec);
+    const auto space =
+        std::filesystem::space(image.parent_path().empty() ? "." : image.parent_path(), ec);
+    const std::string room = ec ? "its disk's free space unknown"
+                             : space.available == 0
+                                 ? "its disk full"
+                                 : fmt::format("{:.3g} MB free on its disk", space.available / 1e6);
+    return fmt::format("gnuplot wrote only part of {} ({} bytes, {}), script {}; {}",
+                       image.string(), bytes, room, script_file.string(), Excerpt(child.output));
   }
   return "";
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -47,7 +48,11 @@ nlohmann::json Json(const QueryCell& c) {
   struct {
     nlohmann::json operator()(std::monostate) const { return nullptr; }
     nlohmann::json operator()(std::int64_t v) const { return v; }
-    nlohmann::json operator()(double v) const { return v; }
+    // JSON has no infinity or NaN: they are written as the strings the CSV and the table show
+    // ("inf", "-inf", "nan"), never as null, which reads as a missing value.
+    nlohmann::json operator()(double v) const {
+      return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(fmt::format("{}", v));
+    }
     nlohmann::json operator()(const std::string& v) const { return v; }
   } visitor;
   return std::visit(visitor, c);

@@ -15,15 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A state's name as part of a file name: letters, digits, '-' and '_', others as '_'.
-std::string FilePart(const std::string& name) {
-  std::string part = name;
-  for (char& c : part) {
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_') c = '_';
-  }
-  return part;
-}
-
 std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 
 // Interval ends for a plot: an unbounded side drawn at the estimate.
@@ -41,7 +32,7 @@ fs::path Draw(const fs::path& image, const std::string& body, int width = 900, i
 fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
                      const std::vector<double>& forces, const fs::path& folder) {
   const auto points = SizingConvergence(forces, s.options);
-  const fs::path image = folder / ("convergence_" + FilePart(g.state) + ".png");
+  const fs::path image = folder / ("convergence_" + FileNamePart(g.state) + ".png");
   const fs::path data = fs::path(image).replace_extension(".dat");
   std::string text = "# members estimate lower upper lower_bounded upper_bounded\n";
   for (const ConvergencePoint& p : points) {
@@ -53,26 +44,27 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
   const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
                                         Percent(s.options.quantile), g.zones[g.hottest].name,
                                         Percent(s.options.confidence));
-  return Draw(image,
-              fmt::format(
-                  R"(set title {title} noenhanced
+  return Draw(
+      image,
+      fmt::format(
+          R"(set title {title} noenhanced
 set xlabel 'members'
 set ylabel 'force (N)'
 set logscale x
-set xrange [9:{last}]
+set xrange [{first}:{last}]
 set key top left
 plot {data} using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' fs solid 0.5 title 'interval (both sides bounded)', \
      '' using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate', \
      '' using 1:($6 > 0 ? 1/0 : $2) with points pt 9 ps 1.5 lc rgb '#de2d26' title 'upper side unbounded (too few members)'
 )",
-                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", 1.15 * forces.size()),
-                  fmt::arg("data", GnuplotFileName(data))));
+          fmt::arg("title", GnuplotQuoted(title)), fmt::arg("first", 0.9 * points.front().members),
+          fmt::arg("last", 1.15 * forces.size()), fmt::arg("data", GnuplotFileName(data))));
 }
 
 fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
                    const fs::path& folder) {
   const ZoneSizing& z = g.zones[g.hottest];
-  const fs::path image = folder / ("histogram_" + FilePart(g.state) + ".png");
+  const fs::path image = folder / ("histogram_" + FileNamePart(g.state) + ".png");
   const fs::path data = fs::path(image).replace_extension(".dat");
   const auto [lo, hi] = std::minmax_element(forces.begin(), forces.end());
   const int bins = std::clamp(static_cast<int>(std::sqrt(forces.size())), 5, 40);
@@ -228,7 +220,7 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
   for (const GroupSizing* g : RefinedGroups(s)) {
     std::vector<double> sizing;
     for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
-    const fs::path map = folder / ("map_" + FilePart(g->state) + ".png");
+    const fs::path map = folder / ("map_" + FileNamePart(g->state) + ".png");
     DrawContactForceMap(scene, sizing, map,
                         fmt::format("{} of {} members, {}", q, g->members, g->state));
     pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
@@ -251,7 +243,8 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
                                         "streamed) per clearance state",
                                         q)});
   }
-  if (s.groups.size() > RefinedGroups(s).size()) {
+  // Each state's settings are drawn about its refined group's hottest zone.
+  if (!RefinedGroups(s).empty() && s.groups.size() > RefinedGroups(s).size()) {
     pictures.push_back(
         {Settings(s, folder), fmt::format("{} of the hottest zone per numerical setting", q)});
   }
