@@ -45,6 +45,7 @@ struct StudyFlags {
   std::string spec_path;
   std::string study;
   StudyRunOptions run;
+  double rank_timeout_s = kDefaultRankTimeoutS;
   bool quiet = false;
   std::string sql;
   std::string format = "table";
@@ -121,7 +122,8 @@ void Run(const StudyFlags& f) {
   StudyRunOptions options = f.run;
   options.progress = !f.quiet;
   // Under MPI, --jobs is the threads of each worker rank.
-  const std::unique_ptr<RemoteWorkers> job = JoinMpiJob(f.run.jobs > 0 ? f.run.jobs : 1);
+  const std::unique_ptr<RemoteWorkers> job =
+      JoinMpiJob(f.run.jobs > 0 ? f.run.jobs : 1, f.rank_timeout_s);
   if (job && job->Rank() != 0) return Serve(f, *job);
   if (job) {
     options.jobs = std::max(1, f.run.jobs);
@@ -130,7 +132,17 @@ void Run(const StudyFlags& f) {
   // The whole file, and every point's scene, is checked before the database is touched.
   const StudyFile study = ReadStudyFile(f.spec_path, f.access);
   InstallStopHandlers();
-  const StudyRunSummary s = RunStudy(study, options);
+  StudyRunSummary s;
+  try {
+    s = RunStudy(study, options);
+  } catch (const NoWorkerRankLeft& e) {
+    // Printed here: the job ends with MPI_Abort when `job` is destroyed.
+    fmt::print(stderr,
+               "shockmap: {}; the run is interrupted, the points stored are kept and the others "
+               "are pending: run the study again to resume\n",
+               e.what());
+    throw CLI::RuntimeError(kExitFailure);
+  }
   PrintSummary(s, options);
   if (s.stop_signal != 0) {
     for (const std::string& task : s.abandoned) {
@@ -198,6 +210,11 @@ void AddStudyCommand(CLI::App& app) {
                   "default 1)")
       ->check(CLI::Range(1, 1024));
   run->add_flag("--retry-failed", flags->run.retry_failed, "compute failed points again");
+  run->add_option("--rank-timeout-s", flags->rank_timeout_s,
+                  "under MPI: seconds a worker rank may send nothing (not even its heartbeat, "
+                  "every 0.5 s) before rank 0 gives its tasks to the other ranks")
+      ->capture_default_str()
+      ->check(FiniteAbove(2.0, false));
   run->add_flag("--quiet", flags->quiet, "no progress on stderr");
   AddAllowPathFlag(run, flags->access);
   run->callback([flags] { Run(*flags); });

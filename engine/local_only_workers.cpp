@@ -8,7 +8,7 @@
 
 namespace shockmap {
 
-std::unique_ptr<RemoteWorkers> JoinMpiJob(int) {
+std::unique_ptr<RemoteWorkers> JoinMpiJob(int, double) {
   for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"}) {
     const char* size = std::getenv(variable);
     if (size != nullptr && std::string(size) != "1") {

@@ -4,6 +4,9 @@
 // a rank and that rank returning a large reference never wait on each other. Waiting sleeps
 // (from 20 us up to 0.25 ms) instead of spinning: on a shared node rank 0 leaves the cores to
 // the workers.
+// A worker rank's MPI thread also sends a heartbeat when it has sent nothing for
+// kWorkerHeartbeatPeriodS, so rank 0 tells a stopped, hung or unreachable rank (silent for the
+// rank timeout) from one busy on a long task.
 
 #include <mpi.h>
 #include <unistd.h>
@@ -18,6 +21,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -27,7 +31,13 @@
 namespace shockmap {
 namespace {
 
-enum Tag : int { kTask = 1, kResult = 2, kQuit = 3, kBye = 4 };
+enum Tag : int { kTask = 1, kResult = 2, kQuit = 3, kBye = 4, kAlive = 5 };
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 struct Message {
   std::string bytes;
@@ -52,7 +62,7 @@ std::optional<Message> Receive(int source, int tag) {
 class Sends {
  public:
   void Post(int to, int tag, std::string bytes) {
-    Pending& p = pending_.emplace_back(Pending{std::move(bytes), MPI_REQUEST_NULL});
+    Pending& p = pending_.emplace_back(Pending{std::move(bytes), to, MPI_REQUEST_NULL});
     MPI_Isend(p.bytes.data(), static_cast<int>(p.bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD,
               &p.request);
   }
@@ -64,10 +74,15 @@ class Sends {
     });
   }
   bool Empty() const { return pending_.empty(); }
+  // No send is pending but to the ranks in `ignored` (which may never receive it).
+  bool EmptyBut(const std::set<int>& ignored) const {
+    return std::ranges::all_of(pending_, [&](const Pending& p) { return ignored.contains(p.to); });
+  }
 
  private:
   struct Pending {
     std::string bytes;
+    int to;
     MPI_Request request;
   };
   std::list<Pending> pending_;  // A list: requests keep their address.
@@ -111,7 +126,12 @@ std::string HostName() {
 
 class MpiWorkers final : public RemoteWorkers {
  public:
-  MpiWorkers(int threads, int rank, int size) : threads_(threads), rank_(rank), size_(size) {
+  MpiWorkers(int threads, double rank_timeout_s, int rank, int size)
+      : threads_(threads),
+        rank_timeout_s_(rank_timeout_s),
+        rank_(rank),
+        size_(size),
+        heard_(static_cast<std::size_t>(size), Clock::now()) {
     char mine[256] = {};
     const std::string host = HostName();
     host.copy(mine, sizeof mine - 1);
@@ -121,6 +141,10 @@ class MpiWorkers final : public RemoteWorkers {
   }
   ~MpiWorkers() override {
     if (rank_ == 0) EndJob();
+    if (!lost_.empty()) {
+      std::fflush(nullptr);
+      MPI_Abort(MPI_COMM_WORLD, EXIT_FAILURE);  // MPI_Finalize would wait for the lost ranks.
+    }
     MPI_Finalize();
   }
 
@@ -133,11 +157,24 @@ class MpiWorkers final : public RemoteWorkers {
   MessageTotals Totals() const override { return totals_; }
 
   std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
-                                 const ConsumeResult& consume,
-                                 const std::function<bool()>& poll) override;
+                                 const ConsumeResult& consume, const std::function<bool()>& poll,
+                                 const Describe& describe) override;
   void Serve(const Execute& execute) override;
 
  private:
+  // The tasks out on each rank, the idle threads (one entry each, the ranks taking turns) and
+  // the tasks of lost ranks, handed out again before new ones.
+  struct Schedule {
+    std::map<std::size_t, int> out;  // Task index -> the rank computing it.
+    std::deque<int> idle;
+    std::deque<std::size_t> handed_back;
+  };
+  // Passes a worker rank's result to consume() and its thread back to the idle ones.
+  void TakeResult(const Message& m, Schedule& schedule, const ConsumeResult& consume);
+  // Counts as lost every rank silent for the rank timeout and hands its tasks back; throws
+  // NoWorkerRankLeft when no worker rank is left. Call only with no message waiting, so that a
+  // rank 0 busy elsewhere has read every heartbeat before it judges.
+  void LoseSilentRanks(Schedule& schedule, const Describe& describe);
   void EndJob();
   // What a worker rank's compute threads and its MPI thread share.
   struct WorkerQueues {
@@ -147,49 +184,61 @@ class MpiWorkers final : public RemoteWorkers {
     bool quit = false;
     std::string error;
   };
-  // A worker's MPI thread: takes tasks and sends results until rank 0 says quit.
+  // A worker's MPI thread: takes tasks and sends results (or a heartbeat when it has sent
+  // nothing for kWorkerHeartbeatPeriodS) until rank 0 says quit.
   void Relay(WorkerQueues& q);
 
-  int threads_, rank_, size_;
+  int threads_;
+  double rank_timeout_s_;
+  int rank_, size_;
   std::vector<std::string> hosts_;
+  std::vector<Clock::time_point> heard_;  // On rank 0: when each rank's last message came.
+  std::set<int> lost_;                    // On rank 0: worker ranks never given work again.
+  std::vector<std::string> lost_reasons_;
   Sends sends_;
   MessageTotals totals_;
 };
 
 std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& encode,
                                            const ConsumeResult& consume,
-                                           const std::function<bool()>& poll) {
-  std::deque<int> idle;  // One entry per idle thread, the ranks taking turns.
+                                           const std::function<bool()>& poll,
+                                           const Describe& describe) {
+  Schedule schedule;
+  auto& [out, idle, handed_back] = schedule;
   for (int t = 0; t < threads_; ++t) {
-    for (int r = 1; r < size_; ++r) idle.push_back(r);
+    for (int r = 1; r < size_; ++r) {
+      if (!lost_.contains(r)) idle.push_back(r);
+    }
   }
-  std::map<std::size_t, int> out;  // Task index -> the rank computing it.
   std::size_t next = 0;
   bool stopped = false;
   Backoff backoff;
   for (;;) {
-    for (; !stopped && next < count && !idle.empty(); ++next) {
-      std::string task = Framed(next, encode(next, idle.front()));
+    while (!stopped && !idle.empty() && (!handed_back.empty() || next < count)) {
+      std::size_t index = next;
+      if (handed_back.empty()) {
+        ++next;
+      } else {
+        index = handed_back.front();
+        handed_back.pop_front();
+      }
+      std::string task = Framed(index, encode(index, idle.front()));
       ++totals_.tasks;
       totals_.task_bytes += static_cast<double>(task.size());
       totals_.largest_task = std::max(totals_.largest_task, static_cast<double>(task.size()));
       sends_.Post(idle.front(), kTask, std::move(task));
-      out[next] = idle.front();
+      out[index] = idle.front();
       idle.pop_front();
     }
     sends_.Progress();
     if (out.empty() || stopped) break;
-    if (auto m = Receive(MPI_ANY_SOURCE, kResult)) {
-      const std::size_t index = IndexOf(m->bytes);
-      if (out.erase(index) == 0) throw std::runtime_error("result of a task never handed out");
-      ++totals_.results;
-      totals_.result_bytes += static_cast<double>(m->bytes.size());
-      totals_.largest_result =
-          std::max(totals_.largest_result, static_cast<double>(m->bytes.size()));
-      consume(index, std::string_view(m->bytes).substr(sizeof(std::uint64_t)), m->source);
-      idle.push_back(m->source);
+    if (auto m = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG)) {
+      heard_[static_cast<std::size_t>(m->source)] = Clock::now();
+      // Else a heartbeat, or a lost rank's late result: its task went to another rank.
+      if (m->tag == kResult && !lost_.contains(m->source)) TakeResult(*m, schedule, consume);
       backoff.Reset();
     } else {
+      LoseSilentRanks(schedule, describe);
       backoff.Wait();
     }
     stopped = poll();
@@ -199,11 +248,62 @@ std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& 
   return abandoned;
 }
 
-// Tells every worker to quit and waits for each one's goodbye, discarding late results.
+void MpiWorkers::TakeResult(const Message& m, Schedule& schedule, const ConsumeResult& consume) {
+  const std::size_t index = IndexOf(m.bytes);
+  const auto task = schedule.out.find(index);
+  if (task == schedule.out.end() || task->second != m.source) {
+    throw std::runtime_error("result of a task never handed out");
+  }
+  schedule.out.erase(task);
+  ++totals_.results;
+  totals_.result_bytes += static_cast<double>(m.bytes.size());
+  totals_.largest_result = std::max(totals_.largest_result, static_cast<double>(m.bytes.size()));
+  consume(index, std::string_view(m.bytes).substr(sizeof(std::uint64_t)), m.source);
+  schedule.idle.push_back(m.source);
+}
+
+void MpiWorkers::LoseSilentRanks(Schedule& schedule, const Describe& describe) {
+  const Clock::time_point now = Clock::now();
+  for (int r = 1; r < size_; ++r) {
+    const double silent_s =
+        std::chrono::duration<double>(now - heard_[static_cast<std::size_t>(r)]).count();
+    if (lost_.contains(r) || silent_s < rank_timeout_s_) continue;
+    lost_.insert(r);
+    std::erase(schedule.idle, r);
+    std::string held;
+    for (auto task = schedule.out.begin(); task != schedule.out.end();) {
+      if (task->second != r) {
+        ++task;
+        continue;
+      }
+      held += (held.empty() ? "" : ", ") + describe(task->first);
+      schedule.handed_back.push_back(task->first);
+      task = schedule.out.erase(task);
+    }
+    char silence[32];
+    std::snprintf(silence, sizeof silence, "%.1f", silent_s);
+    lost_reasons_.push_back("rank " + std::to_string(r) + " (host " +
+                            hosts_[static_cast<std::size_t>(r)] + ") sent nothing for " + silence +
+                            " s, holding " + (held.empty() ? "no task" : held));
+    if (static_cast<int>(lost_.size()) == size_ - 1) {
+      std::string all;
+      for (const std::string& reason : lost_reasons_) all += (all.empty() ? "" : "; ") + reason;
+      throw NoWorkerRankLeft("no worker rank answers: " + all);
+    }
+    std::fprintf(stderr, "shockmap: %s: it gets no more work, its tasks go to the other ranks\n",
+                 lost_reasons_.back().c_str());
+  }
+}
+
+// Tells every worker rank not lost to quit and waits for each one's goodbye, discarding late
+// results and heartbeats.
 void MpiWorkers::EndJob() {
-  for (int r = 1; r < size_; ++r) sends_.Post(r, kQuit, "");
+  for (int r = 1; r < size_; ++r) {
+    if (!lost_.contains(r)) sends_.Post(r, kQuit, "");
+  }
   Backoff backoff;
-  for (int byes = 0; byes < size_ - 1 || !sends_.Empty();) {
+  const int live = size_ - 1 - static_cast<int>(lost_.size());
+  for (int byes = 0; byes < live || !sends_.EmptyBut(lost_);) {
     sends_.Progress();
     if (auto m = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG)) {
       byes += m->tag == kBye ? 1 : 0;
@@ -253,6 +353,7 @@ void MpiWorkers::Serve(const Execute& execute) {
 
 void MpiWorkers::Relay(WorkerQueues& q) {
   Backoff backoff;
+  Clock::time_point last_sent = Clock::now();
   for (;;) {
     std::optional<Message> m = Receive(0, MPI_ANY_TAG);
     if (m && m->tag == kQuit) return;
@@ -275,14 +376,21 @@ void MpiWorkers::Relay(WorkerQueues& q) {
       done.swap(q.results);
     }
     for (std::string& r : done) sends_.Post(0, kResult, std::move(r));
-    if (!done.empty()) backoff.Reset();
+    if (!done.empty()) {
+      backoff.Reset();
+      last_sent = Clock::now();
+    }
+    if (SecondsSince(last_sent) >= kWorkerHeartbeatPeriodS) {
+      sends_.Post(0, kAlive, "");
+      last_sent = Clock::now();
+    }
     sends_.Progress();
   }
 }
 
 }  // namespace
 
-std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads) {
+std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads, double rank_timeout_s) {
   // Only a process an MPI launcher started initializes MPI: a plain run stays a plain process.
   if (std::getenv("OMPI_COMM_WORLD_SIZE") == nullptr && std::getenv("PMIX_RANK") == nullptr &&
       std::getenv("PMI_SIZE") == nullptr) {
@@ -293,7 +401,7 @@ std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  return std::make_unique<MpiWorkers>(threads, rank, size);
+  return std::make_unique<MpiWorkers>(threads, rank_timeout_s, rank, size);
 }
 
 }  // namespace shockmap

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,12 @@ struct AbandonedTask {
   int rank = 0;
 };
 
+// Every worker rank went silent (RemoteWorkers::Run): the study cannot go on. The message names
+// each rank, its host and the tasks it held.
+struct NoWorkerRankLeft : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // What rank 0 sent and received: tasks (with the references they carry) and results.
 struct MessageTotals {
   long tasks = 0, results = 0;
@@ -32,6 +39,7 @@ class RemoteWorkers {
   using EncodeTask = std::function<std::string(std::size_t index, int rank)>;
   using ConsumeResult = std::function<void(std::size_t index, std::string_view bytes, int rank)>;
   using Execute = std::function<std::string(std::string_view task)>;
+  using Describe = std::function<std::string(std::size_t index)>;
 
   virtual ~RemoteWorkers() = default;
 
@@ -49,20 +57,36 @@ class RemoteWorkers {
   // in completion order. poll() runs after every result and every millisecond while waiting;
   // once it returns true, Run returns at once with the tasks still out: a stopped job does not
   // wait, since under an MPI launcher SIGTERM is followed by SIGKILL within a second (a dead
-  // worker rank would never answer anyway). Throws std::runtime_error on a malformed message.
+  // worker rank would never answer anyway).
+  // A worker rank silent for the job's rank timeout (stopped, hung or unreachable) is lost: Run
+  // prints on stderr its rank, host and the tasks it held (each named by describe(i)), hands
+  // those to the other ranks and never gives it work again; a late result from it is dropped,
+  // so every task is consumed once. Throws NoWorkerRankLeft when the last worker rank is lost,
+  // std::runtime_error on a malformed message.
   virtual std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
                                          const ConsumeResult& consume,
-                                         const std::function<bool()>& poll) = 0;
+                                         const std::function<bool()>& poll,
+                                         const Describe& describe) = 0;
 
   // On ranks 1..N-1: runs every task rank 0 sends on ThreadsPerRank() threads and sends back
   // execute(task), until rank 0 ends the job. execute must not throw.
   virtual void Serve(const Execute& execute) = 0;
 };
 
+// How long rank 0 waits for word from a worker rank before it counts the rank as lost; a
+// worker rank's MPI thread sends at least every kWorkerHeartbeatPeriodS, however long its
+// tasks take.
+inline constexpr double kDefaultRankTimeoutS = 60.0;
+inline constexpr double kWorkerHeartbeatPeriodS = 0.5;
+
 // The workers of this process's MPI job when it was started by an MPI launcher (mpirun, srun)
-// with more than one rank, else null (a local run). `threads` is the threads per worker rank.
+// with more than one rank, else null (a local run). `threads` is the threads per worker rank,
+// `rank_timeout_s` the silence after which rank 0 counts a worker rank as lost.
 // Ends the job on every rank when the returned object is destroyed (rank 0 first tells the
-// workers). Throws InputError when launched on several ranks by a build without MPI.
-std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads);
+// workers). A job that lost a rank cannot end normally (MPI_Finalize would wait for it): once
+// the live workers have quit, rank 0 ends it with MPI_Abort, exit code 1, stdout and stderr
+// flushed; by then the caller has closed the database. Throws InputError when launched on
+// several ranks by a build without MPI.
+std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads, double rank_timeout_s);
 
 }  // namespace shockmap

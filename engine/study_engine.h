@@ -74,7 +74,8 @@ void CountOutcome(RunStatus status, StudyRunSummary& summary);
 std::string OutcomeCounts(const StudyRunSummary& summary);
 
 // Throws InputError when the study is stored with other settings, DbError on database faults
-// (another run holding the database among them).
+// (another run holding the database among them), NoWorkerRankLeft when every worker rank of an
+// MPI job fell silent (the run then ends interrupted, its points pending again).
 template <StudyKind Kind>
 StudyRunSummary RunStudyKind(const Kind& kind, const StudyRunOptions& options);
 
@@ -167,6 +168,10 @@ class StudyRun {
     try {
       ComputeReferences();
       ComputePoints();
+    } catch (const NoWorkerRankLeft& e) {
+      db_.ReleaseRunningPoints(kind_.Table(), run_id_);
+      db_.EndRun(run_id_, RunEnd::kInterrupted, e.what());
+      throw;
     } catch (...) {
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
       db_.EndRun(run_id_, RunEnd::kFailed);
@@ -237,7 +242,7 @@ class StudyRun {
   // Runs local(i) for i in [0, count) on this process's threads, or the task encode(i, rank)
   // on the worker ranks whose answer decode(i, bytes) reads back; each result reaches
   // consume(result, where it was computed) on this thread, the one writer. `what(i)` names a
-  // task a stopped MPI job got no answer for.
+  // task a stopped MPI job got no answer for, or one a lost worker rank held.
   template <typename Result, typename Local, typename Encode, typename Decode, typename Consume,
             typename What>
   void Distribute(std::size_t count, Local local, Encode encode, Decode decode, Consume consume,
@@ -256,7 +261,7 @@ class StudyRun {
           in.ExpectEnd();
           consume(std::move(r), remote_->OriginOf(rank));
         },
-        [&] { return Poll(); });
+        [&] { return Poll(); }, what);
     for (const AbandonedTask& t : abandoned) {
       const PointOrigin o = remote_->OriginOf(t.rank);
       summary_.abandoned.push_back(what(t.index) + " on rank " + std::to_string(t.rank) +

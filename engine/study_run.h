@@ -6,8 +6,9 @@
 
 namespace shockmap {
 
-// Throws InputError when the study is stored with other settings, DbError on database faults.
-// With options.remote, this is rank 0 of an MPI job: the worker ranks compute, it writes.
+// Throws InputError when the study is stored with other settings, DbError on database faults,
+// NoWorkerRankLeft when every worker rank fell silent. With options.remote, this is rank 0 of an
+// MPI job: the worker ranks compute, it writes.
 StudyRunSummary RunStudy(const StudyFile& study, const StudyRunOptions& options);
 
 // On ranks 1..N-1 of an MPI job: computes what rank 0's RunStudy of the same file hands out.
