@@ -136,7 +136,9 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheCodeBeforeTheEngineAndItsU
       e[5] = "unstable";
       ++reclassified;
     }
-    if (e[5] == "ok") EXPECT_LE(ratio, kUnstableEnergyRatio) << expected[i];
+    if (e[5] == "ok") {
+      EXPECT_LE(ratio, kUnstableEnergyRatio) << expected[i];
+    }
     for (int exact : {0, 1, 2, 3, 4, 5, 8, 9}) {
       EXPECT_EQ(a[exact], e[exact]) << expected[i] << ", energy ratio " << ratio;
     }

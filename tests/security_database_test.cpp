@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "db/schema.h"
 #include "db/sqlite_handle.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
@@ -94,7 +95,8 @@ TEST_F(DatabaseCorruption, NegativeSchemaVersionIsRefusedByTheWriterAndEveryRead
   for (const char* version : {"-1", "-2147483648"}) {
     Edit(std::string("PRAGMA user_version = ") + version);
     const std::string message = std::string("database corrupt: schema version ") + version +
-                                " (PRAGMA user_version) is none shockmap writes (0 to 8)";
+                                " (PRAGMA user_version) is none shockmap writes (0 to " +
+                                std::to_string(kSchemaVersion) + ")";
     ExpectRefused("study run " + Path("study.json"), message);
     for (const std::string& reader : kCanonicalReaders) ExpectRefused(reader, message);
   }
