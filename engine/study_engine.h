@@ -172,9 +172,11 @@ class StudyRun {
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
       db_.EndRun(run_id_, RunEnd::kInterrupted, e.what());
       throw;
-    } catch (...) {
+    } catch (const std::exception& e) {
+      // The run row keeps why it failed (a corrupt stored reference, say), for `study status`
+      // and the run that takes its points up.
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
-      db_.EndRun(run_id_, RunEnd::kFailed);
+      db_.EndRun(run_id_, RunEnd::kFailed, e.what());
       throw;
     }
     if (summary_.stop_signal == 0) {

@@ -12,6 +12,7 @@
 
 #include "db/schema.h"
 #include "db/sqlite_handle.h"
+#include "tests/database_rows.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 
@@ -146,6 +147,12 @@ TEST_F(DatabaseCorruption, ReferenceSignalsOfUnequalLengthAreRefusedBeforeAnyUse
   const auto run = RunShockmap("study run " + Path("study.json") + " --db " + db());
   EXPECT_EQ(run.exit_code, 2) << run.output;
   EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
+  // Its run row ends failed and says why.
+  const std::vector<std::string> last_run = testing::Rows(
+      db(), "SELECT end_reason || ': ' || end_message FROM runs ORDER BY run_id DESC");
+  ASSERT_FALSE(last_run.empty());
+  EXPECT_EQ(last_run[0].rfind("failed: ", 0), 0u) << last_run[0];
+  EXPECT_NE(last_run[0].find(message), std::string::npos) << last_run[0];
 
   Edit(
       "UPDATE reference_runs SET tip_m = zeroblob(120000000), force_n = "
@@ -236,6 +243,7 @@ TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizi
   Edit("UPDATE studies SET spec_json = json_remove(spec_json, '$.scene_json')");
   ExpectRefused("report --out " + Path("report"),
                 "database corrupt: study ens: spec_json: key 'scene_json' not found");
+  EXPECT_FALSE(std::filesystem::exists(Path("report")));  // No refusal creates a file.
 }
 
 TEST_F(DatabaseCorruption, StoredTextThatIsNotTextIsADatabaseErrorNotAnInternalOne) {
