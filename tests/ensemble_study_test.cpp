@@ -190,9 +190,9 @@ TEST_F(EnsembleStudyTest, SizingIsTheStatisticsOfTheStoredMaxima) {
     ASSERT_EQ(forces.size(), 64u);
     const QuantileInterval p95 = EstimateQuantile(forces, 0.95, 0.95);
     EXPECT_EQ(row["p95_n"].get<double>(), p95.estimate);
-    // An unbounded side (too few members for it) is null.
-    EXPECT_EQ(row["p95_lower_n"], p95.lower_bounded ? json(p95.lower) : json());
-    EXPECT_EQ(row["p95_upper_n"], p95.upper_bounded ? json(p95.upper) : json());
+    // An unbounded side (too few members for it) is an infinite bound.
+    EXPECT_EQ(row["p95_lower_n"], p95.lower_bounded ? json(p95.lower) : json("-inf"));
+    EXPECT_EQ(row["p95_upper_n"], p95.upper_bounded ? json(p95.upper) : json("inf"));
     // 64 members allow Wilks' first order only at 95/95 (the second needs 93): the largest.
     EXPECT_EQ(row["wilks_order"].get<int>(), 1);
     EXPECT_EQ(row["wilks_limit_n"].get<double>(), *std::max_element(forces.begin(), forces.end()));

@@ -3,14 +3,19 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace shockmap {
 namespace {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 
-QueryCell Bound(double value, bool bounded) {
-  return bounded ? QueryCell(value) : QueryCell(std::monostate{});
+// An unbounded side of an interval is an infinite bound (`-inf` or `inf` in every format, as
+// `query` prints infinities), not a missing value.
+QueryCell Bound(double value, bool bounded, double unbounded) {
+  return QueryCell(bounded ? value : unbounded);
 }
 
 QueryCell Optional(const std::optional<double>& v) {
@@ -52,8 +57,8 @@ std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
     if (compact) {
       row.push_back(Shown(q));
     } else {
-      row.insert(row.end(),
-                 {q.estimate, Bound(q.lower, q.lower_bounded), Bound(q.upper, q.upper_bounded)});
+      row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
+                             Bound(q.upper, q.upper_bounded, kInfinity)});
     }
   };
   interval(z.p50);
