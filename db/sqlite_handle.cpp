@@ -39,19 +39,32 @@ std::string ReadOnlyUri(const std::string& path) {
   return uri + (OpensImmutable(path) ? "?mode=ro&immutable=1" : "?mode=ro");
 }
 
-// Throws unless `path` names a regular file, or nothing yet when a writer may create it: SQLite
-// would block for ever opening a FIFO, and write a -journal beside a device.
-void CheckIsDatabaseFile(const std::string& path, Connection::Mode mode) {
+// Throws unless `file` (the database at `path`, or a file SQLite keeps beside it) is a regular
+// file or, unless `must_exist`, absent.
+void CheckRegularOrAbsent(const std::string& path, const std::string& file, bool must_exist) {
   std::error_code ec;
-  const auto type = std::filesystem::status(path, ec).type();
+  const auto type = std::filesystem::status(file, ec).type();
   if (type == std::filesystem::file_type::regular) return;
   if (type == std::filesystem::file_type::not_found) {
-    if (mode == Connection::Mode::kReadOnly) throw DbError("no database at " + path);
+    if (must_exist) throw DbError("no database at " + path);
     return;
   }
-  if (ec) throw DbError("cannot open database " + path + ": " + ec.message());
-  throw DbError("cannot open database " + path +
-                ": not a regular file (a study database is a regular file); nothing was opened");
+  if (ec) throw DbError("cannot open database " + path + ": " + file + ": " + ec.message());
+  throw DbError("cannot open database " + path + ": " +
+                (file == path ? "not a regular file (a study database is a regular file)"
+                              : file + " is not a regular file (SQLite keeps its journal there)") +
+                "; nothing was opened");
+}
+
+// Throws unless `path` names a regular file (or nothing yet, when a writer may create it) and
+// each file SQLite keeps beside it is a regular file or absent: SQLite would block for ever
+// opening a FIFO, and write a -journal beside a device. ":memory:" names no file.
+void CheckIsDatabaseFile(const std::string& path, Connection::Mode mode) {
+  if (path == ":memory:") return;
+  CheckRegularOrAbsent(path, path, mode == Connection::Mode::kReadOnly);
+  for (const char* beside : {"-journal", "-wal", "-shm"}) {
+    CheckRegularOrAbsent(path, path + beside, false);
+  }
 }
 
 }  // namespace
@@ -205,7 +218,9 @@ std::vector<double> Statement::GetBlob(int i) const {
   const void* p = sqlite3_column_blob(stmt_, i);
   const auto bytes = static_cast<std::size_t>(sqlite3_column_bytes(stmt_, i));
   if (bytes % sizeof(double) != 0) {
-    throw DbError("database corrupt: column " + ColumnName(i) + " holds " + std::to_string(bytes) +
+    const char* file = sqlite3_db_filename(sqlite3_db_handle(stmt_), "main");
+    throw DbError(std::string(file != nullptr ? file : "") + ": database corrupt: column " +
+                  ColumnName(i) + " holds " + std::to_string(bytes) +
                   " bytes, not a whole number of 8-byte float64 values");
   }
   std::vector<double> v(bytes / sizeof(double));

@@ -144,6 +144,23 @@ TEST_F(Resources, FifoDatabaseIsRefusedWithoutOpeningIt) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), {}), 2);  // fifo, study
 }
 
+// A FIFO where SQLite keeps a journal beside the database: opening it would block as well.
+TEST_F(Resources, FifoBesideTheDatabaseIsRefusedWithoutOpeningIt) {
+  const std::string db = SmallDatabase();
+  for (const char* beside : {"-journal", "-wal"}) {
+    const std::string fifo = db + beside;
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    for (const char* command : {"study status", "query 'SELECT 1'"}) {
+      const Outcome out = RunBounded(std::string(command) + " --db " + db, 10);
+      EXPECT_EQ(out.exit_code, 2) << command << ": " << out.output;
+      EXPECT_NE(out.output.find(fifo + " is not a regular file"), std::string::npos)
+          << command << ": " << out.output;
+    }
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+    std::filesystem::remove(fifo);
+  }
+}
+
 TEST_F(Resources, DeviceDatabaseIsRefusedBeforeSqliteWritesBesideIt) {
   WriteText(Path("study.json"), kSmallStudy);
   const bool journal_before = std::filesystem::exists("/dev/null-journal");
