@@ -44,7 +44,9 @@ std::optional<std::string> LiveWriter(const std::string& database_path) {
   const double now = UnixNow();
   const QueryResult r = RunReadOnlyQuery(
       database_path,
-      "SELECT run_id, host, pid, heartbeat_unix_s FROM runs WHERE ended_utc IS NULL "
+      // Cast, since a forged row may hold any type in any column.
+      "SELECT run_id, coalesce(CAST(host AS TEXT), ''), coalesce(CAST(pid AS INTEGER), 0), "
+      "CAST(heartbeat_unix_s AS REAL) FROM runs WHERE ended_utc IS NULL "
       "AND heartbeat_unix_s > CAST(?1 AS REAL) ORDER BY run_id DESC LIMIT 1",
       {fmt::format("{:.3f}", now - kLeaseGraceS)});
   if (r.rows.empty()) return std::nullopt;
