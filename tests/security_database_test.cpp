@@ -175,9 +175,9 @@ TEST_F(DatabaseCorruption, ReferenceBlobsThatAreNotWholeFiniteSamplesAreRefused)
   WriteText(db(), pristine);
   Edit("UPDATE reference_runs SET force_n = substr(force_n, 1, 801)");
   ExpectRefused("export reference --rk 10 --out " + Path("ref.csv"),
-                "database error: database corrupt: column force_n holds 801 "
-                "bytes, not a whole "
-                "number of 8-byte float64 values");
+                "database error: " + db() +
+                    ": database corrupt: column force_n holds 801 bytes, not a whole number of "
+                    "8-byte float64 values");
 }
 
 TEST_F(DatabaseCorruption, SamplingStepThatDisagreesWithTheWindowIsRefused) {
