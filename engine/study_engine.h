@@ -178,6 +178,10 @@ class StudyRun {
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
       db_.EndRun(run_id_, RunEnd::kFailed, e.what());
       throw;
+    } catch (...) {
+      db_.ReleaseRunningPoints(kind_.Table(), run_id_);
+      db_.EndRun(run_id_, RunEnd::kFailed, "an unknown error");
+      throw;
     }
     if (summary_.stop_signal == 0) {
       db_.EndRun(run_id_, RunEnd::kCompleted);
