@@ -8,6 +8,7 @@
 #include "app/compare_command.h"
 #include "app/completion_command.h"
 #include "app/criteria_command.h"
+#include "app/error_report.h"
 #include "app/exit_codes.h"
 #include "app/export_command.h"
 #include "app/map_command.h"
@@ -16,12 +17,9 @@
 #include "app/sizing_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
-#include "core/input_error.h"
-#include "db/sqlite_handle.h"
 #include "engine/provenance.h"
 #include "formats/output_file.h"
 #include "formats/signal_cleanup.h"
-#include "views/gnuplot.h"
 
 int main(int argc, char** argv) {
   shockmap::InstallSignalCleanup();
@@ -65,20 +63,8 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);
     std::cerr << "shockmap: error: " << e.what() << '\n';
     return shockmap::kExitBadInput;
-  } catch (const shockmap::InputError& e) {
-    std::cerr << "shockmap: error: " << e.what() << '\n';
-    return shockmap::kExitBadInput;
-  } catch (const shockmap::DbError& e) {
-    // The database named by the user is missing, foreign, corrupt, newer, locked, or the SQL
-    // given is invalid or would write: all input the user can fix.
-    std::cerr << "shockmap: database error: " << e.what() << '\n';
-    return shockmap::kExitBadInput;
-  } catch (const shockmap::PlotError& e) {
-    std::cerr << "shockmap: plot error: " << e.what() << '\n';
-    return shockmap::kExitFailure;
-  } catch (const std::exception& e) {
-    std::cerr << "shockmap: internal error: " << e.what() << '\n';
-    return shockmap::kExitFailure;
+  } catch (...) {
+    return shockmap::ReportFailure(std::current_exception());
   }
   return shockmap::kExitSuccess;
 }

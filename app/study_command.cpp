@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "app/error_report.h"
 #include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "db/study_queries.h"
@@ -118,17 +119,8 @@ void Serve(const StudyFlags& f, RemoteWorkers& job) {
   }
 }
 
-void Run(const StudyFlags& f) {
-  StudyRunOptions options = f.run;
-  options.progress = !f.quiet;
-  // Under MPI, --jobs is the threads of each worker rank.
-  const std::unique_ptr<RemoteWorkers> job =
-      JoinMpiJob(f.run.jobs > 0 ? f.run.jobs : 1, f.rank_timeout_s);
-  if (job && job->Rank() != 0) return Serve(f, *job);
-  if (job) {
-    options.jobs = std::max(1, f.run.jobs);
-    if (job->WorkerRanks() > 0) options.remote = job.get();
-  }
+// Rank 0's run (or the only process's): the study, its summary, and what a signal left.
+void RunOnRankZero(const StudyFlags& f, StudyRunOptions options) {
   // The whole file, and every point's scene, is checked before the database is touched.
   const StudyFile study = ReadStudyFile(f.spec_path, f.access);
   InstallStopHandlers();
@@ -136,7 +128,6 @@ void Run(const StudyFlags& f) {
   try {
     s = RunStudy(study, options);
   } catch (const NoWorkerRankLeft& e) {
-    // Printed here: the job ends with MPI_Abort when `job` is destroyed.
     fmt::print(stderr,
                "shockmap: {}; the run is interrupted, the points stored are kept and the others "
                "are pending: run the study again to resume\n",
@@ -154,6 +145,27 @@ void Run(const StudyFlags& f) {
                SignalName(s.stop_signal), s.points_computed, s.points_to_compute);
     std::fflush(stdout);
     throw Interrupted(s.stop_signal);
+  }
+}
+
+void Run(const StudyFlags& f) {
+  StudyRunOptions options = f.run;
+  options.progress = !f.quiet;
+  // Under MPI, --jobs is the threads of each worker rank.
+  const std::unique_ptr<RemoteWorkers> job =
+      JoinMpiJob(f.run.jobs > 0 ? f.run.jobs : 1, f.rank_timeout_s);
+  if (!job) return RunOnRankZero(f, options);
+  if (job->Rank() != 0) return Serve(f, *job);
+  options.jobs = std::max(1, f.run.jobs);
+  if (job->WorkerRanks() > 0) options.remote = job.get();
+  try {
+    RunOnRankZero(f, options);
+  } catch (...) {
+    // Reported now, with its exit code for the job: a job that lost a rank ends in MPI_Abort
+    // when `job` is destroyed, before main could report it.
+    const int exit_code = ReportFailure(std::current_exception());
+    job->SetExitCode(exit_code);
+    throw CLI::RuntimeError(exit_code);
   }
 }
 

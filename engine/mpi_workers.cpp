@@ -143,7 +143,7 @@ class MpiWorkers final : public RemoteWorkers {
     if (rank_ == 0) EndJob();
     if (!lost_.empty()) {
       std::fflush(nullptr);
-      MPI_Abort(MPI_COMM_WORLD, EXIT_FAILURE);  // MPI_Finalize would wait for the lost ranks.
+      MPI_Abort(MPI_COMM_WORLD, exit_code_);  // MPI_Finalize would wait for the lost ranks.
     }
     MPI_Finalize();
   }
@@ -155,6 +155,7 @@ class MpiWorkers final : public RemoteWorkers {
     return {hosts_.at(static_cast<std::size_t>(rank)), rank};
   }
   MessageTotals Totals() const override { return totals_; }
+  void SetExitCode(int exit_code) override { exit_code_ = exit_code; }
 
   std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
                                  const ConsumeResult& consume, const std::function<bool()>& poll,
@@ -195,6 +196,7 @@ class MpiWorkers final : public RemoteWorkers {
   std::vector<Clock::time_point> heard_;  // On rank 0: when each rank's last message came.
   std::set<int> lost_;                    // On rank 0: worker ranks never given work again.
   std::vector<std::string> lost_reasons_;
+  int exit_code_ = EXIT_FAILURE;  // MPI_Abort's, when a rank was lost.
   Sends sends_;
   MessageTotals totals_;
 };
@@ -205,6 +207,8 @@ std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& 
                                            const Describe& describe) {
   Schedule schedule;
   auto& [out, idle, handed_back] = schedule;
+  // Silence counts from now: rank 0 may have been away (storing references) since the last run.
+  std::fill(heard_.begin(), heard_.end(), Clock::now());
   for (int t = 0; t < threads_; ++t) {
     for (int r = 1; r < size_; ++r) {
       if (!lost_.contains(r)) idle.push_back(r);
@@ -263,10 +267,8 @@ void MpiWorkers::TakeResult(const Message& m, Schedule& schedule, const ConsumeR
 }
 
 void MpiWorkers::LoseSilentRanks(Schedule& schedule, const Describe& describe) {
-  const Clock::time_point now = Clock::now();
   for (int r = 1; r < size_; ++r) {
-    const double silent_s =
-        std::chrono::duration<double>(now - heard_[static_cast<std::size_t>(r)]).count();
+    const double silent_s = SecondsSince(heard_[static_cast<std::size_t>(r)]);
     if (lost_.contains(r) || silent_s < rank_timeout_s_) continue;
     lost_.insert(r);
     std::erase(schedule.idle, r);
@@ -296,21 +298,37 @@ void MpiWorkers::LoseSilentRanks(Schedule& schedule, const Describe& describe) {
 }
 
 // Tells every worker rank not lost to quit and waits for each one's goodbye, discarding late
-// results and heartbeats.
+// results and heartbeats. A rank silent for the rank timeout meanwhile (stopped after its last
+// task) is lost, not waited for.
 void MpiWorkers::EndJob() {
+  std::set<int> waiting;
   for (int r = 1; r < size_; ++r) {
-    if (!lost_.contains(r)) sends_.Post(r, kQuit, "");
+    if (lost_.contains(r)) continue;
+    sends_.Post(r, kQuit, "");
+    waiting.insert(r);
   }
+  std::fill(heard_.begin(), heard_.end(), Clock::now());
   Backoff backoff;
-  const int live = size_ - 1 - static_cast<int>(lost_.size());
-  for (int byes = 0; byes < live || !sends_.EmptyBut(lost_);) {
+  while (!waiting.empty() || !sends_.EmptyBut(lost_)) {
     sends_.Progress();
     if (auto m = Receive(MPI_ANY_SOURCE, MPI_ANY_TAG)) {
-      byes += m->tag == kBye ? 1 : 0;
+      heard_[static_cast<std::size_t>(m->source)] = Clock::now();
+      if (m->tag == kBye) waiting.erase(m->source);
       backoff.Reset();
-    } else {
-      backoff.Wait();
+      continue;
     }
+    for (auto r = waiting.begin(); r != waiting.end();) {
+      if (SecondsSince(heard_[static_cast<std::size_t>(*r)]) < rank_timeout_s_) {
+        ++r;
+        continue;
+      }
+      std::fprintf(stderr,
+                   "shockmap: rank %d (host %s) did not answer the end of the job for %.1f s\n", *r,
+                   hosts_[static_cast<std::size_t>(*r)].c_str(), rank_timeout_s_);
+      lost_.insert(*r);
+      r = waiting.erase(r);
+    }
+    backoff.Wait();
   }
 }
 

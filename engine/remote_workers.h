@@ -68,6 +68,10 @@ class RemoteWorkers {
                                          const std::function<bool()>& poll,
                                          const Describe& describe) = 0;
 
+  // The exit code of a job that lost a rank, which ends in MPI_Abort (see JoinMpiJob): 1 unless
+  // set, on rank 0, before the object is destroyed (the code of the error that ends the run).
+  virtual void SetExitCode(int exit_code) = 0;
+
   // On ranks 1..N-1: runs every task rank 0 sends on ThreadsPerRank() threads and sends back
   // execute(task), until rank 0 ends the job. execute must not throw.
   virtual void Serve(const Execute& execute) = 0;
@@ -84,9 +88,10 @@ inline constexpr double kWorkerHeartbeatPeriodS = 0.5;
 // `rank_timeout_s` the silence after which rank 0 counts a worker rank as lost.
 // Ends the job on every rank when the returned object is destroyed (rank 0 first tells the
 // workers). A job that lost a rank cannot end normally (MPI_Finalize would wait for it): once
-// the live workers have quit, rank 0 ends it with MPI_Abort, exit code 1, stdout and stderr
-// flushed; by then the caller has closed the database. Throws InputError when launched on
-// several ranks by a build without MPI.
+// the live workers have quit (a worker rank silent for the rank timeout while rank 0 waits for
+// its goodbye is lost too), rank 0 ends it with MPI_Abort, exit code 1 or the one set by
+// SetExitCode, stdout and stderr flushed; by then the caller has closed the database. Throws
+// InputError when launched on several ranks by a build without MPI.
 std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads, double rank_timeout_s);
 
 }  // namespace shockmap
