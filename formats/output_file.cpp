@@ -144,11 +144,11 @@ AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)), str
   int error = 0;
   do {
     temp_ = UnusedTemporaryName(dir);
-    temp_on_signal_.emplace(temp_);
     fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     error = errno;
-    if (fd < 0) temp_on_signal_.reset();  // Not ours to remove.
   } while (fd < 0 && error == EEXIST);
+  // Registered once ours: a signal before this leaves the temporary, never removes another's.
+  if (fd >= 0) temp_on_signal_.emplace(temp_);
   if (fd < 0) throw InputError("cannot write " + path_.string() + ": " + Reason(error));
   buffer_ = std::make_unique<Buffer>(fd);
   stream_.rdbuf(buffer_.get());
