@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <pthread.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -10,6 +12,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "core/input_error.h"
@@ -45,6 +48,26 @@ std::string ReadTail(int fd, std::size_t keep) {
   return text;
 }
 
+// posix_spawnp with the cleanup signals (SIGINT, SIGTERM, SIGHUP) held until the child is
+// registered as KilledOnSignal in `child`: a signal in between would leave it drawing. The child
+// starts with this thread's own signal mask.
+int SpawnKilledOnSignal(pid_t& pid, const posix_spawn_file_actions_t& actions, char* argv[],
+                        std::optional<KilledOnSignal>& child) {
+  sigset_t held, previous;
+  sigemptyset(&held);
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&held, signal);
+  pthread_sigmask(SIG_BLOCK, &held, &previous);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setsigmask(&attributes, &previous);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK);
+  const int rc = posix_spawnp(&pid, "gnuplot", &actions, &attributes, argv, environ);
+  posix_spawnattr_destroy(&attributes);
+  if (rc == 0) child.emplace(pid);
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+  return rc;
+}
+
 // Runs `gnuplot -e "shockmap_output = './DRAWING'" ./NAME` in the script's folder with stdin
 // from /dev/null and its output piped back; a signal that ends this process kills it. Throws
 // PlotError when gnuplot cannot be started.
@@ -68,7 +91,8 @@ ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
   posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 1);
   posix_spawn_file_actions_adddup2(&actions, pipe_fds[1], 2);
   pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  std::optional<KilledOnSignal> child;
+  const int rc = SpawnKilledOnSignal(pid, actions, argv, child);
   posix_spawn_file_actions_destroy(&actions);
   ::close(pipe_fds[1]);
   if (rc != 0) {
@@ -78,12 +102,12 @@ ChildOutcome SpawnGnuplot(const std::filesystem::path& script_file,
                                  : "cannot start gnuplot for " + script_file.string() + ": " +
                                        std::strerror(rc));
   }
-  const KilledOnSignal child(pid);
   ChildOutcome outcome;
   outcome.output = ReadTail(pipe_fds[0], 4 * kExcerptBytes);
   ::close(pipe_fds[0]);
   while (::waitpid(pid, &outcome.status, 0) < 0 && errno == EINTR) {
   }
+  child.reset();  // Reaped: its pid may be another process's from now on.
   return outcome;
 }
 
