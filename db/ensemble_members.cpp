@@ -165,6 +165,15 @@ std::size_t ZoneCount(const std::string& database_path, const EnsembleReferenceR
   return zones;
 }
 
+// A member's setting_json is a JSON object, {"path": value}.
+void CheckSetting(const std::string& database_path, const StoredMember& m) {
+  const StoredCell setting{database_path, "ensemble member " + std::to_string(m.point_id),
+                           "setting_json"};
+  if (!ParseStoredJson(setting, m.setting_json).is_object()) {
+    ThrowCorruptCell(setting, "not a JSON object");
+  }
+}
+
 // What the views read of a stored ensemble is whole: its spec and settings are JSON objects,
 // every nominal run names the same zones, and every member has a row for each.
 void CheckEnsemble(const std::string& database_path, const std::string& study,
@@ -181,12 +190,10 @@ void CheckEnsemble(const std::string& database_path, const std::string& study,
     }
     zones = count;
   }
+  for (const StoredMember& m : e.not_ok) CheckSetting(database_path, m);
   for (const StoredMember& m : e.members) {
+    CheckSetting(database_path, m);
     const std::string row = "ensemble member " + std::to_string(m.point_id);
-    const StoredCell setting{database_path, row, "setting_json"};
-    if (!ParseStoredJson(setting, m.setting_json).is_object()) {
-      ThrowCorruptCell(setting, "not a JSON object");
-    }
     if (zones && m.zones.size() != *zones) {
       ThrowCorrupt(database_path, row,
                    fmt::format("{} zone rows, its nominal run {} zones", m.zones.size(), *zones));
@@ -206,7 +213,7 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   find.Bind(1, study);
   if (!find.Step()) throw DbError(c.Path() + ": no study named \"" + study + "\"");
   std::int64_t study_id = 0, members = 0;
-  StoredEnsemble e;
+  StoredEnsemble e{.database_path = c.Path(), .study = study};
   find.ReadColumns(study_id, e.spec_json, members, e.pending, e.failed);
   if (members == 0) {
     throw DbError(c.Path() + ": study \"" + study + "\" is not an ensemble study");

@@ -79,6 +79,7 @@ struct StoredMember {
   std::vector<EnsembleZoneRow> zones;
 };
 struct StoredEnsemble {
+  std::string database_path, study;  // Where it was read, to name it in a refusal.
   std::string spec_json;
   std::vector<EnsembleReferenceRow> references;  // One per state whose nominal was stored.
   std::vector<StoredMember> members;             // By point_id.

@@ -18,7 +18,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr int kMaxMembers = 100'000;
 // A normal or lognormal law without a bound is clipped this many standard deviations out.
 constexpr double kDefaultClipSigmas = 5.0;
 constexpr const char* kPinGapPath = "bundle.wire.gap_m";
@@ -36,9 +35,9 @@ std::uint64_t ParseSeed(JsonObjectReader& r) {
 int ParseMembers(JsonObjectReader& r) {
   if (!r.Has("members")) r.Fail("members", "required: the number of members, e.g. 200");
   const int members = r.Integer("members", 0);
-  if (members < 1 || members > kMaxMembers) {
+  if (members < 1 || members > kMaxEnsembleMembers) {
     r.Fail("members", "value " + std::to_string(members) + " must lie in [1, " +
-                          std::to_string(kMaxMembers) + "]");
+                          std::to_string(kMaxEnsembleMembers) + "]");
   }
   return members;
 }

@@ -246,6 +246,32 @@ TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizi
   EXPECT_FALSE(std::filesystem::exists(Path("report")));  // No refusal creates a file.
 }
 
+TEST_F(DatabaseCorruption, PendingSettingsAndTheSpecsMemberFieldsAreCheckedBeforeSizing) {
+  Ensemble();
+  const std::string spec = "UPDATE studies SET spec_json = json_set(spec_json, ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"UPDATE ensemble_members SET status = 'pending', setting_json = '[1' WHERE point_id = 2",
+       "database corrupt: ensemble member 2: setting_json: parse error"},
+      {spec + "'$.members', '3')",
+       "database corrupt: study ens: spec_json: members: \"3\" is not a whole number from 1 "
+       "to 100000"},
+      {spec + "'$.members', 1e300)", "spec_json: members: 1e+300 is not a whole number"},
+      {spec + "'$.members', 0)", "spec_json: members: 0 is not a whole number"},
+      {spec + "'$.clearance_states', json('[1]'))",
+       "database corrupt: study ens: spec_json: cannot use at() with number"},
+      {spec + "'$.clearance_states', json('{\"name\": \"new\"}'))",
+       "database corrupt: study ens: spec_json: type must be array, but is object"},
+      {spec + "'$.settings', json('[1]'))",
+       "database corrupt: study ens: spec_json: settings: not a JSON object"}};
+  const std::string pristine = ReadBytes(db());
+  for (const auto& [sql, message] : cases) {
+    WriteText(db(), pristine);
+    Edit(sql);
+    ExpectRefused("sizing", message);
+    ExpectRefused("report --out " + Path("report"), message);
+  }
+}
+
 TEST_F(DatabaseCorruption, StoredTextThatIsNotTextIsADatabaseErrorNotAnInternalOne) {
   Canonical();
   // The NOT NULL of studies.spec_json edited out of the schema, as a forger can.
