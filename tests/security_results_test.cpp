@@ -246,6 +246,12 @@ TEST_F(SecurityResults, FlagChecksAgreeAcrossCommands) {
   EXPECT_EQ(zsh.exit_code, 2);
   EXPECT_TRUE(Has(zsh, "completion: \"zsh\" is not a shell shockmap completes; the shells: bash"))
       << zsh.output;
+  // Only completion itself takes a word it does not know; its shells refuse extras.
+  for (const char* extra : {"junk", "--bogus"}) {
+    const Outcome bash = RunShockmap(std::string("completion bash ") + extra);
+    EXPECT_EQ(bash.exit_code, 2) << extra << ": " << bash.output;
+    EXPECT_TRUE(Has(bash, extra)) << bash.output;
+  }
 }
 
 }  // namespace
