@@ -171,6 +171,29 @@ TEST_F(Resources, EnsembleWindowOfTooManyStepsIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(std::filesystem::exists(db));
 }
 
+// A model that cannot be built at a checked scene (here a preload on a beam whose rotation about
+// its pin no contact holds, at the draws' centres) refuses the file for that reason, naming the
+// state and setting: its window is not to blame.
+TEST_F(Resources, EnsembleModelNotBuiltAtACheckedSceneIsNotBlamedOnTheWindow) {
+  const std::string scene = Path("pinned.json"), spec = Path("pinned_ensemble.json");
+  WriteText(scene, R"({"name": "pinned", "beams": [{"name": "beam", "length_m": 1.0,
+      "ei_n_m2": 1.5e5, "rho_a_kg_per_m": 127.0, "elements": 3, "ends": ["pinned", "free"]}],
+    "zones": [{"name": "tip", "beam": "beam", "against": "stop", "height_m": 1.0,
+      "normal": [-1, 0], "gap_m": -1e-5, "stiffness_n_per_m": 1.35e9}],
+    "solver": {"r_ftrunc": 300, "dt": {"rule": "sharp", "factor": 0.1}, "end_time_s": 0.06},
+    "outputs": {"max_contact_force": true}})");
+  WriteText(spec, R"({"kind": "scene_ensemble", "name": "pinned", "scene": ")" + scene +
+                      R"(", "members": 2, "seed": 1, "window_s": 0.001,
+      "draws": {"zones.0.stiffness_n_per_m": {"lognormal": {"sigma": 0.1}}}})");
+  const Outcome out = RunBounded("study run " + spec + " --db " + Path("p.db") + " --quiet");
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find(spec + ": state \"scene\", setting {}: zones with a negative gap "
+                                   "(preloaded contacts): the model has a rigid-body mode"),
+            std::string::npos)
+      << out.output;
+  EXPECT_EQ(out.output.find("window_s"), std::string::npos) << out.output;
+}
+
 // The planar bundle over 5 ms, one state: a member takes a few hundredths of a second.
 std::string TinyEnsemble(int members) {
   return std::string(R"({"kind": "scene_ensemble", "name": "tiny", "scene": ")") +
