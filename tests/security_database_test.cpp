@@ -215,6 +215,19 @@ TEST_F(DatabaseCorruption, CorruptStoredShocksAreADatabaseErrorNotAnInternalOne)
                 "with number");
 }
 
+TEST_F(DatabaseCorruption, StoredReboundsOutOfRangeAreADatabaseError) {
+  Canonical();
+  const std::string pristine = ReadBytes(db());
+  for (const std::string& rebounds : {"2147483647", "1e300", "-1", "2.5"}) {
+    WriteText(db(), pristine);
+    Edit("UPDATE reference_runs SET shocks_json = json_set(shocks_json, '$[0].rebounds', " +
+         rebounds + ") WHERE reference_id = 1");
+    ExpectRefused("export point --id 1 --out " + Path("point"),
+                  "database corrupt: reference 1: shocks_json: rebounds holds ");
+    ExpectRefused("export point --id 1 --out " + Path("point"), " (a count from 0 to 2147483646)");
+  }
+}
+
 TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizing) {
   Ensemble();
   const std::vector<std::pair<std::string, std::string>> cases = {
