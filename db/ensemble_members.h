@@ -77,6 +77,7 @@ struct StoredMember {
   int member = 0;
   double wall_s = 0.0, cpu_s = 0.0;
   std::vector<EnsembleZoneRow> zones;
+  std::vector<std::int64_t> zone_indices;  // The stored index of each of zones (0, 1, ...).
 };
 struct StoredEnsemble {
   std::string database_path, study;  // Where it was read, to name it in a refusal.

@@ -228,6 +228,25 @@ TEST_F(DatabaseCorruption, StoredReboundsOutOfRangeAreADatabaseError) {
   }
 }
 
+TEST_F(DatabaseCorruption, MembersWithoutTheirZoneRowsOrWithShiftedOnesAreRefused) {
+  Ensemble();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"DELETE FROM ensemble_member_zones WHERE point_id = 3",
+       "database corrupt: ensemble member 3: 0 zone rows, its nominal run 127 zones"},
+      {"UPDATE ensemble_member_zones SET zone = zone + 1000 WHERE point_id = 3; "
+       "UPDATE ensemble_member_zones SET zone = zone - 999 WHERE point_id = 3",
+       "database corrupt: ensemble member 3: zone rows 1, 2, 3, "},
+      {"UPDATE ensemble_member_zones SET zone = 500 WHERE point_id = 3 AND zone = 126",
+       ", 124, 125, 500; its nominal run has zones 0 to 126"}};
+  const std::string pristine = ReadBytes(db());
+  for (const auto& [sql, message] : cases) {
+    WriteText(db(), pristine);
+    Edit(sql);
+    ExpectRefused("sizing", message);
+    ExpectRefused("report --out " + Path("report"), message);
+  }
+}
+
 TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizing) {
   Ensemble();
   const std::vector<std::pair<std::string, std::string>> cases = {
