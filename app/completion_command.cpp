@@ -87,7 +87,13 @@ complete -o default -F _shockmap shockmap
 void AddCompletionCommand(CLI::App& app) {
   CLI::App* completion =
       app.add_subcommand("completion", "Print a shell completion script for shockmap");
-  // A shell not listed is named in the refusal, with the shells there are.
+  CLI::App* bash = completion->add_subcommand(
+      "bash",
+      "Bash completion of every command and option (source it, or save it as "
+      "~/.local/share/bash-completion/completions/shockmap)");
+  bash->callback([&app] { std::cout << BashCompletion(app); });
+  // A shell not listed is named in the refusal, with the shells there are. Set after the shells
+  // are added, which would inherit it: a shell refuses any word or flag after its name.
   completion->require_subcommand(0, 1)->allow_extras();
   completion->callback([completion] {
     if (!completion->get_subcommands().empty()) return;
@@ -98,11 +104,6 @@ void AddCompletionCommand(CLI::App& app) {
                         : "\"" + Excerpt(extras.front()) + "\" is not a shell shockmap completes") +
         "; the shells: bash");
   });
-  CLI::App* bash = completion->add_subcommand(
-      "bash",
-      "Bash completion of every command and option (source it, or save it as "
-      "~/.local/share/bash-completion/completions/shockmap)");
-  bash->callback([&app] { std::cout << BashCompletion(app); });
 }
 
 }  // namespace shockmap

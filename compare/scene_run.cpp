@@ -59,8 +59,7 @@ TransientOptions RunOptions(const Scene& scene, SceneModel& model) {
 
 }  // namespace
 
-void CheckSceneAffordable(const Scene& scene) {
-  SceneModel model = BuildSceneModel(scene);
+void CheckSceneAffordable(const Scene& scene, SceneModel model) {
   CheckAffordable(scene, RunOptions(scene, model), model.bounds);
 }
 

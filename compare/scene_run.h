@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "core/scene_model.h"
 #include "core/transient_run.h"
 #include "validation/shock_segmentation.h"
 
@@ -32,11 +33,12 @@ struct SceneRun {
   std::vector<ImpactStatistics> impact_statistics;
 };
 
-// Builds the scene's model and checks, without integrating, what RunScene checks before it
-// integrates: the step count its dt resolves to (at most TransientOptions::max_steps) and the
-// size of the histories it records. Throws InputError as RunScene does. Precondition: as
-// RunScene's.
-void CheckSceneAffordable(const Scene& scene);
+// Checks, without integrating, what RunScene checks before it integrates: the step count its dt
+// resolves to on the bounds of `model` (at most TransientOptions::max_steps) and the size of the
+// histories it records. Throws InputError as RunScene does. Preconditions: as RunScene's, and
+// `model` is BuildSceneModel(scene) (whose own InputError, a preload's static equilibrium not
+// found, the caller sees before this check).
+void CheckSceneAffordable(const Scene& scene, SceneModel model);
 
 // Preconditions: the scene was validated (LoadScene). Integrates with central differences at
 // scene.solver.dt resolved against the model's bounds.

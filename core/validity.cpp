@@ -1,26 +1,22 @@
 #include "core/validity.h"
 
+#include <array>
+#include <charconv>
 #include <cmath>
-#include <sstream>
+#include <string>
 
 namespace shockmap {
 namespace {
 
-bool Fail(const char* name, double value, const std::string& allowed, std::string* error) {
-  if (error != nullptr) {
-    std::ostringstream out;
-    out.precision(17);
-    out << name << " = " << value << ": must be " << allowed;
-    *error = out.str();
-  }
-  return false;
+// The shortest text that reads back as `v`: 0.9999, not 0.99990000000000001.
+std::string Str(double v) {
+  std::array<char, 32> text{};
+  return std::string(text.data(), std::to_chars(text.data(), text.data() + text.size(), v).ptr);
 }
 
-std::string Str(double v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << v;
-  return out.str();
+bool Fail(const char* name, double value, const std::string& allowed, std::string* error) {
+  if (error != nullptr) *error = std::string(name) + " = " + Str(value) + ": must be " + allowed;
+  return false;
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "db/ensemble_members.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "db/corrupt_rows.h"
 #include "db/stored_json.h"
@@ -73,9 +74,10 @@ std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t stu
 
 std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
   Statement s = c.Prepare(
-      std::string("SELECT p.point_id, p.state, p.setting_json, p.member, p.wall_s, p.cpu_s, ") +
+      std::string(
+          "SELECT p.point_id, p.state, p.setting_json, p.member, p.wall_s, p.cpu_s, z.zone, ") +
       kZoneColumns +
-      " FROM ensemble_members p JOIN ensemble_member_zones z ON z.point_id = p.point_id "
+      " FROM ensemble_members p LEFT JOIN ensemble_member_zones z ON z.point_id = p.point_id "
       "WHERE p.study_id = ? AND p.status = 'ok' ORDER BY p.point_id, z.zone");
   s.Bind(1, study_id);
   std::vector<StoredMember> members;
@@ -88,7 +90,9 @@ std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
       m.status = "ok";
       members.push_back(std::move(m));
     }
-    members.back().zones.push_back(ZoneAt(s, 6));
+    if (s.IsNull(6)) continue;  // A member without zone rows (CheckEnsemble refuses it).
+    members.back().zone_indices.push_back(s.GetInt(6));
+    members.back().zones.push_back(ZoneAt(s, 7));
   }
   return members;
 }
@@ -165,8 +169,26 @@ std::size_t ZoneCount(const std::string& database_path, const EnsembleReferenceR
   return zones;
 }
 
+// A member's setting_json is a JSON object, {"path": value}.
+void CheckSetting(const std::string& database_path, const StoredMember& m) {
+  const StoredCell setting{database_path, "ensemble member " + std::to_string(m.point_id),
+                           "setting_json"};
+  if (!ParseStoredJson(setting, m.setting_json).is_object()) {
+    ThrowCorruptCell(setting, "not a JSON object");
+  }
+}
+
+// Whether `indices` are 0, 1, ..., count - 1.
+bool AreZeroTo(const std::vector<std::int64_t>& indices, std::size_t count) {
+  if (indices.size() != count) return false;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (indices[i] != static_cast<std::int64_t>(i)) return false;
+  }
+  return true;
+}
+
 // What the views read of a stored ensemble is whole: its spec and settings are JSON objects,
-// every nominal run names the same zones, and every member has a row for each.
+// every nominal run names the same zones, and every member has one row for each, by its index.
 void CheckEnsemble(const std::string& database_path, const std::string& study,
                    const StoredEnsemble& e) {
   const StoredCell spec{database_path, "study " + study, "spec_json"};
@@ -181,15 +203,18 @@ void CheckEnsemble(const std::string& database_path, const std::string& study,
     }
     zones = count;
   }
+  for (const StoredMember& m : e.not_ok) CheckSetting(database_path, m);
   for (const StoredMember& m : e.members) {
+    CheckSetting(database_path, m);
     const std::string row = "ensemble member " + std::to_string(m.point_id);
-    const StoredCell setting{database_path, row, "setting_json"};
-    if (!ParseStoredJson(setting, m.setting_json).is_object()) {
-      ThrowCorruptCell(setting, "not a JSON object");
-    }
     if (zones && m.zones.size() != *zones) {
       ThrowCorrupt(database_path, row,
                    fmt::format("{} zone rows, its nominal run {} zones", m.zones.size(), *zones));
+    }
+    if (zones && !AreZeroTo(m.zone_indices, *zones)) {
+      ThrowCorrupt(database_path, row,
+                   fmt::format("zone rows {}; its nominal run has zones 0 to {}",
+                               fmt::join(m.zone_indices, ", "), *zones - 1));
     }
   }
 }
@@ -206,7 +231,7 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   find.Bind(1, study);
   if (!find.Step()) throw DbError(c.Path() + ": no study named \"" + study + "\"");
   std::int64_t study_id = 0, members = 0;
-  StoredEnsemble e;
+  StoredEnsemble e{.database_path = c.Path(), .study = study};
   find.ReadColumns(study_id, e.spec_json, members, e.pending, e.failed);
   if (members == 0) {
     throw DbError(c.Path() + ": study \"" + study + "\" is not an ensemble study");

@@ -77,8 +77,10 @@ struct StoredMember {
   int member = 0;
   double wall_s = 0.0, cpu_s = 0.0;
   std::vector<EnsembleZoneRow> zones;
+  std::vector<std::int64_t> zone_indices;  // The stored index of each of zones (0, 1, ...).
 };
 struct StoredEnsemble {
+  std::string database_path, study;  // Where it was read, to name it in a refusal.
   std::string spec_json;
   std::vector<EnsembleReferenceRow> references;  // One per state whose nominal was stored.
   std::vector<StoredMember> members;             // By point_id.

@@ -1,6 +1,9 @@
 #include "engine/reference_store.h"
 
+#include <cstdint>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "db/stored_json.h"
 #include "formats/comparison_json.h"
@@ -8,14 +11,26 @@
 namespace shockmap {
 namespace {
 
-Shock ShockFromJson(const nlohmann::json& j) {
+// The contacts of a shock, one more than its stored "rebounds": DbError unless that is a whole
+// number from 0 to one less than the largest int.
+int ContactsOf(const nlohmann::json& rebounds, const StoredCell& cell) {
+  constexpr std::int64_t kMaxRebounds = std::numeric_limits<int>::max() - 1;
+  if (!rebounds.is_number_integer() || rebounds.get<std::int64_t>() < 0 ||
+      rebounds.get<std::int64_t>() > kMaxRebounds) {
+    ThrowCorruptCell(cell, "rebounds holds " + rebounds.dump() + " (a count from 0 to " +
+                               std::to_string(kMaxRebounds) + ")");
+  }
+  return static_cast<int>(rebounds.get<std::int64_t>()) + 1;
+}
+
+Shock ShockFromJson(const nlohmann::json& j, const StoredCell& cell) {
   Shock s;
   s.start_s = j.at("start_s").get<double>();
   s.end_s = j.at("end_s").get<double>();
   s.peak_force_n = j.at("peak_force_n").get<double>();
   s.peak_time_s = j.at("peak_time_s").get<double>();
   s.impulse_n_s = j.at("impulse_n_s").get<double>();
-  s.n_contacts = j.at("rebounds").get<int>() + 1;
+  s.n_contacts = ContactsOf(j.at("rebounds"), cell);
   s.truncated = j.at("truncated").get<bool>();
   return s;
 }
@@ -48,15 +63,15 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
   ReferenceRun run;
   run.tip_m = {0.0, row.output_dt_s, row.tip_m};
   run.force_n = {0.0, row.output_dt_s, row.force_n};
-  run.shocks = ReadStoredJson(
-      {database_path, "reference " + std::to_string(row.reference_id), "shocks_json"},
-      row.shocks_json, [](const nlohmann::json& shocks) {
-        std::vector<Shock> read;
-        for (const auto& s : shocks.get<std::vector<nlohmann::json>>()) {
-          read.push_back(ShockFromJson(s));
-        }
-        return read;
-      });
+  const StoredCell cell{database_path, "reference " + std::to_string(row.reference_id),
+                        "shocks_json"};
+  run.shocks = ReadStoredJson(cell, row.shocks_json, [&cell](const nlohmann::json& shocks) {
+    std::vector<Shock> read;
+    for (const auto& s : shocks.get<std::vector<nlohmann::json>>()) {
+      read.push_back(ShockFromJson(s, cell));
+    }
+    return read;
+  });
   run.summary.n_modes_free = row.n_modes_free;
   run.summary.n_modes_contact = row.n_modes_contact;
   run.summary.n_transitions = row.n_transitions;

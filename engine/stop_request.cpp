@@ -3,6 +3,8 @@
 #include <csignal>
 #include <string>
 
+#include "formats/signal_cleanup.h"
+
 namespace shockmap {
 namespace {
 
@@ -16,7 +18,7 @@ extern "C" void OnStopSignal(int signal) {
 }  // namespace
 
 void InstallStopHandlers() {
-  for (int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, OnStopSignal);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) HandleUnlessIgnored(s, OnStopSignal);
 }
 
 int StopSignal() { return g_stop_signal; }

@@ -5,7 +5,8 @@
 
 namespace shockmap {
 
-// Installs the handlers (idempotent). The CLI calls it before a study run.
+// Installs the handlers (idempotent), each unless its signal is ignored: a run started under
+// nohup goes on through SIGHUP. The CLI calls it before a study run.
 void InstallStopHandlers();
 
 // The signal that asked to stop, or 0.

@@ -8,6 +8,7 @@
 
 #include "compare/scene_run.h"
 #include "core/input_error.h"
+#include "core/scene_model.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/parameter_path.h"
@@ -18,7 +19,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-constexpr int kMaxMembers = 100'000;
 // A normal or lognormal law without a bound is clipped this many standard deviations out.
 constexpr double kDefaultClipSigmas = 5.0;
 constexpr const char* kPinGapPath = "bundle.wire.gap_m";
@@ -36,9 +36,9 @@ std::uint64_t ParseSeed(JsonObjectReader& r) {
 int ParseMembers(JsonObjectReader& r) {
   if (!r.Has("members")) r.Fail("members", "required: the number of members, e.g. 200");
   const int members = r.Integer("members", 0);
-  if (members < 1 || members > kMaxMembers) {
+  if (members < 1 || members > kMaxEnsembleMembers) {
     r.Fail("members", "value " + std::to_string(members) + " must lie in [1, " +
-                          std::to_string(kMaxMembers) + "]");
+                          std::to_string(kMaxEnsembleMembers) + "]");
   }
   return members;
 }
@@ -295,25 +295,36 @@ std::vector<double> Centres(const EnsembleStudySpec& spec) {
   return centres;
 }
 
-// Throws InputError naming the file, window_s and its value, and `where` (the state and setting)
-// unless `scene` runs in at most TransientOptions::max_steps steps (compare/scene_run.h).
-void CheckAffordableWindow(const EnsembleStudySpec& spec, const Scene& scene,
-                           const std::string& where) {
+// Where a checked scene is, for messages: state "<name>", setting <setting>.
+std::string Where(const EnsembleStudySpec& spec, int state, int setting) {
+  return "state \"" + spec.states[state].name + "\", setting " + spec.settings[setting].dump();
+}
+
+// Throws InputError "<file>: <where>: <reason>" when the model of `scene` cannot be built (a
+// preload's static equilibrium not found), and "<file>: window_s: <value> s in <where>: <reason>"
+// unless its run takes at most TransientOptions::max_steps steps and records histories of an
+// affordable size (compare/scene_run.h).
+void CheckModelAndWindow(const EnsembleStudySpec& spec, const Scene& scene,
+                         const std::string& where) {
+  SceneModel model;
   try {
-    CheckSceneAffordable(scene);
+    model = BuildSceneModel(scene);
   } catch (const InputError& e) {
-    throw InputError(spec.file + ": window_s: " + Shown(Json(spec.window_s)) + " s" + where + ": " +
-                     e.what());
+    throw InputError(spec.file + ": " + where + ": " + e.what());
+  }
+  try {
+    CheckSceneAffordable(scene, std::move(model));
+  } catch (const InputError& e) {
+    throw InputError(spec.file + ": window_s: " + Shown(Json(spec.window_s)) + " s in " + where +
+                     ": " + e.what());
   }
 }
 
-std::string Where(const EnsembleStudySpec& spec, int state, int setting) {
-  return " in state \"" + spec.states[state].name + "\", setting " + spec.settings[setting].dump();
-}
-
 // Every state and setting at the draws' centres and with each draw at both its bounds: each
-// scene valid and affordable (a member's dt follows its setting and its draws through the
-// stability bound).
+// scene valid, its model built (a preload's static equilibrium found) and affordable (a
+// member's dt follows its setting and its draws through the stability bound). An invalid scene
+// or a model not built is refused naming the state and setting, an unaffordable one naming
+// window_s.
 void CheckScenes(const EnsembleStudySpec& spec) {
   const std::vector<double> centres = Centres(spec);
   auto check = [&](int state, int setting, const std::vector<double>& values,
@@ -322,10 +333,9 @@ void CheckScenes(const EnsembleStudySpec& spec) {
     try {
       scene = SceneOf(spec, VariantJson(spec, state, setting, values, 0));
     } catch (const InputError& e) {
-      throw InputError(spec.file + ": state \"" + spec.states[state].name + "\", setting " +
-                       spec.settings[setting].dump() + what + ": " + e.what());
+      throw InputError(spec.file + ": " + Where(spec, state, setting) + what + ": " + e.what());
     }
-    CheckAffordableWindow(spec, scene, Where(spec, state, setting) + what);
+    CheckModelAndWindow(spec, scene, Where(spec, state, setting) + what);
   };
   for (int state = 0; state < static_cast<int>(spec.states.size()); ++state) {
     for (int setting = 0; setting < static_cast<int>(spec.settings.size()); ++setting) {
@@ -404,8 +414,8 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   r.Finish();
   CheckScenes(spec);
   for (int state = 0; state < static_cast<int>(spec.states.size()); ++state) {
-    CheckAffordableWindow(spec, NominalScene(spec, state),
-                          Where(spec, state, spec.refined) + " (its nominal run)");
+    CheckModelAndWindow(spec, NominalScene(spec, state),
+                        Where(spec, state, spec.refined) + " (its nominal run)");
   }
   spec.points = MemberMajor(spec);
   Json stored = json;

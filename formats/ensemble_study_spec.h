@@ -38,6 +38,9 @@ struct EnsembleMember {
   int member = 0;
 };
 
+// The most members a study file may ask for ("members").
+inline constexpr int kMaxEnsembleMembers = 100'000;
+
 struct EnsembleStudySpec {
   std::string file, name, description;
   std::string scene_file;  // Resolved against the study file's folder.

@@ -67,8 +67,14 @@ int ClaimChildSlot(pid_t pid) {
 
 }  // namespace
 
+void HandleUnlessIgnored(int signal, void (*handler)(int)) {
+  struct sigaction current = {};
+  if (::sigaction(signal, nullptr, &current) == 0 && current.sa_handler == SIG_IGN) return;
+  std::signal(signal, handler);
+}
+
 void InstallSignalCleanup() {
-  for (int s : {SIGINT, SIGTERM, SIGHUP}) std::signal(s, CleanUpAndDie);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) HandleUnlessIgnored(s, CleanUpAndDie);
 }
 
 RemovedOnSignal::RemovedOnSignal(const std::filesystem::path& path) : slot_(ClaimFileSlot(path)) {}

@@ -10,8 +10,13 @@
 
 namespace shockmap {
 
-// Installs the handlers of SIGINT, SIGTERM and SIGHUP. The CLI calls it before any command; a
-// study run replaces them with its own (engine/stop_request.h), which let the run stop cleanly.
+// Installs `handler` for `signal` unless the signal is ignored: one the process inherited
+// ignored (SIGHUP under nohup) stays ignored, as its parent asked.
+void HandleUnlessIgnored(int signal, void (*handler)(int));
+
+// Installs the handlers of SIGINT, SIGTERM and SIGHUP, each unless it is ignored. The CLI calls
+// it before any command; a study run replaces them with its own (engine/stop_request.h), which
+// let the run stop cleanly.
 void InstallSignalCleanup();
 
 // While alive, `path` is removed when a signal ends the process; destroyed, it forgets the path

@@ -94,7 +94,7 @@ void ReadScene(const std::string& db, const std::string& study, const nlohmann::
 void ReadEnsembleStudy(const std::string& db, const std::string& study) {
   Connection c(db, Connection::Mode::kReadOnly);
   CheckSchema(c);
-  const StoredEnsemble stored = ReadEnsemble(c, study);
+  const StoredEnsemble stored = CurrentMembers(ReadEnsemble(c, study));
   SizingOptions options;
   options.bootstrap_resamples = 100;
   const EnsembleSizing sizing = SizeEnsemble(stored, study, options);

@@ -215,6 +215,38 @@ TEST_F(DatabaseCorruption, CorruptStoredShocksAreADatabaseErrorNotAnInternalOne)
                 "with number");
 }
 
+TEST_F(DatabaseCorruption, StoredReboundsOutOfRangeAreADatabaseError) {
+  Canonical();
+  const std::string pristine = ReadBytes(db());
+  for (const std::string& rebounds : {"2147483647", "1e300", "-1", "2.5"}) {
+    WriteText(db(), pristine);
+    Edit("UPDATE reference_runs SET shocks_json = json_set(shocks_json, '$[0].rebounds', " +
+         rebounds + ") WHERE reference_id = 1");
+    ExpectRefused("export point --id 1 --out " + Path("point"),
+                  "database corrupt: reference 1: shocks_json: rebounds holds ");
+    ExpectRefused("export point --id 1 --out " + Path("point"), " (a count from 0 to 2147483646)");
+  }
+}
+
+TEST_F(DatabaseCorruption, MembersWithoutTheirZoneRowsOrWithShiftedOnesAreRefused) {
+  Ensemble();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"DELETE FROM ensemble_member_zones WHERE point_id = 3",
+       "database corrupt: ensemble member 3: 0 zone rows, its nominal run 127 zones"},
+      {"UPDATE ensemble_member_zones SET zone = zone + 1000 WHERE point_id = 3; "
+       "UPDATE ensemble_member_zones SET zone = zone - 999 WHERE point_id = 3",
+       "database corrupt: ensemble member 3: zone rows 1, 2, 3, "},
+      {"UPDATE ensemble_member_zones SET zone = 500 WHERE point_id = 3 AND zone = 126",
+       ", 124, 125, 500; its nominal run has zones 0 to 126"}};
+  const std::string pristine = ReadBytes(db());
+  for (const auto& [sql, message] : cases) {
+    WriteText(db(), pristine);
+    Edit(sql);
+    ExpectRefused("sizing", message);
+    ExpectRefused("report --out " + Path("report"), message);
+  }
+}
+
 TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizing) {
   Ensemble();
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -244,6 +276,32 @@ TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizi
   ExpectRefused("report --out " + Path("report"),
                 "database corrupt: study ens: spec_json: key 'scene_json' not found");
   EXPECT_FALSE(std::filesystem::exists(Path("report")));  // No refusal creates a file.
+}
+
+TEST_F(DatabaseCorruption, PendingSettingsAndTheSpecsMemberFieldsAreCheckedBeforeSizing) {
+  Ensemble();
+  const std::string spec = "UPDATE studies SET spec_json = json_set(spec_json, ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"UPDATE ensemble_members SET status = 'pending', setting_json = '[1' WHERE point_id = 2",
+       "database corrupt: ensemble member 2: setting_json: parse error"},
+      {spec + "'$.members', '3')",
+       "database corrupt: study ens: spec_json: members: \"3\" is not a whole number from 1 "
+       "to 100000"},
+      {spec + "'$.members', 1e300)", "spec_json: members: 1e+300 is not a whole number"},
+      {spec + "'$.members', 0)", "spec_json: members: 0 is not a whole number"},
+      {spec + "'$.clearance_states', json('[1]'))",
+       "database corrupt: study ens: spec_json: cannot use at() with number"},
+      {spec + "'$.clearance_states', json('{\"name\": \"new\"}'))",
+       "database corrupt: study ens: spec_json: type must be array, but is object"},
+      {spec + "'$.settings', json('[1]'))",
+       "database corrupt: study ens: spec_json: settings: not a JSON object"}};
+  const std::string pristine = ReadBytes(db());
+  for (const auto& [sql, message] : cases) {
+    WriteText(db(), pristine);
+    Edit(sql);
+    ExpectRefused("sizing", message);
+    ExpectRefused("report --out " + Path("report"), message);
+  }
 }
 
 TEST_F(DatabaseCorruption, StoredTextThatIsNotTextIsADatabaseErrorNotAnInternalOne) {

@@ -188,6 +188,29 @@ TEST_F(Resources, EnsembleWindowOfTooManyStepsIsRefusedBeforeAnythingRuns) {
   EXPECT_FALSE(std::filesystem::exists(db));
 }
 
+// A model that cannot be built at a checked scene (here a preload on a beam whose rotation about
+// its pin no contact holds, at the draws' centres) refuses the file for that reason, naming the
+// state and setting: its window is not to blame.
+TEST_F(Resources, EnsembleModelNotBuiltAtACheckedSceneIsNotBlamedOnTheWindow) {
+  const std::string scene = Path("pinned.json"), spec = Path("pinned_ensemble.json");
+  WriteText(scene, R"({"name": "pinned", "beams": [{"name": "beam", "length_m": 1.0,
+      "ei_n_m2": 1.5e5, "rho_a_kg_per_m": 127.0, "elements": 3, "ends": ["pinned", "free"]}],
+    "zones": [{"name": "tip", "beam": "beam", "against": "stop", "height_m": 1.0,
+      "normal": [-1, 0], "gap_m": -1e-5, "stiffness_n_per_m": 1.35e9}],
+    "solver": {"r_ftrunc": 300, "dt": {"rule": "sharp", "factor": 0.1}, "end_time_s": 0.06},
+    "outputs": {"max_contact_force": true}})");
+  WriteText(spec, R"({"kind": "scene_ensemble", "name": "pinned", "scene": ")" + scene +
+                      R"(", "members": 2, "seed": 1, "window_s": 0.001,
+      "draws": {"zones.0.stiffness_n_per_m": {"lognormal": {"sigma": 0.1}}}})");
+  const Outcome out = RunBounded("study run " + spec + " --db " + Path("p.db") + " --quiet");
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find(spec + ": state \"scene\", setting {}: zones with a negative gap "
+                                   "(preloaded contacts): the model has a rigid-body mode"),
+            std::string::npos)
+      << out.output;
+  EXPECT_EQ(out.output.find("window_s"), std::string::npos) << out.output;
+}
+
 // The planar bundle over 5 ms, one state: a member takes a few hundredths of a second.
 std::string TinyEnsemble(int members) {
   return std::string(R"({"kind": "scene_ensemble", "name": "tiny", "scene": ")") +
@@ -270,6 +293,61 @@ TEST_F(Resources, SignalWhileDrawingKeepsTheGoodImageAndNoTemporary) {
   EXPECT_TRUE(gnuplot_ended) << "gnuplot " << gnuplot << " outlived shockmap";
   EXPECT_TRUE(ReadBytes(image.string()) == good) << "the good map was not kept";
   EXPECT_EQ(Temporaries(out_dir), std::vector<std::string>{});
+}
+
+// A stand-in for gnuplot that touches STARTED, waits until RELEASE exists, then draws with the
+// real gnuplot, REAL_GNUPLOT.
+constexpr const char* kHeldGnuplot = R"(#!/bin/sh
+touch "$STARTED"
+while [ ! -e "$RELEASE" ]; do sleep 0.05; done
+exec "$REAL_GNUPLOT" "$@"
+)";
+
+// Under nohup (SIGHUP ignored, as the parent asked) a SIGHUP while drawing changes nothing: the
+// command finishes and writes its pictures.
+TEST_F(Resources, IgnoredHangupWhileDrawingIsStillIgnored) {
+  const std::string db = SmallDatabase();
+  Outcome real = RunShell("command -v gnuplot");
+  ASSERT_EQ(real.exit_code, 0) << real.output;
+  real.output.erase(real.output.find_last_not_of('\n') + 1);
+  const std::filesystem::path bin = dir_ / "bin";
+  std::filesystem::create_directories(bin);
+  WriteText((bin / "gnuplot").string(), kHeldGnuplot);
+  std::filesystem::permissions(bin / "gnuplot", std::filesystem::perms::owner_all);
+  const std::filesystem::path image = dir_ / "map.png", report = dir_ / "report";
+  for (const std::string& args : {"map small --db " + db + " --out " + image.string(),
+                                  "report small --db " + db + " --out " + report.string()}) {
+    const std::string started = Path("started"), release = Path("release");
+    std::filesystem::remove(started);
+    std::filesystem::remove(release);
+    const pid_t pid = fork();
+    if (pid == 0) {
+      setenv("PATH", (bin.string() + ":" + std::getenv("PATH")).c_str(), 1);
+      setenv("STARTED", started.c_str(), 1);
+      setenv("RELEASE", release.c_str(), 1);
+      setenv("REAL_GNUPLOT", real.output.c_str(), 1);
+      freopen(Path("log").c_str(), "w", stdout);
+      dup2(fileno(stdout), fileno(stderr));
+      const std::string command = "trap '' HUP; exec " + std::string(SHOCKMAP_BIN) + " " + args;
+      execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!std::filesystem::exists(started) && std::chrono::steady_clock::now() < deadline) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    EXPECT_TRUE(std::filesystem::exists(started)) << args << "\n" << ReadBytes(Path("log"));
+    EXPECT_EQ(::kill(pid, SIGHUP), 0);
+    WriteText(release, "");
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        << args << ": status " << status << "\n"
+        << ReadBytes(Path("log"));
+  }
+  EXPECT_TRUE(ReadBytes(image.string()).starts_with("\x89PNG")) << "no map was written";
+  EXPECT_EQ(Temporaries(dir_), std::vector<std::string>{});
+  EXPECT_TRUE(std::filesystem::exists(report / "index.html"));
 }
 
 TEST_F(Resources, TwoReportsIntoOneFolderBothSucceed) {

@@ -205,6 +205,30 @@ TEST_F(SecurityResults, CriteriaFileValuesAreChecked) {
   }
 }
 
+// The thresholds and confidence of a criteria file lie where every use of them assumes
+// (CriteriaOptions::IsValid): a confidence of 1 is an infinite interval, err_max 0 passes nothing.
+TEST_F(SecurityResults, CriteriaFileOptionsAreCheckedAsDerivingThemIs) {
+  const json baseline = json::parse(
+      testing::ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json"));
+  const std::string scene = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json";
+  struct Case {
+    std::function<void(json&)> edit;
+    std::string words;
+  };
+  for (const auto& [edit, words] :
+       std::vector<Case>{{[](json& c) { c["fit"]["confidence"] = 1; },
+                          ": fit.confidence: confidence = 1: must be in [0.5, 0.9999]"},
+                         {[](json& c) { c["thresholds"]["err_max"] = 0; },
+                          ": thresholds.err_max: err_max = 0: must be in [1e-09, 1]"}}) {
+    json criteria = baseline;
+    edit(criteria);
+    const std::string file = Write(criteria, "criteria.json");
+    const Outcome o = RunShockmap("advise " + scene + " --criteria " + file);
+    EXPECT_EQ(o.exit_code, 2) << words << ": " << o.output;
+    EXPECT_TRUE(Has(o, file + words)) << o.output;
+  }
+}
+
 // A gap law's bound above its mean, and a preload deeper than the pin pitch.
 TEST_F(SecurityResults, GapLawsAndPreloadsAreCheckedAgainstTheGeometry) {
   json above = SmallEnsemble(3);
@@ -246,6 +270,12 @@ TEST_F(SecurityResults, FlagChecksAgreeAcrossCommands) {
   EXPECT_EQ(zsh.exit_code, 2);
   EXPECT_TRUE(Has(zsh, "completion: \"zsh\" is not a shell shockmap completes; the shells: bash"))
       << zsh.output;
+  // Only completion itself takes a word it does not know; its shells refuse extras.
+  for (const char* extra : {"junk", "--bogus"}) {
+    const Outcome bash = RunShockmap(std::string("completion bash ") + extra);
+    EXPECT_EQ(bash.exit_code, 2) << extra << ": " << bash.output;
+    EXPECT_TRUE(Has(bash, extra)) << bash.output;
+  }
 }
 
 }  // namespace

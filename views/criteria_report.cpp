@@ -32,13 +32,11 @@ struct Allowed {
 constexpr Allowed kPassingDtRatio{0.0, 1.0, true,
                                   "above 1 the explicit scheme is past its stability bound"};
 constexpr Allowed kDtRatio{0.0, 1e3};
-constexpr Allowed kConfidence{0.0, 1.0};
 // As a study's axes allow (formats/study_spec.cpp).
 constexpr Allowed kRk{0.0, kMaxRk};
 constexpr Allowed kRftrunc{1.0, 1e5, false};
 constexpr Allowed kExponent{-10.0, 10.0, false};
 constexpr Allowed kCoefficient{0.0, 1e12};
-constexpr Allowed kThreshold{0.0, 1.0, false};
 constexpr Allowed kSpread{0.0, 1e3, false};  // A standard error or residual.
 constexpr Allowed kFactor{1.0, 1e3, false};  // A ratio either way.
 
@@ -48,6 +46,16 @@ double Checked(JsonObjectReader& r, const std::string& key, double v, const Allo
                             a.lo_open ? "(" : "[", a.lo, a.hi, *a.why ? ": " : "", a.why));
   }
   return v;
+}
+
+// Refuses, naming the file and the key, options outside CriteriaOptions::IsValid's ranges, which
+// every use of them (DeriveCriteria, Passes, the views) assumes. `options` were read from
+// "thresholds" (err_max, srf_min) and "fit" (confidence).
+void CheckOptions(const CriteriaOptions& options, const std::string& file) {
+  std::string error;  // "<name> = <value>: must be in [<lo>, <hi>]"
+  if (options.IsValid(&error)) return;
+  const std::string name = error.substr(0, error.find(' '));
+  FailAt(file, (name == "confidence" ? "fit." : "thresholds.") + name, error);
 }
 
 double RequiredIn(JsonObjectReader& r, const std::string& key, const Allowed& a) {
@@ -126,8 +134,8 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     const Json* th = r.Get("thresholds");
     if (th == nullptr) r.Fail("thresholds", "required object is missing");
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));
-    c.options.err_max = RequiredIn(t, "err_max", kThreshold);
-    c.options.srf_min = RequiredIn(t, "srf_min", kThreshold);
+    c.options.err_max = t.RequiredNumber("err_max");
+    c.options.srf_min = t.RequiredNumber("srf_min");
     t.Finish();
   }
   c.r_ftrunc_smallest_studied = RequiredIn(r, "r_ftrunc_smallest_studied", kRftrunc);
@@ -158,7 +166,7 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     p.p_stderr = NumberIn(f, "p_stderr", 0.0, kSpread);
     p.p_low = NumberIn(f, "p_low", p.p, kExponent);
     p.p_high = NumberIn(f, "p_high", p.p, kExponent);
-    c.options.confidence = NumberIn(f, "confidence", c.options.confidence, kConfidence);
+    c.options.confidence = f.Number("confidence", c.options.confidence);
     p.c = RequiredIn(f, "c", kCoefficient);
     p.log10_c_stderr = NumberIn(f, "log10_c_stderr", 0.0, kSpread);
     p.c_envelope = RequiredIn(f, "c_envelope", kCoefficient);
@@ -180,6 +188,7 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     tr.Finish();
   }
   r.Finish();
+  CheckOptions(c.options, file);
   return c;
 }
 

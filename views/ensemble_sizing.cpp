@@ -7,6 +7,8 @@
 #include <random>
 
 #include "core/input_error.h"
+#include "db/stored_json.h"
+#include "formats/ensemble_study_spec.h"
 
 namespace shockmap {
 namespace {
@@ -44,6 +46,38 @@ bool IsSettingOf(const Json& setting, const Json& axes) {
       return false;
   }
   return true;
+}
+
+// What the stored spec, as last run, says of its members: how many, in which clearance states
+// (absent: the one state "scene"), at the settings of which axes ({"path": [values]}).
+struct CurrentSpec {
+  std::int64_t members = 0;
+  std::vector<std::string> states;
+  Json axes;
+};
+
+// DbError "<file>: database corrupt: study <name>: spec_json: <reason>" unless "members" is a
+// whole number in [1, kMaxEnsembleMembers], "clearance_states" a list of objects with a text
+// "name" and "settings" an object.
+CurrentSpec ReadCurrentSpec(const StoredEnsemble& stored) {
+  const StoredCell cell{stored.database_path, "study " + stored.study, "spec_json"};
+  return ReadStoredJson(cell, stored.spec_json, [&](const Json& spec) {
+    CurrentSpec current;
+    const Json& members = spec.at("members");
+    if (!members.is_number_integer() || members.get<std::int64_t>() < 1 ||
+        members.get<std::int64_t>() > kMaxEnsembleMembers) {
+      ThrowCorruptCell(cell, "members: " + members.dump() + " is not a whole number from 1 to " +
+                                 std::to_string(kMaxEnsembleMembers));
+    }
+    current.members = members.get<std::int64_t>();
+    const Json states = spec.value("clearance_states", Json::array({Json{{"name", "scene"}}}));
+    for (const Json& s : states.get<std::vector<Json>>()) {
+      current.states.push_back(s.at("name").get<std::string>());
+    }
+    current.axes = spec.value("settings", Json::object());
+    if (!current.axes.is_object()) ThrowCorruptCell(cell, "settings: not a JSON object");
+    return current;
+  });
 }
 
 std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
@@ -202,15 +236,10 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
 }
 
 StoredEnsemble CurrentMembers(StoredEnsemble stored) {
-  const Json spec = Json::parse(stored.spec_json);
-  const Json states = spec.value("clearance_states", Json::array({Json{{"name", "scene"}}}));
-  const Json axes = spec.value("settings", Json::object());
-  const int members = spec.value("members", 0);
+  const CurrentSpec spec = ReadCurrentSpec(stored);
   const auto superseded = [&](const StoredMember& m) {
-    return !(m.member < members &&
-             std::any_of(states.begin(), states.end(),
-                         [&](const Json& s) { return s.value("name", "") == m.state; }) &&
-             IsSettingOf(Json::parse(m.setting_json), axes));
+    return !(m.member < spec.members && std::ranges::count(spec.states, m.state) > 0 &&
+             IsSettingOf(Json::parse(m.setting_json), spec.axes));
   };
   stored.superseded = static_cast<std::int64_t>(std::erase_if(stored.members, superseded));
   std::erase_if(stored.not_ok, superseded);
