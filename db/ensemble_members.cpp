@@ -231,7 +231,9 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   find.Bind(1, study);
   if (!find.Step()) throw DbError(c.Path() + ": no study named \"" + study + "\"");
   std::int64_t study_id = 0, members = 0;
-  StoredEnsemble e{.database_path = c.Path(), .study = study};
+  StoredEnsemble e;
+  e.database_path = c.Path();
+  e.study = study;
   find.ReadColumns(study_id, e.spec_json, members, e.pending, e.failed);
   if (members == 0) {
     throw DbError(c.Path() + ": study \"" + study + "\" is not an ensemble study");
