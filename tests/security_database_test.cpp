@@ -79,6 +79,19 @@ class DatabaseCorruption : public testing::TempDirTest {
     EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
     EXPECT_TRUE(ReadBytes(db()) == before) << args << " changed the file";
   }
+  // Each (edit, message) applied alone to the database as it is now: sizing and report refuse
+  // the edited file with the message. The database is left as it was.
+  void ExpectEachRefusedBySizingAndReport(
+      const std::vector<std::pair<std::string, std::string>>& cases) {
+    const std::string pristine = ReadBytes(db());
+    for (const auto& [sql, message] : cases) {
+      WriteText(db(), pristine);
+      Edit(sql);
+      ExpectRefused("sizing", message);
+      ExpectRefused("report --out " + Path("report"), message);
+    }
+    WriteText(db(), pristine);
+  }
 };
 
 // Every command of a canonical study that reads the database.
@@ -238,13 +251,7 @@ TEST_F(DatabaseCorruption, MembersWithoutTheirZoneRowsOrWithShiftedOnesAreRefuse
        "database corrupt: ensemble member 3: zone rows 1, 2, 3, "},
       {"UPDATE ensemble_member_zones SET zone = 500 WHERE point_id = 3 AND zone = 126",
        ", 124, 125, 500; its nominal run has zones 0 to 126"}};
-  const std::string pristine = ReadBytes(db());
-  for (const auto& [sql, message] : cases) {
-    WriteText(db(), pristine);
-    Edit(sql);
-    ExpectRefused("sizing", message);
-    ExpectRefused("report --out " + Path("report"), message);
-  }
+  ExpectEachRefusedBySizingAndReport(cases);
 }
 
 TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizing) {
@@ -264,14 +271,7 @@ TEST_F(DatabaseCorruption, CorruptEnsembleJsonAndMissingZoneRowsAreRefusedBySizi
       {"DELETE FROM ensemble_member_zones WHERE point_id = 3 AND zone > 5",
        "database corrupt: ensemble member 3: 6 zone rows, its nominal run 127 "
        "zones"}};
-  const std::string pristine = ReadBytes(db());
-  for (const auto& [sql, message] : cases) {
-    WriteText(db(), pristine);
-    Edit(sql);
-    ExpectRefused("sizing", message);
-    ExpectRefused("report --out " + Path("report"), message);
-  }
-  WriteText(db(), pristine);
+  ExpectEachRefusedBySizingAndReport(cases);
   Edit("UPDATE studies SET spec_json = json_remove(spec_json, '$.scene_json')");
   ExpectRefused("report --out " + Path("report"),
                 "database corrupt: study ens: spec_json: key 'scene_json' not found");
@@ -295,13 +295,7 @@ TEST_F(DatabaseCorruption, PendingSettingsAndTheSpecsMemberFieldsAreCheckedBefor
        "database corrupt: study ens: spec_json: type must be array, but is object"},
       {spec + "'$.settings', json('[1]'))",
        "database corrupt: study ens: spec_json: settings: not a JSON object"}};
-  const std::string pristine = ReadBytes(db());
-  for (const auto& [sql, message] : cases) {
-    WriteText(db(), pristine);
-    Edit(sql);
-    ExpectRefused("sizing", message);
-    ExpectRefused("report --out " + Path("report"), message);
-  }
+  ExpectEachRefusedBySizingAndReport(cases);
 }
 
 TEST_F(DatabaseCorruption, StoredTextThatIsNotTextIsADatabaseErrorNotAnInternalOne) {
