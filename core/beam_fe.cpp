@@ -94,4 +94,32 @@ Eigen::VectorXd FeBeamModel::DeflectionRow(double x_m) const {
   return row;
 }
 
+void AddDeflectionSpring(FeBeamModel& model, int node, double k_n_per_m) {
+  if (k_n_per_m == 0.0) return;
+  for (int i = 0; i < model.Size(); ++i) {
+    if (model.global_dof[i] == 2 * node) {
+      model.stiffness.coeffRef(i, i) += k_n_per_m;
+      model.springs.push_back({i, k_n_per_m});
+    }
+  }
+}
+
+double StiffnessForm(const FeBeamModel& model, const Eigen::VectorXd& u) {
+  Eigen::VectorXd global = Eigen::VectorXd::Zero(2 * (model.n_elements + 1));
+  for (int i = 0; i < model.Size(); ++i) global[model.global_dof[i]] = u[i];
+  const double h = model.beam.length_m / model.n_elements;
+  const double ei_over_h = model.beam.ei_n_m2 / h;
+  double sum = 0.0;
+  for (int e = 0; e < model.n_elements; ++e) {
+    const double psi = (global[2 * e + 2] - global[2 * e]) / h;
+    const double a = global[2 * e + 1] - psi;
+    const double c = global[2 * e + 3] - psi;
+    sum += ei_over_h * (3.0 * (a + c) * (a + c) + (a - c) * (a - c));
+  }
+  for (const FeBeamModel::Spring& s : model.springs) {
+    sum += s.stiffness_n_per_m * u[s.unknown] * u[s.unknown];
+  }
+  return sum;
+}
+
 }  // namespace shockmap

@@ -5,21 +5,64 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
+
+#include "core/shift_invert_modes.h"
 
 namespace shockmap {
 namespace {
 
-// Each mode's sign makes its largest component positive.
-void NormalizeSigns(Eigen::MatrixXd& shapes) {
-  for (int j = 0; j < shapes.cols(); ++j) {
-    Eigen::Index at = 0;
-    shapes.col(j).cwiseAbs().maxCoeff(&at);
-    if (shapes(at, j) < 0.0) shapes.col(j) *= -1.0;
+// The lowest of `lambda` (ascending) above the round-off of a dense solve whose largest value is
+// lambda_max, i.e. the first elastic eigenvalue when a beam has rigid-body modes; 0 when none.
+double LowestElasticEigenvalue(const Eigen::VectorXd& lambda, double lambda_max) {
+  const double noise = 10.0 * std::numeric_limits<double>::epsilon() * lambda_max;
+  for (double l : lambda) {
+    if (l > noise) return l;
+  }
+  return 0.0;
+}
+
+// The lowest `count` modes in flexibility form, shifted by minus half the lowest elastic
+// eigenvalue so that rigid-body modes are found too and an elastic lambda = 1 / theta + shift
+// keeps its digits. The dense estimate of that eigenvalue can be off by more than itself on a
+// fine mesh: the solve is repeated with the shift its own result gives when that is smaller.
+ModalBasis LowModesInFlexibilityForm(const FeBeamModel& model, int count, double dense_lowest,
+                                     double lambda_max) {
+  double shift = -0.5 * dense_lowest;
+  ModalBasis low = LowestModesShiftInvert(model, count, shift);
+  const double lowest = LowestElasticEigenvalue(low.omega_rad_s.array().square(), lambda_max);
+  if (lowest > 0.0 && -shift > 0.5 * lowest * (1.0 + 1e-3)) {
+    low = LowestModesShiftInvert(model, count, -0.5 * lowest);
+  }
+  return low;
+}
+
+// Replaces the first `low.NumModes()` modes of `all` by `low` and makes the others
+// mass-orthonormal to them (their error along the low modes is that of the dense solve).
+void SpliceLowModes(const FeBeamModel& model, const ModalBasis& low, ModalBasis& all) {
+  const int k = low.NumModes();
+  all.omega_rad_s.head(k) = low.omega_rad_s;
+  all.shapes.leftCols(k) = low.shapes;
+  const Eigen::MatrixXd m_low = model.mass * low.shapes;
+  for (int j = k; j < all.NumModes(); ++j) {
+    Eigen::VectorXd v = all.shapes.col(j);
+    v -= low.shapes * (m_low.transpose() * v);
+    all.shapes.col(j) = v / std::sqrt(v.dot(model.mass * v));
   }
 }
 
-// All eigenpairs of the generalized symmetric problem, ascending; eigenvectors M-normalized.
+// Each omega^2 as its shape's Rayleigh quotient in StiffnessForm: second order in the shape's
+// error, and free of the cancellation of the assembled product.
+void SetRayleighQuotients(const FeBeamModel& model, ModalBasis& basis) {
+  for (int j = 0; j < basis.NumModes(); ++j) {
+    const Eigen::VectorXd phi = basis.shapes.col(j);
+    basis.omega_rad_s[j] = std::sqrt(StiffnessForm(model, phi) / phi.dot(model.mass * phi));
+  }
+}
+
+// All eigenpairs of the generalized symmetric problem, ascending; eigenvectors M-normalized;
+// the modes below kFlexibilityFormRatio omega_max from the flexibility form.
 ModalBasis AllModes(const FeBeamModel& model) {
   const Eigen::MatrixXd k = model.stiffness;
   const Eigen::MatrixXd m = model.mass;
@@ -27,11 +70,27 @@ ModalBasis AllModes(const FeBeamModel& model) {
   ModalBasis basis;
   basis.omega_rad_s = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   basis.shapes = solver.eigenvectors();
-  NormalizeSigns(basis.shapes);
+  NormalizeModeSigns(basis.shapes);
+  const Eigen::VectorXd& lambda = solver.eigenvalues();
+  const double split = kFlexibilityFormRatio * kFlexibilityFormRatio * lambda.maxCoeff();
+  const int low = static_cast<int>((lambda.array() < split).count());
+  const double lowest = LowestElasticEigenvalue(lambda, lambda.maxCoeff());
+  if (low > 0 && low < model.Size() - 1 && lowest > 0.0) {
+    SpliceLowModes(model, LowModesInFlexibilityForm(model, low, lowest, lambda.maxCoeff()), basis);
+  }
+  SetRayleighQuotients(model, basis);
   return basis;
 }
 
 }  // namespace
+
+void NormalizeModeSigns(Eigen::MatrixXd& shapes) {
+  for (int j = 0; j < shapes.cols(); ++j) {
+    Eigen::Index at = 0;
+    shapes.col(j).cwiseAbs().maxCoeff(&at);
+    if (shapes(at, j) < 0.0) shapes.col(j) *= -1.0;
+  }
+}
 
 double ModalBasis::HighestFrequencyHz() const {
   return NumModes() == 0 ? 0.0 : omega_rad_s[NumModes() - 1] / (2.0 * std::numbers::pi);
@@ -109,7 +168,7 @@ ModalBasis WithStaticCorrection(const FeBeamModel& model, const ModalBasis& basi
   ModalBasis enriched;
   enriched.omega_rad_s = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   enriched.shapes = t * solver.eigenvectors();
-  NormalizeSigns(enriched.shapes);
+  NormalizeModeSigns(enriched.shapes);
   return enriched;
 }
 

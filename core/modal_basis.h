@@ -20,8 +20,21 @@ struct ModalBasis {
 };
 
 // Solves (K - omega^2 M) phi = 0 (paper eq. 6) and keeps the modes with f <= f_trunc_hz.
-// Each kept mode's sign makes its largest deflection component positive.
+// Each kept mode's sign makes its largest deflection component positive. Every mode's
+// frequency is within about 1e-14 of the exact eigenvalue of the mesh (docs/physics.md §3): a
+// dense solve gives each omega^2 to about eps omega_max^2, so the modes below
+// kFlexibilityFormRatio omega_max are solved again in flexibility form
+// (LowestModesShiftInvert), the others made mass-orthogonal to them, and every omega^2 taken
+// as its shape's Rayleigh quotient in StiffnessForm.
 ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz);
+
+// Modes below this share of the highest frequency are solved in flexibility form: the dense
+// solve's shapes are accurate above it (their omega^2 error eps (omega_max / omega)^2 is
+// 1e-10 there).
+inline constexpr double kFlexibilityFormRatio = 1e-3;
+
+// Flips each column's sign so that its largest component is positive.
+void NormalizeModeSigns(Eigen::MatrixXd& shapes);
 
 // The first `n` modes regardless of frequency (all of them when n exceeds the model size).
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);

@@ -69,13 +69,6 @@ std::string BasisKey(const SceneBeam& b, const Truncation& t,
   return key.str();
 }
 
-void AddEndSpring(FeBeamModel& fe, int node, double k) {
-  if (k == 0.0) return;
-  for (int i = 0; i < fe.Size(); ++i) {
-    if (fe.global_dof[i] == 2 * node) fe.stiffness.coeffRef(i, i) += k;
-  }
-}
-
 // The lowest frequency of a deforming mode: a beam free at both ends also has two rigid-body
 // modes at zero frequency (translation, rotation), which are kept but do not set the scale.
 // `omega_rad_s`: every mode of the beam, ascending; the lowest three decide.
@@ -351,8 +344,8 @@ void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
 FeBeamModel AssembleSceneBeam(const SceneBeam& b) {
   FeBeamModel fe =
       AssembleBeam({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}, b.n_elements, b.at_zero, b.at_length);
-  AddEndSpring(fe, 0, b.spring_at_zero_n_per_m);
-  AddEndSpring(fe, b.n_elements, b.spring_at_length_n_per_m);
+  AddDeflectionSpring(fe, 0, b.spring_at_zero_n_per_m);
+  AddDeflectionSpring(fe, b.n_elements, b.spring_at_length_n_per_m);
   return fe;
 }
 
