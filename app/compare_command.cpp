@@ -114,6 +114,8 @@ void CheckStepCount(const CompareFlags& f) {
 void Run(const CompareFlags& flags) {
   CompareFlags f = flags;
   if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
+  if (f.options.reference.r_fref == 0.0)
+    f.options.reference.r_fref = ReferenceTruncationRule{}.For(f.problem.r_k);
   f.options.dt.rule = *DtRuleFromString(f.dt_rule);
   f.options.scheme = *SchemeFromString(f.scheme);
   std::string error;
@@ -171,9 +173,11 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_option("--scheme", flags->scheme, "numerical scheme")
       ->capture_default_str()
       ->check(CLI::IsMember({"explicit-modal", "implicit-full"}));
+  flags->options.reference.r_fref = 0.0;  // The studies' rule unless given.
   cmd->add_option("--rfref", flags->options.reference.r_fref,
-                  "truncation ratio of the reference f_ref / f1")
-      ->capture_default_str()
+                  "truncation ratio f_ref / f1 the reference starts from (default: "
+                  "max(3000, 10 sqrt(R_k)), as studies; raised until its estimated error is "
+                  "below 0.02)")
       ->check(FiniteAbove(1.0, false));
   cmd->add_option("--elements", flags->options.n_elements,
                   "finite elements of the beam (0: enough for every retained mode; at most " +

@@ -28,10 +28,12 @@ ShockSegmentationOptions ComparisonOptions::Shocks(double f1_hz) const {
 }
 
 ComparisonResult RunComparison(const CantileverImpact& problem, const ComparisonOptions& options) {
+  ReferenceOptions reference = options.reference;
+  if (reference.target_error == 0.0) reference.target_error = options.reference_tolerance;
   return ScoreAgainstReference(
       problem, options,
-      std::make_shared<const ReferenceRun>(ComputeReferenceRun(
-          problem, options.reference, options.window_s, options.Shocks(problem.F1Hz()))));
+      std::make_shared<const ReferenceRun>(ComputeReferenceRun(problem, reference, options.window_s,
+                                                               options.Shocks(problem.F1Hz()))));
 }
 
 TransientOptions NumericalRun(const ComparisonOptions& options, const ImpactModel& model,
@@ -55,6 +57,27 @@ double LowerMedian(std::vector<double> v) {
 }
 
 }  // namespace
+
+std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance) {
+  std::string message = fmt::format(
+      "the reference at R_fref = {:g} has an estimated error of {:.3g} against R_fref = {:g}",
+      c.r_fref, c.difference, c.r_fref_check);
+  if (c.tip_error > 0.0 || c.impulse_error > 0.0 || c.induced_err > 0.0) {
+    message += fmt::format(
+        " (tip {:.3g} of the amplitude, first-shock impulse {:.3g}, induced "
+        "Err {:.3g})",
+        c.tip_error, c.impulse_error, c.induced_err);
+  }
+  message += fmt::format(", above scoring.reference.tolerance = {:g}; ", tolerance);
+  if (c.r_fref_needed) {
+    message += fmt::format("R_fref = {:.3g} would do by the observed order {:.2f}",
+                           *c.r_fref_needed, c.order.value_or(0.0));
+  } else {
+    message +=
+        fmt::format("the convergence is not regular: R_fref above {:g} is needed", c.r_fref_check);
+  }
+  return message;
+}
 
 RunTiming TimeRepeatedly(const ImpactModel& model, Scheme scheme, const TransientOptions& run,
                          const RunSummary& first, const RepeatedTiming& timing) {
@@ -124,7 +147,7 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
       SegmentShocks(result.histories.contact_force_n[0], shocks, options.window_s);
   if (result.reference->convergence.difference > options.reference_tolerance) {
     result.status = RunStatus::kReferenceUnconverged;
-    result.message = "the reference truncations differ by more than reference_tolerance";
+    result.message = UnconvergedMessage(result.reference->convergence, options.reference_tolerance);
     return result;
   }
   const UniformSignal& tip = result.histories.displacement_m[0];

@@ -34,8 +34,9 @@ struct ComparisonOptions {
   double rest_duration_t1 = 0.1;
   // Which impulses SRf compares (paper eq. 9 admits several readings).
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
-  // Score nothing when the reference's two truncations differ by more than this share of the
-  // tip amplitude over the window.
+  // Score nothing when the reference's estimated error (ReferenceConvergence::difference)
+  // exceeds this; RunComparison raises the reference's truncation until it does not, within the
+  // reference budget.
   double reference_tolerance = 0.02;
 
   bool IsValid(std::string* error) const;
@@ -66,6 +67,10 @@ struct ComparisonResult {
   // Tip displacement and contact force; tip velocity and energies too when recorded kAll.
   TransientResult histories;
 };
+
+// Why a point is not scored against reference `c` at `tolerance`: the estimate, its parts, the
+// tolerance and its key, and the truncation that would do.
+std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance);
 
 // Preconditions: problem.IsValid(), options.IsValid(). Throws InputError when the
 // reference cannot represent the problem.

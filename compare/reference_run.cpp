@@ -1,28 +1,51 @@
 #include "compare/reference_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
+#include "compare/reference_estimate.h"
 #include "core/cpu_timer.h"
+#include "reference/reference_cost.h"
 
 namespace shockmap {
+
+double ReferenceTruncationRule::For(double r_k) const {
+  return std::max(r_fref_min, r_fref_per_sqrt_rk * std::sqrt(r_k));
+}
 
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
                                  double window_s, const ShockSegmentationOptions& shocks) {
   const CpuTimer timer;
-  ReferenceOptions solve_options = options;
-  solve_options.end_time_s = window_s;
-  const ReferenceSolution solution = SolveReference(problem, solve_options);
+  auto solve = [&](double r) { return SolveReferenceLevel(problem, options, r, window_s, shocks); };
+  const double r0 = options.r_fref;
+  std::optional<ReferenceLevel> coarser;
+  if (CoarserTruncation(r0) < r0) coarser.emplace(solve(CoarserTruncation(r0)));
+  ReferenceLevel level = solve(r0);
+  ReferenceLevel finer = solve(FinerTruncation(r0));
+  auto estimate = [&] {
+    return EstimateReferenceError(level, finer, coarser ? &*coarser : nullptr, window_s,
+                                  options.target_error);
+  };
+  ReferenceConvergence convergence = estimate();
+  // Raise the truncation while the estimate misses the target and the next one fits the budget.
+  while (options.target_error > 0.0 && convergence.difference > options.target_error) {
+    ReferenceOptions next = options;
+    next.r_fref = finer.r_fref;
+    if (!ReferenceBudgetExcess(problem, next, window_s).empty()) break;
+    coarser.emplace(std::move(level));
+    level = std::move(finer);
+    finer = solve(FinerTruncation(level.r_fref));
+    convergence = estimate();
+  }
   ReferenceRun run;
-  run.summary = solution.Summary();
-  // The output step, shortened so that the last sample falls on the window's end.
-  const double dt = window_s / std::ceil(window_s / solution.OutputStep());
-  ReferenceHistories histories = solution.SampleHistories(dt, window_s);
-  run.tip_m = std::move(histories.tip_m);
-  run.force_n = std::move(histories.force_n);
-  run.convergence = MeasureReferenceConvergence(problem, solve_options, run.tip_m, window_s);
-  run.shocks = SegmentShocks(run.force_n, shocks, window_s);
+  run.summary = level.solution.Summary();
+  run.tip_m = std::move(level.histories.tip_m);
+  run.force_n = std::move(level.histories.force_n);
+  run.shocks = std::move(level.shocks);
+  run.convergence = convergence;
   run.wall_s = timer.WallSeconds();
+  run.convergence.wall_check_s = run.wall_s - run.summary.wall_s;
   return run;
 }
 

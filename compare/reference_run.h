@@ -1,7 +1,7 @@
 #pragma once
 // A trusted reference for one problem and observation window: the piecewise-modal solution,
-// its sampled signals, its shocks and its own convergence. Computed once and scored against
-// every numerical run of the same problem.
+// its sampled signals, its shocks and its estimated error against finer truncations. Computed
+// once and scored against every numerical run of the same problem.
 
 #include <optional>
 #include <vector>
@@ -26,11 +26,25 @@ struct ReferenceRun {
   std::vector<Shock> shocks;
   ReferenceSummary summary;
   ReferenceConvergence convergence;
-  double wall_s = 0.0;  // Solution, its check at the coarser truncation, and sampling.
+  double wall_s = 0.0;  // CPU time of the solution, the truncations of its estimate and sampling.
   // Set by WithTipSpectrum: every point scored with the same PSD options and window reuses it.
   std::optional<ReferenceSpectrum> tip_spectrum;
 };
 
+// The truncation a reference starts from, shared by `compare` and studies (docs/physics.md §2):
+// the shock frequency sqrt(R_k) f1 (paper eq. 10) well inside it, r_fref = max(r_fref_min,
+// r_fref_per_sqrt_rk sqrt(R_k)); ComputeReferenceRun raises it until its estimated error meets
+// the tolerance.
+struct ReferenceTruncationRule {
+  double r_fref_min = 3000.0;
+  double r_fref_per_sqrt_rk = 10.0;  // Ten times the shock frequency.
+
+  double For(double r_k) const;
+};
+
+// The reference at options.r_fref, its error estimated against 3 r_fref (and the order from
+// r_fref / 3; docs/physics.md §2); with options.target_error > 0, r_fref is raised threefold
+// until the estimate meets it or the next truncation would exceed the reference budget.
 // Throws InputError when the reference cannot represent the problem.
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
                                  double window_s, const ShockSegmentationOptions& shocks);

@@ -25,7 +25,7 @@ std::pair<std::string, std::string> ReadStudyTitle(JsonObjectReader& r, std::str
 }
 
 double ReferencePolicy::RFref(double r_k) const {
-  return std::max(r_fref_min, r_fref_per_sqrt_rk * std::sqrt(r_k));
+  return ReferenceTruncationRule{r_fref_min, r_fref_per_sqrt_rk}.For(r_k);
 }
 
 namespace {
@@ -426,6 +426,7 @@ ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point) {
   o.rest_duration_t1 = spec.scoring.rest_duration_t1;
   o.srf_definition = spec.scoring.srf_definition;
   o.reference_tolerance = spec.scoring.reference.tolerance;
+  o.reference.target_error = o.reference_tolerance;
   return o;
 }
 

@@ -18,13 +18,15 @@ inline constexpr std::size_t kMaxStudyPoints = 1'000'000;
 // The largest stiffness ratio R_k a study's axis or `compare --rk` takes.
 inline constexpr double kMaxRk = 1e12;
 
-// Truncation of the reference for each R_k: the shock frequency sqrt(R_k) f1 (paper eq. 10)
-// must lie well inside it, so r_fref = max(r_fref_min, r_fref_per_sqrt_rk * sqrt(R_k)).
+// Truncation of the reference for each R_k: ReferenceTruncationRule (compare/reference_run.h)
+// with these values, raised until the reference's estimated error meets the tolerance.
 struct ReferencePolicy {
-  double r_fref_min = 3000.0;  // docs/physics.md §2: 3000 f1 and 1000 f1 agree at R_k = 3000.
-  double r_fref_per_sqrt_rk = 10.0;  // Ten times the shock frequency.
+  double r_fref_min = ReferenceTruncationRule{}.r_fref_min;
+  double r_fref_per_sqrt_rk = ReferenceTruncationRule{}.r_fref_per_sqrt_rk;
   int crossing_samples_per_period = 16;
-  double tolerance = 0.02;  // Score nothing against a reference unconverged beyond this.
+  // Score nothing against a reference whose estimated error exceeds this; the truncation is
+  // raised threefold until it does not, within the reference budget.
+  double tolerance = 0.02;
 
   double RFref(double r_k) const;
 };

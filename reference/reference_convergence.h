@@ -1,32 +1,37 @@
 #pragma once
-// Self-convergence of the truncated reference (docs/physics.md §2): the same problem at two
-// truncations.
+// How far a truncated reference is from its limit (docs/physics.md §2): it is judged against
+// finer truncations, never a coarser one alone, on what it is used for.
 
-#include "reference/reference_solver.h"
+#include <optional>
 
 namespace shockmap {
 
-struct ReferenceConvergence {
-  double r_fref = 0.0;        // The reference scored against.
-  double r_fref_check = 0.0;  // The coarser one it is checked with.
-  // max_t |u_ref(t) - u_check(t)| / max_t |u_ref(t)| of the tip over [0, window].
-  double difference = 0.0;
-  double wall_check_s = 0.0;
-};
-
+// Truncations are compared three times apart.
 inline constexpr double kReferenceCheckRatio = 3.0;
 
-// The truncation a reference at r_fref is checked against: r_fref / ratio, at least 1.
-double CheckTruncation(double r_fref, double ratio = kReferenceCheckRatio);
+// The finer truncation a reference at r_fref is checked against, and the coarser one that gives
+// the observed order.
+double FinerTruncation(double r_fref);
+double CoarserTruncation(double r_fref);  // At least 1.
 
-// The coarser truncation is CheckTruncation(r_fref, ratio); its error dominates the difference,
-// so the figure
-// is an upper estimate of the finer reference's own error. `tip`: the reference's tip over
-// [0, window_s], as sampled for its output; the check is sampled at the same instants, so the
-// reference is not sampled twice.
-ReferenceConvergence MeasureReferenceConvergence(const CantileverImpact& problem,
-                                                 const ReferenceOptions& options,
-                                                 const UniformSignal& tip, double window_s,
-                                                 double ratio = kReferenceCheckRatio);
+struct ReferenceConvergence {
+  double r_fref = 0.0;        // The reference scored against.
+  double r_fref_check = 0.0;  // The finer truncation it was checked against (3 r_fref).
+  // The estimate compared with the tolerance (scoring.reference.tolerance): the largest of the
+  // three errors below.
+  double difference = 0.0;
+  double wall_check_s = 0.0;  // CPU time of the truncations solved for the estimate.
+  // The reference's estimated errors, each its difference from the finer truncation times
+  // 3^p / (3^p - 1) when the tip's observed order p is regular (> 1/2), else times 2:
+  // max_t |u_R - u_3R| / max_t |u_R| over the window; |I_R - I_3R| / I_3R of the first shock;
+  // and the Err (eq. 8) of the reference's tip scored against the finer one's.
+  double tip_error = 0.0;
+  double impulse_error = 0.0;
+  double induced_err = 0.0;
+  // log_3 of d(R / 3, R) / d(R, 3R) on the tip, when the coarser truncation was solved.
+  std::optional<double> order;
+  // The truncation the tip's order predicts would meet the tolerance, when it is regular.
+  std::optional<double> r_fref_needed;
+};
 
 }  // namespace shockmap

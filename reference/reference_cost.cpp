@@ -1,29 +1,37 @@
 #include "reference/reference_cost.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
-#include "reference/analytic_basis.h"
 #include "reference/reference_convergence.h"
+#include "reference/tip_modes.h"
 
 namespace shockmap {
 namespace {
 
-// The cost of one solution at f_ref over the window, without the check.
+// The cost of one solution at f_ref over the window.
 ReferenceCost OneSolution(const CantileverImpact& problem, double r_fref, double window_s,
                           int crossing_samples_per_period) {
   const double f_ref_hz = r_fref * problem.F1Hz();
   // The roots lie ~pi apart from (i - 1/2) pi on, below f_ref's.
   ReferenceCost c;
-  c.modes = RootOfFrequency(problem.beam, f_ref_hz) / std::numbers::pi + 1.0;
-  c.nodes = BeamQuadratureNodes(ReferenceQuadratureRoot(problem, r_fref));
-  // The shortest retained period is at least 1 / f_ref.
-  const double periods = f_ref_hz * window_s;
+  const double b_max = std::sqrt(2.0 * std::numbers::pi * f_ref_hz / problem.beam.OmegaOf(1.0));
+  c.modes = b_max / std::numbers::pi + 1.0;
+  // On the spring the highest frequency is at most sqrt(omega_ref^2 + k_eff |t|^2), with
+  // |t|^2 = 4 n / m and k_eff = k_s / (1 + k_s R) (reference/reference_solver.h).
+  const double k_s = problem.SpringStiffness();
+  const double r = ResidualTipFlexibility(problem.beam, static_cast<int>(c.modes));
+  const double k_eff = k_s / (1.0 + k_s * r);
+  const double omega_ref = 2.0 * std::numbers::pi * f_ref_hz;
+  const double omega_top =
+      std::sqrt(omega_ref * omega_ref + k_eff * 4.0 * c.modes / problem.beam.Mass());
+  const double periods = omega_top / (2.0 * std::numbers::pi) * window_s;
   c.samples = 8.0 * periods + 1.0;
-  // Two bases on the nodes, two projections between them, and per output sample the tip, the
-  // force, the check's tip and the spectrum's arrays.
-  c.bytes = 8.0 * (2.0 * c.nodes * c.modes + 2.0 * c.modes * c.modes + 6.0 * c.samples);
+  // The change of coordinates and its transpose, and per output sample the tip, the force and
+  // the spectrum's arrays.
+  c.bytes = 8.0 * (2.0 * c.modes * c.modes + 6.0 * c.samples);
   c.mode_samples = (crossing_samples_per_period * periods + c.samples) * c.modes;
   return c;
 }
@@ -34,9 +42,12 @@ ReferenceCost EstimateReferenceCost(const CantileverImpact& problem,
                                     const ReferenceOptions& options, double window_s) {
   ReferenceCost c =
       OneSolution(problem, options.r_fref, window_s, options.crossing_samples_per_period);
-  const ReferenceCost check = OneSolution(problem, CheckTruncation(options.r_fref), window_s,
-                                          options.crossing_samples_per_period);
-  c.mode_samples += check.mode_samples;
+  for (double r : {CoarserTruncation(options.r_fref), FinerTruncation(options.r_fref)}) {
+    const ReferenceCost level =
+        OneSolution(problem, r, window_s, options.crossing_samples_per_period);
+    c.mode_samples += level.mode_samples;
+    c.bytes = std::max(c.bytes, level.bytes);  // Solved one after the other.
+  }
   return c;
 }
 

@@ -11,13 +11,12 @@
 
 namespace shockmap {
 
-// Upper estimates of the solution and its sampling (reference/reference_solver.cpp): modes of
-// each configuration below f_ref, quadrature nodes, output samples at the shortest period / 8
-// over the window, and the mode-samples of the crossing search and the output, the
-// convergence check at f_ref / 3 included.
+// Upper estimates of the solution and its sampling (reference/reference_solver.cpp): modes below
+// f_ref, output samples at the shortest period / 8 over the window, the memory of the largest
+// truncation solved, and the mode-samples of the crossing search and the output, the
+// convergence estimate's truncations f_ref / 3 and 3 f_ref included.
 struct ReferenceCost {
   double modes = 0.0;
-  double nodes = 0.0;
   double samples = 0.0;
   double bytes = 0.0;
   double mode_samples = 0.0;

@@ -14,36 +14,38 @@
 
 #include "core/cpu_timer.h"
 #include "core/validity.h"
-#include "reference/analytic_basis.h"
+#include "reference/rank_one_update.h"
 #include "reference/rotating_modal_sum.h"
+#include "reference/tip_modes.h"
 
 namespace shockmap {
-
-double ReferenceQuadratureRoot(const CantileverImpact& problem, double r_fref) {
-  return RootOfFrequency(problem.beam, r_fref * problem.F1Hz()) + 4.0;
-}
 
 bool ReferenceOptions::IsValid(std::string* error) const {
   return RequireAtLeast("r_fref", r_fref, 1.0, error) &&
          RequirePositive("end_time_s", end_time_s, error) &&
          RequireAtLeast("crossing_samples_per_period", crossing_samples_per_period, 4, error) &&
-         RequireAtLeast("max_transitions", max_transitions, 1, error);
+         RequireAtLeast("max_transitions", max_transitions, 1, error) &&
+         RequireNonNegative("target_error", target_error, error);
 }
 
-// One linear configuration: its basis, damped frequencies and the static tip offset u_s(L)
-// about which it oscillates (nonzero only on the spring with a nonzero gap).
+// One linear configuration in its own modal coordinates: free (the clamped-free modes) or on
+// the spring (the eigenvectors of the free modes' stiffness plus the spring in series with the
+// residual flexibility), the tip as a weighted sum of them about a static offset (nonzero only
+// on the spring with a nonzero gap).
 struct ReferenceSolution::Configuration {
-  AnalyticBasis basis;
   Eigen::VectorXd omega_d;
+  Eigen::VectorXd tip;      // u(L) per unit modal coordinate (m).
   double half_alpha = 0.0;  // alpha / 2 (1/s)
   double tip_offset_m = 0.0;
+
+  int NumModes() const { return static_cast<int>(omega_d.size()); }
 
   // Tip deflection tau after the start of phase p.
   double Tip(const ReferencePhase& p, double tau) const {
     double u = 0.0;
     for (int i = 0; i < omega_d.size(); ++i) {
       const double w = omega_d[i] * tau;
-      u += basis.tip[i] * (p.a[i] * std::cos(w) + p.b[i] * std::sin(w));
+      u += tip[i] * (p.a[i] * std::cos(w) + p.b[i] * std::sin(w));
     }
     return tip_offset_m + std::exp(-half_alpha * tau) * u;
   }
@@ -87,6 +89,12 @@ const ReferenceSolution::Configuration& ReferenceSolution::ConfigurationOf(
   return p.in_contact ? *contact_ : *free_;
 }
 
+double ReferenceSolution::PhaseEnergy(std::size_t index) const {
+  const ReferencePhase& p = phases_.at(index);
+  const Eigen::ArrayXd w2 = ConfigurationOf(p).omega_d.array().square();
+  return 0.5 * (w2 * (p.a.array().square() + p.b.array().square())).sum();
+}
+
 double ReferenceSolution::TipDisplacement(double t_s) const {
   const ReferencePhase& p = PhaseAt(t_s);
   return ConfigurationOf(p).Tip(p, t_s - p.start_s);
@@ -118,8 +126,7 @@ void ReferenceSolution::Sample(double dt_s, double end_s, UniformSignal& tip,
     const ReferencePhase& p = phases_[j];
     const Configuration& c = ConfigurationOf(p);
     RotatingModalSum& sum = p.in_contact ? contact_sum : free_sum;
-    sum.Start(c.basis.tip.cwiseProduct(p.a), c.basis.tip.cwiseProduct(p.b),
-              tip.TimeAt(i) - p.start_s);
+    sum.Start(c.tip.cwiseProduct(p.a), c.tip.cwiseProduct(p.b), tip.TimeAt(i) - p.start_s);
     for (; i < end; ++i) {
       const double u = c.tip_offset_m + sum.Next();
       tip.values[i] = u;
@@ -146,23 +153,63 @@ namespace {
 
 using Configuration = ReferenceSolution::Configuration;
 
-std::shared_ptr<Configuration> MakeConfiguration(const CantileverImpact& problem, double kappa,
-                                                 double f_ref_hz, const BeamQuadrature& quad) {
-  auto c = std::make_shared<Configuration>();
-  c->basis = MakeAnalyticBasis(problem.beam, kappa, f_ref_hz, quad);
-  c->half_alpha = 0.5 * problem.mass_damping_per_s;
-  c->omega_d.resize(c->basis.NumModes());
-  for (int i = 0; i < c->basis.NumModes(); ++i) {
-    const double w = c->basis.omega_rad_s[i];
-    if (c->half_alpha >= w) {
+// Damped frequencies of mass-proportional damping C = alpha M, the same in every basis.
+Eigen::VectorXd DampedFrequencies(const CantileverImpact& problem, const Eigen::VectorXd& omega) {
+  const double half_alpha = 0.5 * problem.mass_damping_per_s;
+  Eigen::VectorXd omega_d(omega.size());
+  for (int i = 0; i < omega.size(); ++i) {
+    if (half_alpha >= omega[i]) {
       std::ostringstream msg;
       msg << "mass_damping_per_s = " << problem.mass_damping_per_s << ": overdamps mode " << i + 1
-          << " (omega = " << w << " rad/s); the reference needs alpha / 2 < omega_1";
+          << " (omega = " << omega[i] << " rad/s); the reference needs alpha / 2 < omega_1";
       throw InputError(msg.str());
     }
-    c->omega_d[i] = std::sqrt(w * w - c->half_alpha * c->half_alpha);
+    omega_d[i] = std::sqrt(omega[i] * omega[i] - half_alpha * half_alpha);
   }
-  return c;
+  return omega_d;
+}
+
+// The two configurations over the clamped-free modes below f_ref (docs/physics.md §2) and the
+// changes of coordinates between them.
+struct ReferenceModel {
+  std::shared_ptr<Configuration> free, contact;
+  Eigen::MatrixXd to_contact;         // Z^T: free modal coordinates -> contact ones.
+  Eigen::MatrixXd to_free;            // Z
+  Eigen::VectorXd static_free;        // q*: the static state on the spring, free coordinates
+  Eigen::VectorXd static_contact;     // Z^T q*
+  double residual_flexibility = 0.0;  // of the modes above f_ref at the tip (m / N)
+};
+
+// On the spring, u(L) = t^T q + R F with F = k_s (g - u(L)) the spring's force and R the
+// residual flexibility: the spring acts on the modes as k_eff = k_s / (1 + k_s R) on t^T q.
+// Its modes are those of diag(omega^2) + k_eff t t^T (a rank-one update), and the tip in them is
+// u(L) = (t^T q + k_s R g) / (1 + k_s R).
+ReferenceModel MakeReferenceModel(const CantileverImpact& problem, double f_ref_hz) {
+  const TipModes modes = ClampedFreeTipModes(problem.beam, f_ref_hz);
+  const double k_s = problem.SpringStiffness();
+  const double r = modes.residual_flexibility_m_per_n;
+  const double k_eff = k_s / (1.0 + k_s * r);
+  const RankOneEigen spring =
+      EigenOfRankOneUpdate(modes.omega_rad_s.array().square().matrix(), modes.tip, k_eff);
+  ReferenceModel m;
+  m.residual_flexibility = r;
+  m.free = std::make_shared<Configuration>();
+  m.free->half_alpha = 0.5 * problem.mass_damping_per_s;
+  m.free->omega_d = DampedFrequencies(problem, modes.omega_rad_s);
+  m.free->tip = modes.tip;
+  m.contact = std::make_shared<Configuration>();
+  m.contact->half_alpha = m.free->half_alpha;
+  m.contact->omega_d = DampedFrequencies(problem, spring.values.cwiseSqrt());
+  const Eigen::VectorXd tip_contact = spring.vectors.transpose() * modes.tip;
+  m.contact->tip = tip_contact / (1.0 + k_s * r);
+  m.to_contact = spring.vectors.transpose();
+  m.to_free = spring.vectors;
+  // q* = k_eff g (D + k_eff t t^T)^-1 t, the spring's static state with gap g.
+  m.static_contact = (k_eff * problem.gap_m * tip_contact.array() / spring.values.array()).matrix();
+  m.static_free = spring.vectors * m.static_contact;
+  m.contact->tip_offset_m =
+      (modes.tip.dot(m.static_free) + k_s * r * problem.gap_m) / (1.0 + k_s * r);
+  return m;
 }
 
 // The tip's walk over tau = k step, k >= 1, of phase p (RotatingModalSum).
@@ -171,7 +218,7 @@ class TipWalk {
   TipWalk(const Configuration& c, double step)
       : c_(c), sum_(c.omega_d, c.half_alpha, step), step_(step) {}
   void Start(const ReferencePhase& p) {
-    sum_.Start(c_.basis.tip.cwiseProduct(p.a), c_.basis.tip.cwiseProduct(p.b), step_);
+    sum_.Start(c_.tip.cwiseProduct(p.a), c_.tip.cwiseProduct(p.b), step_);
   }
   double Next() { return c_.tip_offset_m + sum_.Next(); }
 
@@ -250,41 +297,28 @@ ReferenceSolution SolveReference(const CantileverImpact& problem, const Referenc
   }
   gsl_set_error_handler_off();
   const CpuTimer timer;
-  const BeamProperties& beam = problem.beam;
-  const double f_ref_hz = options.r_fref * problem.F1Hz();
-  const double kappa = 3.0 * problem.r_k;  // k_s L^3 / EI = 3 R_k
-  const BeamQuadrature quad = MakeBeamQuadrature(ReferenceQuadratureRoot(problem, options.r_fref));
-
-  auto free = MakeConfiguration(problem, 0.0, f_ref_hz, quad);
-  auto contact = MakeConfiguration(problem, kappa, f_ref_hz, quad);
-  // Static deflection on the spring with gap g: u_s(x) = u_s(L) x^2 (3L - x) / (2 L^3),
-  // u_s(L) = g R_k / (1 + R_k); the contact phase oscillates about it.
-  contact->tip_offset_m = problem.gap_m * problem.r_k / (1.0 + problem.r_k);
-  const double tip_static = contact->tip_offset_m;
-  auto static_shape = [tip_static](double xi) { return tip_static * xi * xi * (3.0 - xi) / 2.0; };
-  const Eigen::VectorXd static_on_contact =
-      ProjectDeflection(beam, contact->basis, static_shape, quad);
-  const Eigen::VectorXd static_on_free = ProjectDeflection(beam, free->basis, static_shape, quad);
-  const Eigen::MatrixXd to_contact = MassProjection(beam, contact->basis, free->basis, quad);
-  const Eigen::MatrixXd to_free = MassProjection(beam, free->basis, contact->basis, quad);
+  const ReferenceModel model = MakeReferenceModel(problem, options.r_fref * problem.F1Hz());
+  const auto& free = model.free;
+  const auto& contact = model.contact;
 
   ReferenceSummary summary;
-  summary.n_modes_free = free->basis.NumModes();
-  summary.n_modes_contact = contact->basis.NumModes();
-  const double omega_max =
-      std::max(free->basis.omega_rad_s.maxCoeff(), contact->basis.omega_rad_s.maxCoeff());
+  summary.n_modes_free = free->NumModes();
+  summary.n_modes_contact = contact->NumModes();
+  summary.residual_flexibility_m_per_n = model.residual_flexibility;
+  const double omega_max = std::max(free->omega_d.maxCoeff(), contact->omega_d.maxCoeff());
   summary.shortest_period_s = 2.0 * std::numbers::pi / omega_max;
   const double step = summary.shortest_period_s / options.crossing_samples_per_period;
 
   // Released at rest from the first clamped-free mode, tip at initial_tip_m.
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(free->basis.NumModes());
-  Eigen::VectorXd qd = Eigen::VectorXd::Zero(free->basis.NumModes());
-  q[0] = problem.initial_tip_m / free->basis.tip[0];
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(free->NumModes());
+  Eigen::VectorXd qd = Eigen::VectorXd::Zero(free->NumModes());
+  q[0] = problem.initial_tip_m / free->tip[0];
   std::vector<ReferencePhase> phases(1);
   phases[0].start_s = 0.0;
   phases[0].in_contact = problem.initial_tip_m < problem.gap_m;
   if (phases[0].in_contact) {
-    contact->StartPhase(to_contact * q - static_on_contact, to_contact * qd, phases[0]);
+    contact->StartPhase(model.to_contact * q - model.static_contact, model.to_contact * qd,
+                        phases[0]);
   } else {
     free->StartPhase(q, qd, phases[0]);
   }
@@ -308,16 +342,15 @@ ReferenceSolution SolveReference(const CantileverImpact& problem, const Referenc
     next.start_s = p.start_s + *exit;
     next.in_contact = !p.in_contact;
     if (next.in_contact) {
-      contact->StartPhase(to_contact * q - static_on_contact, to_contact * qd, next);
+      contact->StartPhase(model.to_contact * q - model.static_contact, model.to_contact * qd, next);
     } else {
-      free->StartPhase(to_free * q + static_on_free, to_free * qd, next);
+      free->StartPhase(model.to_free * q + model.static_free, model.to_free * qd, next);
     }
     phases.push_back(std::move(next));
     ++summary.n_transitions;
   }
   summary.wall_s = timer.WallSeconds();
-  return ReferenceSolution(problem, std::move(phases), std::move(free), std::move(contact),
-                           summary);
+  return ReferenceSolution(problem, std::move(phases), free, contact, summary);
 }
 
 }  // namespace shockmap

@@ -1,7 +1,10 @@
 #pragma once
-// Semi-analytical reference of the canonical problem (paper §2.2, eqs. 1-3): the response is a
-// sequence of linear phases, free or on the spring, each solved exactly on its own analytic
-// modal basis truncated at f_ref; the state is projected on the next basis at each transition.
+// Semi-analytical reference of the canonical problem (paper §2.2, eqs. 1-3; docs/physics.md §2):
+// the response is a sequence of linear phases, free or on the spring, each solved exactly. Both
+// live on the analytic clamped-free modes below f_ref; on the spring, the modes above f_ref
+// act at the tip by their static flexibility, in series with the spring (the residual
+// flexibility, or static correction), and the phase is solved on the eigenvectors of that
+// rank-one update. A transition is an exact change of coordinates: nothing is projected away.
 
 #include <Eigen/Dense>
 #include <string>
@@ -12,13 +15,8 @@
 
 namespace shockmap {
 
-// The largest root the quadrature of a reference at f_ref / f1 = r_fref integrates exactly:
-// f_ref's, with a margin.
-double ReferenceQuadratureRoot(const CantileverImpact& problem, double r_fref);
-
 struct ReferenceOptions {
-  // f_ref / f1. docs/physics.md §2: references at 1000 f1 and 3000 f1 agree over the first ~0.06 s
-  // at R_k = 3000; the higher one is the default.
+  // f_ref / f1: the clamped-free modes kept.
   double r_fref = 3000.0;
   double end_time_s = 0.0;  // Required, > 0.
   // Crossings are bracketed by sampling u(L, t) at this many points per shortest retained
@@ -26,13 +24,17 @@ struct ReferenceOptions {
   int crossing_samples_per_period = 16;
   // Guards against an endless run of grazing contacts.
   int max_transitions = 1'000'000;
+  // When > 0, ComputeReferenceRun (compare/reference_run.h) raises r_fref threefold until the
+  // estimated error (ReferenceConvergence::difference) is at most this, within the budget of
+  // reference/reference_cost.h.
+  double target_error = 0.0;
 
   bool IsValid(std::string* error) const;
 };
 
-// q_i(tau) = e^{-alpha tau / 2} (a_i cos(omega_d,i tau) + b_i sin(omega_d,i tau)) on the phase's
-// basis, tau = t - start_s (paper eq. 2 with xi_i omega_i = alpha / 2 for mass-proportional
-// damping C = alpha M).
+// q_i(tau) = e^{-alpha tau / 2} (a_i cos(omega_d,i tau) + b_i sin(omega_d,i tau)) in the phase's
+// modal coordinates, tau = t - start_s (paper eq. 2 with xi_i omega_i = alpha / 2 for
+// mass-proportional damping C = alpha M).
 struct ReferencePhase {
   double start_s = 0.0;
   bool in_contact = false;
@@ -41,7 +43,9 @@ struct ReferencePhase {
 
 struct ReferenceSummary {
   int n_modes_free = 0;
-  int n_modes_contact = 0;
+  int n_modes_contact = 0;  // The same coordinates, on the spring.
+  // Static tip flexibility of the modes above f_ref (m / N), in series with the spring.
+  double residual_flexibility_m_per_n = 0.0;
   int n_transitions = 0;
   double shortest_period_s = 0.0;
   double wall_s = 0.0;
@@ -73,6 +77,10 @@ class ReferenceSolution {
   double OutputStep() const { return summary_.shortest_period_s / 8.0; }
 
   const std::vector<ReferencePhase>& Phases() const { return phases_; }
+  // 1/2 sum_i omega_d,i^2 (a_i^2 + b_i^2) at the start of phase `index`: undamped and with
+  // g = 0, the beam's kinetic and strain energy plus the spring's, the same in every phase
+  // since a transition is an exact change of coordinates.
+  double PhaseEnergy(std::size_t index) const;
   const ReferenceSummary& Summary() const { return summary_; }
 
  private:

@@ -1,0 +1,120 @@
+// The reference's error estimate against finer truncations (docs/physics.md §2) and the spread
+// of scores under rounding-level perturbations (docs/physics.md §4).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+
+#include "compare/comparison.h"
+#include "compare/reference_estimate.h"
+#include "compare/reference_run.h"
+#include "compare/score_spread.h"
+
+namespace shockmap {
+namespace {
+
+constexpr double kWindow = 0.03;
+
+ShockSegmentationOptions Shocks(const CantileverImpact& p) {
+  ShockSegmentationOptions s;
+  s.rest_duration_s = 0.1 / p.F1Hz();
+  return s;
+}
+
+ReferenceRun Reference(double r_k, double r_fref, double target_error = 0.0) {
+  CantileverImpact p;
+  p.r_k = r_k;
+  ReferenceOptions o;
+  o.r_fref = r_fref;
+  o.target_error = target_error;
+  return ComputeReferenceRun(p, o, kWindow, Shocks(p));
+}
+
+// At R_k = 1e5 a truncation of 300 f1 (below 10 sqrt(R_k)) is far from converged: its estimate
+// says so, and a point scored against it is not scored, with the estimate, the tolerance's key
+// and a truncation that would do in its message.
+TEST(ReferenceEstimate, TooLowATruncationAtStiffContactIsDeclaredUnconverged) {
+  const ReferenceRun low = Reference(1e5, 300.0);
+  EXPECT_EQ(low.convergence.r_fref, 300.0);
+  EXPECT_EQ(low.convergence.r_fref_check, 900.0);
+  EXPECT_GT(low.convergence.difference, 0.02);
+  CantileverImpact p;
+  p.r_k = 1e5;
+  ComparisonOptions o;
+  o.r_ftrunc = 100.0;
+  o.window_s = kWindow;
+  const ComparisonResult r = ScoreAgainstReference(p, o, std::make_shared<const ReferenceRun>(low),
+                                                   RecordedHistories::kScored);
+  EXPECT_EQ(r.status, RunStatus::kReferenceUnconverged);
+  EXPECT_FALSE(r.err.has_value());
+  EXPECT_NE(r.message.find("scoring.reference.tolerance = 0.02"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("R_fref = 300 "), std::string::npos) << r.message;
+}
+
+// A converged reference passes, and its estimate bounds its difference from a reference nine
+// times finer: on the tip over the window and on the first-shock impulse.
+TEST(ReferenceEstimate, ConvergedReferencePassesAndItsEstimateBoundsAFinerOne) {
+  CantileverImpact p;
+  p.r_k = 1e5;
+  const ReferenceRun ref = Reference(1e5, 10000.0);
+  EXPECT_LT(ref.convergence.difference, 1e-3);
+  ASSERT_TRUE(ref.convergence.order.has_value());
+  EXPECT_GT(*ref.convergence.order, 1.0);
+  const ReferenceLevel finest =
+      SolveReferenceLevel(p, ReferenceOptions{}, 9.0 * 10000.0, kWindow, Shocks(p));
+  const UniformSignal tip = finest.solution.SampleTipDisplacement(ref.tip_m.dt_s, kWindow);
+  double diff = 0.0, amplitude = 0.0;
+  for (std::size_t i = 0; i < tip.values.size(); ++i) {
+    diff = std::max(diff, std::abs(tip.values[i] - ref.tip_m.values[i]));
+    amplitude = std::max(amplitude, std::abs(ref.tip_m.values[i]));
+  }
+  EXPECT_LE(diff / amplitude, ref.convergence.tip_error);
+  const double impulse = ref.shocks.front().impulse_n_s;
+  const double finest_impulse = finest.shocks.front().impulse_n_s;
+  EXPECT_LE(std::abs(impulse / finest_impulse - 1.0), ref.convergence.impulse_error);
+}
+
+// With a target, the truncation is raised threefold until the estimate meets it.
+TEST(ReferenceEstimate, AdaptiveTruncationRaisesTheReferenceUntilTheTargetIsMet) {
+  const ReferenceRun ref = Reference(1e5, 300.0, 1e-3);
+  EXPECT_GT(ref.convergence.r_fref, 300.0);
+  EXPECT_LE(ref.convergence.difference, 1e-3);
+  EXPECT_DOUBLE_EQ(ref.convergence.r_fref_check, 3.0 * ref.convergence.r_fref);
+}
+
+// The homogeneous problem (g = 0): released from 1e-3, 1.7e-3 or 0.37e-3 m, the scores are the
+// same but for rounding, i.e. within the spread the tool reports for the point.
+TEST(ScoreSpread, HomogeneousProblemScoresAgreeAcrossAmplitudesWithinTheSpread) {
+  for (double r_k : {3000.0, 1e5}) {
+    ComparisonOptions o;
+    o.r_ftrunc = 100.0;
+    o.window_s = kWindow;
+    CantileverImpact p;
+    p.r_k = r_k;
+    o.reference.r_fref = 30000.0;
+    const ScoreSpread spread = ScoreUnderPerturbations(p, o, 0.1, 0.8);
+    ASSERT_EQ(spread.runs, static_cast<int>(kRoundingPerturbations.size()));
+    const double err_band = std::max(spread.ErrWidth(), 1e-12);
+    const double srf_band = std::max(spread.SrfWidth(), 1e-12);
+    for (double amplitude : {1.7e-3, 0.37e-3}) {
+      CantileverImpact q = p;
+      q.initial_tip_m = amplitude;
+      const ComparisonResult r = RunComparison(q, o);
+      ASSERT_TRUE(r.err && r.srf) << r.message;
+      std::printf(
+          "R_k %g, A %g: Err %.15g SRf %.15g; spread Err [%.15g, %.15g] SRf [%.15g, %.15g]\n", r_k,
+          amplitude, *r.err, *r.srf, spread.err_min, spread.err_max, spread.srf_min,
+          spread.srf_max);
+      EXPECT_GE(*r.err, spread.err_min - err_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_LE(*r.err, spread.err_max + err_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_GE(*r.srf, spread.srf_min - srf_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_LE(*r.srf, spread.srf_max + srf_band) << "R_k " << r_k << ", A " << amplitude;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shockmap
