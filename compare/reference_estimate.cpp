@@ -10,7 +10,7 @@ namespace shockmap {
 namespace {
 
 // An order below this is not regular: the finer truncation's own error is then not known to be
-// the smaller, and the difference is doubled instead of extrapolated.
+// the smaller.
 constexpr double kRegularOrder = 0.5;
 
 // `other`'s tip on `level`'s output grid.
@@ -69,10 +69,13 @@ ReferenceConvergence EstimateReferenceError(const ReferenceLevel& level,
     }
   }
   const bool regular = c.order && *c.order > kRegularOrder;
-  // |u_R - u_inf| <= d(R, 3R) + |u_3R - u_inf| = d(R, 3R) 3^p / (3^p - 1) at order p.
-  const double factor = regular ? std::pow(kReferenceCheckRatio, *c.order) /
-                                      (std::pow(kReferenceCheckRatio, *c.order) - 1.0)
-                                : 2.0;
+  // |u_R - u_inf| <= d(R, 3R) + |u_3R - u_inf|, and |u_3R - u_inf| <= d(R, 3R) / (3^p - 1) at a
+  // regular order p: the difference is doubled (enough from p = log_3 2 on, and for a quantity
+  // that converges more slowly than the tip), or multiplied by 3^p / (3^p - 1) below that.
+  const double richardson = regular ? std::pow(kReferenceCheckRatio, *c.order) /
+                                          (std::pow(kReferenceCheckRatio, *c.order) - 1.0)
+                                    : 0.0;
+  const double factor = std::max(2.0, richardson);
   c.tip_error = factor * tip_difference;
   c.impulse_error = factor * ImpulseDifference(level.shocks, finer.shocks);
   c.induced_err = factor * SpectralError(tip, finer_tip, 0.0, window_s, PsdOptions{});

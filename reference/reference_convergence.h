@@ -21,8 +21,8 @@ struct ReferenceConvergence {
   // three errors below.
   double difference = 0.0;
   double wall_check_s = 0.0;  // CPU time of the truncations solved for the estimate.
-  // The reference's estimated errors, each its difference from the finer truncation times
-  // 3^p / (3^p - 1) when the tip's observed order p is regular (> 1/2), else times 2:
+  // The reference's estimated errors, each its difference from the finer truncation doubled
+  // (times 3^p / (3^p - 1) when the tip's observed order p is regular but below log_3 2):
   // max_t |u_R - u_3R| / max_t |u_R| over the window; |I_R - I_3R| / I_3R of the first shock;
   // and the Err (eq. 8) of the reference's tip scored against the finer one's.
   double tip_error = 0.0;

@@ -59,12 +59,12 @@ TEST(ReferenceEstimate, TooLowATruncationAtStiffContactIsDeclaredUnconverged) {
 TEST(ReferenceEstimate, ConvergedReferencePassesAndItsEstimateBoundsAFinerOne) {
   CantileverImpact p;
   p.r_k = 1e5;
-  const ReferenceRun ref = Reference(1e5, 10000.0);
-  EXPECT_LT(ref.convergence.difference, 1e-3);
+  const ReferenceRun ref = Reference(1e5, 30000.0);
+  EXPECT_LT(ref.convergence.difference, 1e-4);
   ASSERT_TRUE(ref.convergence.order.has_value());
   EXPECT_GT(*ref.convergence.order, 1.0);
   const ReferenceLevel finest =
-      SolveReferenceLevel(p, ReferenceOptions{}, 9.0 * 10000.0, kWindow, Shocks(p));
+      SolveReferenceLevel(p, ReferenceOptions{}, 9.0 * 30000.0, kWindow, Shocks(p));
   const UniformSignal tip = finest.solution.SampleTipDisplacement(ref.tip_m.dt_s, kWindow);
   double diff = 0.0, amplitude = 0.0;
   for (std::size_t i = 0; i < tip.values.size(); ++i) {

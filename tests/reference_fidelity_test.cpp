@@ -21,8 +21,9 @@ constexpr double kWindow = 0.03;
 constexpr double kTarget = 1e-3;
 
 TEST(ReferenceFidelity, EstimateBoundsTheDifferenceFromAFinerReferenceFromRk1To1e8) {
-  std::printf("| R_k | R_fref | order | est. tip | est. impulse | est. Err | finest | tip diff | "
-              "impulse diff | CPU (s) | CPU with estimate (s) |\n");
+  std::printf(
+      "| R_k | R_fref | order | est. tip | est. impulse | est. Err | finest | tip diff | "
+      "impulse diff | CPU (s) | CPU with estimate (s) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 0; i <= 16; ++i) {
     CantileverImpact p;
