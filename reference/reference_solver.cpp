@@ -50,6 +50,13 @@ struct ReferenceSolution::Configuration {
     return tip_offset_m + std::exp(-half_alpha * tau) * u;
   }
 
+  // A bound on |du(L)/dtau| over the whole phase p: sum_i |tip_i| |a_i - j b_i| (omega_d,i +
+  // alpha / 2), since every term's amplitude only decays.
+  double TipSpeedBound(const ReferencePhase& p) const {
+    const Eigen::ArrayXd amplitude = (p.a.array().square() + p.b.array().square()).sqrt();
+    return (tip.array().abs() * amplitude * (omega_d.array() + half_alpha)).sum();
+  }
+
   // Modal displacements and velocities tau after the start of phase p.
   void State(const ReferencePhase& p, double tau, Eigen::VectorXd& q, Eigen::VectorXd& qd) const {
     const double decay = std::exp(-half_alpha * tau);
@@ -221,6 +228,7 @@ class TipWalk {
     sum_.Start(c_.tip.cwiseProduct(p.a), c_.tip.cwiseProduct(p.b), step_);
   }
   double Next() { return c_.tip_offset_m + sum_.Next(); }
+  void Skip(long samples) { sum_.Skip(samples); }
 
  private:
   const Configuration& c_;
@@ -249,14 +257,19 @@ double RefineCrossing(const F& s, double lo, double hi) {
   return hi;
 }
 
+// A skip re-anchors the walk (a sine and a cosine per mode, the cost of some tens of rotations):
+// it is taken only over at least this many samples.
+constexpr long kShortestSkip = 64;
+
 // First tau in (0, tau_max] where the tip leaves the phase's side of the gap, or nullopt.
 // The tip is sampled at tau = k step (by `walk`, step = shortest period / samples per period)
-// and at tau_max; a sign change is refined by Brent on the exact sum. A phase that starts
-// inside is watched from its first instant (step / 1000), so that a re-contact shorter than
-// one sample right after a transition is bracketed too. A phase that starts on the wrong side
-// (the projection on a truncated basis puts the tip a hair off the gap) is watched from the
-// first sample inside; if none comes within one shortest period the phase is a graze and ends
-// at once (tau = 0).
+// and at tau_max; a sign change is refined by Brent on the exact sum. Samples are skipped where
+// no crossing can lie: from a sample at distance |s| inside, the tip cannot reach the gap within
+// |s| / V, V = TipSpeedBound (docs/physics.md §2). A phase that starts inside is watched from
+// its first instant (step / 1000), so that a re-contact shorter than one sample right after a
+// transition is bracketed too. A phase that starts on the wrong side (the tip a hair off the
+// gap at a transition) is watched from the first sample inside; if none comes within one
+// shortest period the phase is a graze and ends at once (tau = 0).
 std::optional<double> FindExit(const Configuration& c, TipWalk& walk, const ReferencePhase& p,
                                double gap, double step, double tau_max) {
   auto s = [&](double tau) { return c.Tip(p, tau) - gap; };
@@ -264,6 +277,8 @@ std::optional<double> FindExit(const Configuration& c, TipWalk& walk, const Refe
   auto outside = [&](double v) { return p.in_contact ? v > 0.0 : v < 0.0; };
   const double grace = 16.0 * step;
   const double first = std::min(1e-3 * step, tau_max);
+  const double reach_per_step = c.TipSpeedBound(p) * step;
+  const long last_sample = static_cast<long>(tau_max / step);
   bool seen_inside = inside(s(first));
   double prev = seen_inside ? first : 0.0;
   walk.Start(p);
@@ -282,6 +297,14 @@ std::optional<double> FindExit(const Configuration& c, TipWalk& walk, const Refe
     }
     prev = tau;
     if (tau >= tau_max) return std::nullopt;
+    // Samples k + 1 .. k + skip lie strictly inside: the tip moves less than |v| by k + skip + 1.
+    const long skip =
+        std::min(static_cast<long>(std::abs(v) / reach_per_step) - 1, last_sample - k - 1);
+    if (seen_inside && inside(v) && skip >= kShortestSkip) {
+      walk.Skip(skip);
+      k += skip;
+      prev = static_cast<double>(k) * step;
+    }
   }
 }
 

@@ -64,6 +64,11 @@ void RotatingModalSum::Anchor() {
   }
 }
 
+void RotatingModalSum::Skip(long samples) {
+  k_ += samples;
+  Anchor();
+}
+
 double RotatingModalSum::Next() {
   const double u = SumThenRotate(z_re_.data(), z_im_.data(), rotation_re_.data(),
                                  rotation_im_.data(), z_re_.size());

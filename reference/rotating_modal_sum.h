@@ -29,6 +29,10 @@ class RotatingModalSum {
   // u at the current sample; then moves to the next one.
   double Next();
 
+  // Moves `samples` (>= 0) samples on without summing them: the next Next() returns u at the
+  // sample that many further, set from exact trigonometry (one sine and cosine per mode).
+  void Skip(long samples);
+
  private:
   void Anchor();
 
