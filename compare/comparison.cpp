@@ -60,18 +60,14 @@ double LowerMedian(std::vector<double> v) {
 
 std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance) {
   std::string message = fmt::format(
-      "the reference at R_fref = {:g} has an estimated error of {:.3g} against R_fref = {:g}",
-      c.r_fref, c.difference, c.r_fref_check);
-  if (c.tip_error > 0.0 || c.impulse_error > 0.0 || c.induced_err > 0.0) {
-    message += fmt::format(
-        " (tip {:.3g} of the amplitude, first-shock impulse {:.3g}, induced "
-        "Err {:.3g})",
-        c.tip_error, c.impulse_error, c.induced_err);
-  }
-  message += fmt::format(", above scoring.reference.tolerance = {:g}; ", tolerance);
+      "the reference at R_fref = {:g} has an estimated error of {:.3g} (checked against "
+      "R_fref = {:g}: tip {:.3g} of the amplitude, first-shock impulse {:.3g}, induced Err "
+      "{:.3g}), above scoring.reference.tolerance = {:g}; ",
+      c.r_fref, c.difference, c.r_fref_check, c.tip.error, c.impulse.error, c.induced_err.error,
+      tolerance);
   if (c.r_fref_needed) {
     message += fmt::format("R_fref = {:.3g} would do by the observed order {:.2f}",
-                           *c.r_fref_needed, c.order.value_or(0.0));
+                           *c.r_fref_needed, *c.Deciding().order);
   } else {
     message +=
         fmt::format("the convergence is not regular: R_fref above {:g} is needed", c.r_fref_check);

@@ -1,7 +1,8 @@
 #pragma once
 // The error of a truncated reference estimated from finer truncations of the same problem
 // (docs/physics.md §2), on what the reference is used for: the tip history, the first-shock
-// impulse and the Err its own error induces.
+// impulse and the Err its own error induces, each by its grid convergence index
+// (reference/reference_convergence.h).
 
 #include <optional>
 #include <vector>
@@ -12,8 +13,8 @@
 
 namespace shockmap {
 
-// One truncation solved over [0, window]: its histories on its own output grid (shortened to end
-// on the window) and its shocks.
+// One truncation solved over [0, window]: its histories on the grid of the reference being
+// estimated (its own output grid when it is that reference) and its shocks (ReferenceShocks).
 struct ReferenceLevel {
   double r_fref = 0.0;
   ReferenceSolution solution;
@@ -21,16 +22,26 @@ struct ReferenceLevel {
   std::vector<Shock> shocks;
 };
 
+// A reference's own output grid over [0, window_s]: its output step shortened so that the last
+// sample falls on the window's end.
+double OutputGridStep(const ReferenceSolution& solution, double window_s);
+
+// Solves truncation r_fref over [0, window_s] and samples it every dt_s (0: on its own output
+// grid).
 ReferenceLevel SolveReferenceLevel(const CantileverImpact& problem, const ReferenceOptions& options,
                                    double r_fref, double window_s,
-                                   const ShockSegmentationOptions& shocks);
+                                   const ShockSegmentationOptions& shocks, double dt_s = 0.0);
 
-// The estimate of `level`'s error from `finer` (3 r_fref) and, when given, `coarser`
-// (r_fref / 3) for the order; `tolerance` > 0 sets r_fref_needed from a regular order. The
-// wall_check_s field is left to the caller.
-ReferenceConvergence EstimateReferenceError(const ReferenceLevel& level,
-                                            const ReferenceLevel& finer,
-                                            const ReferenceLevel* coarser, double window_s,
-                                            double tolerance);
+// Samples `level` again every dt_s (0: on its own output grid).
+void ResampleLevel(ReferenceLevel& level, double window_s, const ShockSegmentationOptions& shocks,
+                   double dt_s = 0.0);
+
+// The estimate of a reference's error from a ladder of truncations three apart, ascending and
+// all sampled on the reference's grid: ..., r_fref / 9, r_fref / 3, the reference (r_fref),
+// then its check (3 r_fref) last. With four levels the orders of two successive triples are
+// observed (GridConvergenceIndex). `tolerance` > 0 sets r_fref_needed from an observed order.
+// The wall_check_s field is left to the caller. Precondition: ladder.size() >= 2.
+ReferenceConvergence EstimateReferenceError(const std::vector<const ReferenceLevel*>& ladder,
+                                            double window_s, double tolerance);
 
 }  // namespace shockmap

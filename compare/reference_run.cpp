@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 
 #include "compare/reference_estimate.h"
@@ -9,6 +10,12 @@
 #include "reference/reference_cost.h"
 
 namespace shockmap {
+namespace {
+
+// The truncations below the reference solved for its observed orders.
+constexpr std::size_t kCoarserLevels = 2;
+
+}  // namespace
 
 double ReferenceTruncationRule::For(double r_k) const {
   return std::max(r_fref_min, r_fref_per_sqrt_rk * std::sqrt(r_k));
@@ -17,15 +24,24 @@ double ReferenceTruncationRule::For(double r_k) const {
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
                                  double window_s, const ShockSegmentationOptions& shocks) {
   const CpuTimer timer;
-  auto solve = [&](double r) { return SolveReferenceLevel(problem, options, r, window_s, shocks); };
-  const double r0 = options.r_fref;
-  std::optional<ReferenceLevel> coarser;
-  if (CoarserTruncation(r0) < r0) coarser.emplace(solve(CoarserTruncation(r0)));
-  ReferenceLevel level = solve(r0);
-  ReferenceLevel finer = solve(FinerTruncation(r0));
+  // The reference on its own output grid; the truncations of its estimate on the same grid:
+  // up to two coarser ones (r_fref / 9, r_fref / 3) for the orders, and the finer check.
+  ReferenceLevel level = SolveReferenceLevel(problem, options, options.r_fref, window_s, shocks);
+  auto check = [&](double r) {
+    return SolveReferenceLevel(problem, options, r, window_s, shocks, level.histories.tip_m.dt_s);
+  };
+  std::deque<ReferenceLevel> coarser;
+  for (double r = level.r_fref; coarser.size() < kCoarserLevels && CoarserTruncation(r) < r;) {
+    r = CoarserTruncation(r);
+    coarser.push_front(check(r));
+  }
+  ReferenceLevel finer = check(FinerTruncation(level.r_fref));
   auto estimate = [&] {
-    return EstimateReferenceError(level, finer, coarser ? &*coarser : nullptr, window_s,
-                                  options.target_error);
+    std::vector<const ReferenceLevel*> ladder;
+    for (const ReferenceLevel& l : coarser) ladder.push_back(&l);
+    ladder.push_back(&level);
+    ladder.push_back(&finer);
+    return EstimateReferenceError(ladder, window_s, options.target_error);
   };
   ReferenceConvergence convergence = estimate();
   // Raise the truncation while the estimate misses the target and the next one fits the budget.
@@ -33,9 +49,13 @@ ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const Referenc
     ReferenceOptions next = options;
     next.r_fref = finer.r_fref;
     if (!ReferenceBudgetExcess(problem, next, window_s).empty()) break;
-    coarser.emplace(std::move(level));
+    coarser.push_back(std::move(level));
+    if (coarser.size() > kCoarserLevels) coarser.pop_front();
     level = std::move(finer);
-    finer = solve(FinerTruncation(level.r_fref));
+    ResampleLevel(level, window_s, shocks);
+    for (ReferenceLevel& l : coarser)
+      ResampleLevel(l, window_s, shocks, level.histories.tip_m.dt_s);
+    finer = check(FinerTruncation(level.r_fref));
     convergence = estimate();
   }
   ReferenceRun run;

@@ -1,11 +1,39 @@
 #include "reference/reference_convergence.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace shockmap {
 
 double FinerTruncation(double r_fref) { return kReferenceCheckRatio * r_fref; }
 
 double CoarserTruncation(double r_fref) { return std::max(1.0, r_fref / kReferenceCheckRatio); }
+
+QuantityConvergence GridConvergenceIndex(const std::vector<double>& differences) {
+  QuantityConvergence q;
+  if (differences.empty()) return q;
+  q.difference = std::abs(differences.back());
+  bool asymptotic = differences.size() >= 3;
+  double order = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; asymptotic && k + 1 < differences.size(); ++k) {
+    const double ratio = differences[k] / differences[k + 1];
+    asymptotic = ratio > 0.0 && std::isfinite(ratio);
+    if (asymptotic) order = std::min(order, std::log(ratio) / std::log(kReferenceCheckRatio));
+  }
+  if (asymptotic && order >= kLowestRegularOrder) q.order = order;
+  const double fs = q.order ? kSafetyFactorObserved : kSafetyFactorUnobserved;
+  const double r_p = std::pow(kReferenceCheckRatio, q.order.value_or(kLowestRegularOrder));
+  q.error = fs * q.difference * r_p / (r_p - 1.0);
+  return q;
+}
+
+const QuantityConvergence& ReferenceConvergence::Deciding() const {
+  const QuantityConvergence* deciding = &tip;
+  for (const QuantityConvergence* q : {&impulse, &induced_err}) {
+    if (q->error > deciding->error) deciding = q;
+  }
+  return *deciding;
+}
 
 }  // namespace shockmap

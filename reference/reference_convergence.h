@@ -1,8 +1,10 @@
 #pragma once
 // How far a truncated reference is from its limit (docs/physics.md §2): it is judged against
-// finer truncations, never a coarser one alone, on what it is used for.
+// finer truncations, never a coarser one alone, on what it is used for, by Roache's grid
+// convergence index with the order observed over three truncations.
 
 #include <optional>
+#include <vector>
 
 namespace shockmap {
 
@@ -14,24 +16,50 @@ inline constexpr double kReferenceCheckRatio = 3.0;
 double FinerTruncation(double r_fref);
 double CoarserTruncation(double r_fref);  // At least 1.
 
+// Roache's factors of safety: with an order observed in the asymptotic range, and without one.
+// docs/fidelity.md measures the first against the difference from a reference nine times finer.
+inline constexpr double kSafetyFactorObserved = 1.25;
+inline constexpr double kSafetyFactorUnobserved = 3.0;
+// An observed order below this is not taken as asymptotic; without an observed order the index
+// assumes this one.
+inline constexpr double kLowestRegularOrder = 1.0;
+
+// One quantity of a reference at R and its grid convergence index: with d = |X_R - X_3R| and
+// p the observed order, the error of X_R is at most Fs d 3^p / (3^p - 1) (Richardson's
+// |X_R - X_inf| with the factor of safety Fs).
+struct QuantityConvergence {
+  double difference = 0.0;      // d, from the finer truncation.
+  std::optional<double> order;  // p, when observed in the asymptotic range.
+  double error = 0.0;           // The grid convergence index.
+};
+
+// The index from a quantity's differences X_b - X_a between successive truncations three
+// apart, the coarsest pair first and (R, 3R) last: d(R / 9, R / 3), d(R / 3, R), d(R, 3R).
+// The convergence is taken as asymptotic when all differences have one sign and each observed
+// order log_3(d_k / d_k+1) is at least kLowestRegularOrder; the index then uses the smallest of
+// them. With fewer than three differences, or otherwise, the order is not observed (Fs = 3,
+// p = kLowestRegularOrder).
+QuantityConvergence GridConvergenceIndex(const std::vector<double>& differences);
+
 struct ReferenceConvergence {
   double r_fref = 0.0;        // The reference scored against.
   double r_fref_check = 0.0;  // The finer truncation it was checked against (3 r_fref).
-  // The estimate compared with the tolerance (scoring.reference.tolerance): the largest of the
-  // three errors below.
+  // The estimate compared with the tolerance (scoring.reference.tolerance): the largest error
+  // of the three quantities below.
   double difference = 0.0;
   double wall_check_s = 0.0;  // CPU time of the truncations solved for the estimate.
-  // The reference's estimated errors, each its difference from the finer truncation doubled
-  // (times 3^p / (3^p - 1) when the tip's observed order p is regular but below log_3 2):
-  // max_t |u_R - u_3R| / max_t |u_R| over the window; |I_R - I_3R| / I_3R of the first shock;
-  // and the Err (eq. 8) of the reference's tip scored against the finer one's.
-  double tip_error = 0.0;
-  double impulse_error = 0.0;
-  double induced_err = 0.0;
-  // log_3 of d(R / 3, R) / d(R, 3R) on the tip, when the coarser truncation was solved.
-  std::optional<double> order;
-  // The truncation the tip's order predicts would meet the tolerance, when it is regular.
+  // max_t |u_R - u_3R| / max_t |u_R| over the window, on the reference's output grid.
+  QuantityConvergence tip;
+  // |I_R - I_3R| / I_3R of the first shocks' impulses (in closed form).
+  QuantityConvergence impulse;
+  // The Err (eq. 8) of the reference's tip scored against the finer one's.
+  QuantityConvergence induced_err;
+  // The truncation the deciding quantity's order predicts would meet the tolerance, when that
+  // order is observed.
   std::optional<double> r_fref_needed;
+
+  // The quantity with the largest error, which `difference` is.
+  const QuantityConvergence& Deciding() const;
 };
 
 }  // namespace shockmap

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numbers>
 #include <sstream>
@@ -48,6 +49,18 @@ struct ReferenceSolution::Configuration {
       u += tip[i] * (p.a[i] * std::cos(w) + p.b[i] * std::sin(w));
     }
     return tip_offset_m + std::exp(-half_alpha * tau) * u;
+  }
+
+  // The integral of the tip deflection over [0, tau] of phase p: each term
+  // Re((a_i - j b_i) (e^{z_i tau} - 1) / z_i), z_i = -alpha / 2 + j omega_d,i.
+  double TipIntegral(const ReferencePhase& p, double tau) const {
+    double sum = 0.0;
+    for (int i = 0; i < omega_d.size(); ++i) {
+      const std::complex<double> z(-half_alpha, omega_d[i]);
+      const std::complex<double> weight(p.a[i], -p.b[i]);
+      sum += tip[i] * std::real(weight * (std::exp(z * tau) - 1.0) / z);
+    }
+    return tip_offset_m * tau + sum;
   }
 
   // A bound on |du(L)/dtau| over the whole phase p: sum_i |tip_i| |a_i - j b_i| (omega_d,i +
@@ -100,6 +113,20 @@ double ReferenceSolution::PhaseEnergy(std::size_t index) const {
   const ReferencePhase& p = phases_.at(index);
   const Eigen::ArrayXd w2 = ConfigurationOf(p).omega_d.array().square();
   return 0.5 * (w2 * (p.a.array().square() + p.b.array().square())).sum();
+}
+
+std::vector<ReferenceContact> ReferenceSolution::Contacts(double end_s) const {
+  std::vector<ReferenceContact> contacts;
+  for (std::size_t j = 0; j < phases_.size() && phases_[j].start_s < end_s; ++j) {
+    const ReferencePhase& p = phases_[j];
+    if (!p.in_contact) continue;
+    const double end = j + 1 < phases_.size() ? std::min(phases_[j + 1].start_s, end_s) : end_s;
+    const double duration = end - p.start_s;
+    const double impulse =
+        stiffness_n_per_m_ * (gap_m_ * duration - contact_->TipIntegral(p, duration));
+    contacts.push_back({p.start_s, end, impulse});
+  }
+  return contacts;
 }
 
 double ReferenceSolution::TipDisplacement(double t_s) const {

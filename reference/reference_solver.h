@@ -51,6 +51,13 @@ struct ReferenceSummary {
   double wall_s = 0.0;
 };
 
+// A contact phase of a reference: its interval and the integral of its force over it.
+struct ReferenceContact {
+  double start_s = 0.0;
+  double end_s = 0.0;
+  double impulse_n_s = 0.0;
+};
+
 // The sampled histories of a reference, on one grid.
 struct ReferenceHistories {
   UniformSignal tip_m;
@@ -77,6 +84,9 @@ class ReferenceSolution {
   double OutputStep() const { return summary_.shortest_period_s / 8.0; }
 
   const std::vector<ReferencePhase>& Phases() const { return phases_; }
+  // The contact phases that start before end_s, the last one cut at end_s, each impulse the
+  // integral of k_s (g - u(L)) in closed form (no sampling; docs/physics.md §2).
+  std::vector<ReferenceContact> Contacts(double end_s) const;
   // 1/2 sum_i omega_d,i^2 (a_i^2 + b_i^2) at the start of phase `index`: undamped and with
   // g = 0, the beam's kinetic and strain energy plus the spring's, the same in every phase
   // since a transition is an exact change of coordinates.
