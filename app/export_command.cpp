@@ -88,8 +88,12 @@ void ExportPoint(const ExportFlags& f) {
   const auto score = [](const std::optional<double>& v) {
     return v ? fmt::format("{}", *v) : std::string("not scored");
   };
-  fmt::print("point {} of study {} computed again: status {}, Err {}, SRf {}\n", f.point_id, study,
-             ToString(replay.result.status), score(replay.result.err), score(replay.result.srf));
+  std::string scores;
+  for (const ScoreDefinition& s : Scores()) {
+    scores += fmt::format(", {} {}", s.label, score(replay.result.scores[s.name]));
+  }
+  fmt::print("point {} of study {} computed again: status {}{}\n", f.point_id, study,
+             ToString(replay.result.status), scores);
   fmt::print("  histories {}/numerical.csv, reference.csv (the stored reference)\n", f.out);
 }
 

@@ -1,5 +1,8 @@
 #include "app/flag_checks.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -53,13 +56,18 @@ void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
   });
 }
 
-void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds) {
-  command->add_option("--err-max", thresholds.err_max, "largest acceptable Err")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
-  command->add_option("--srf-min", thresholds.srf_min, "smallest acceptable SRf")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
+void AddThresholdFlags(CLI::App* command, CriteriaOptions& criteria) {
+  for (const ScoreDefinition& score : Scores()) {
+    std::string key = score.ThresholdKey();
+    std::ranges::replace(key, '_', '-');
+    const std::string name(score.name);
+    CLI::Option* flag = command->add_option_function<double>(
+        "--" + key, [&criteria, name](double v) { criteria.thresholds[name] = v; },
+        score.ThresholdMeaning() + " (" + std::string(score.source) + ")" +
+            (score.default_threshold ? "" : "; none by default: the score does not judge"));
+    if (score.default_threshold) flag->default_str(fmt::format("{:g}", *score.default_threshold));
+    flag->check(FiniteIn(score.threshold_low, false, score.threshold_high));
+  }
 }
 
 void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {

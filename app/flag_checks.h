@@ -15,8 +15,9 @@ inline constexpr const char* kDatabaseEnvironmentVariable = "SHOCKMAP_DB";
 // current directory. An empty value or a directory is refused, naming both sources.
 void AddDatabaseFlag(CLI::App* command, std::string& database_path);
 
-// --err-max and --srf-min, the thresholds validity is judged with.
-void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds);
+// One flag per score of the registry (validation/scores.h): --err-max, --srf-min, ..., the
+// thresholds validity is judged with.
+void AddThresholdFlags(CLI::App* command, CriteriaOptions& criteria);
 
 // --allow-path DIR (repeatable): a folder outside the scene's own from which its data files may
 // be read.

@@ -27,7 +27,7 @@ void Draw(const MapFlags& f) {
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
   MapOptions options;
-  options.metric = *MapMetricFromString(f.metric);
+  options.metric = f.metric;
   options.y = *MapAxisFromString(f.y);
   if (f.r_ftrunc > 0.0) options.r_ftrunc = f.r_ftrunc;
   const std::string out = !f.out.empty() ? f.out
@@ -47,9 +47,10 @@ void AddMapCommand(CLI::App& app) {
       "R_ftrunc or dt/dt_sharp, with the derived boundary and the paper's rules");
   map->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   AddDatabaseFlag(map, flags->database_path);
-  map->add_option("--metric", flags->metric, "what the colour shows")
+  map->add_option("--metric", flags->metric,
+                  "what the colour shows: a score, the outcome or the CPU time")
       ->capture_default_str()
-      ->check(CLI::IsMember({"err", "srf", "cost", "status"}));
+      ->check(CLI::IsMember(MapMetrics()));
   map->add_option("--y", flags->y, "vertical axis: truncation or time step")
       ->capture_default_str()
       ->check(CLI::IsMember({"rftrunc", "dt"}));

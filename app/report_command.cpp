@@ -53,8 +53,8 @@ std::optional<PointFigure> DrawFig3(const ReportContext& ctx, const StudySpec& s
   CreateOutputDirectory(dir);
   WriteComparisonCsv(r, dir);
   return PointFigure{
-      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir), r.err,
-      r.srf};
+      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir),
+      r.scores};
 }
 
 std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::string& json) {

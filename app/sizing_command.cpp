@@ -16,7 +16,7 @@
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
-#include "views/query_output.h"
+#include "formats/table_output.h"
 #include "views/sizing_plots.h"
 #include "views/sizing_tables.h"
 
@@ -56,7 +56,7 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   if (s.superseded > 0) {
     fmt::print("  {} stored members the study file no longer has: not counted\n", s.superseded);
   }
-  WriteQueryResult(HottestZoneTable(s, true), QueryFormat::kTable, std::cout);
+  WriteTable(HottestZoneTable(s, true), TableFormat::kTable, std::cout);
   for (const GroupSizing& g : s.groups) {
     const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
     const WidthScaling scaling = MeanWidthScaling(forces, s.options);
@@ -80,7 +80,7 @@ void Size(const SizingFlags& f) {
   if (f.format == "table") {
     PrintTable(sizing, stored);
   } else {
-    WriteQueryResult(ZoneTable(sizing), *QueryFormatFromString(f.format), std::cout);
+    WriteTable(ZoneTable(sizing), *TableFormatFromString(f.format), std::cout);
   }
   if (f.out.empty()) return;
   CreateOutputDirectory(f.out);
@@ -88,7 +88,7 @@ void Size(const SizingFlags& f) {
        {std::pair{"sizing_hottest.csv", HottestZoneTable(sizing, false)},
         std::pair{"sizing_zones.csv", ZoneTable(sizing)}}) {
     AtomicFile file(std::filesystem::path(f.out) / name);
-    WriteQueryResult(table, QueryFormat::kCsv, file.Stream());
+    WriteTable(table, TableFormat::kCsv, file.Stream());
     file.Commit();
   }
   const auto pictures = DrawSizingPictures(

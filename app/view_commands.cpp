@@ -13,11 +13,12 @@
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
-#include "views/advice.h"
+#include "formats/study_spec.h"
+#include "views/advice_summary.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
-#include "views/scene_advice.h"
+#include "views/scene_advice_summary.h"
 #include "views/scored_points.h"
 
 namespace shockmap {
@@ -151,7 +152,8 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
     }
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
-    const Advice a = Advise(StoredSpec(flags->database_path, study),
+    const StudySpec spec = StoredSpec(flags->database_path, study);
+    const Advice a = Advise(spec.problem, spec.scoring.window_s,
                             DeriveCriteria(points, flags->thresholds), points, flags->r_k);
     if (flags->json) {
       nlohmann::json j = AdviceToJson(a);

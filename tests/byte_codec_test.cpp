@@ -29,7 +29,11 @@ CanonicalStudy::Outcome ScoredOutcome() {
   s.err = 0.25;
   s.n_modes = 12;
   s.steps = 123456789012;
-  s.first_shock = ShockColumns{1e-3, 2e-2, 150.0, 1e-4, 3};
+  s.first_shock_start_s = 1e-3;
+  s.first_shock_impulse_n_s = 2e-2;
+  s.first_shock_peak_n = 150.0;
+  s.first_shock_duration_s = 1e-4;
+  s.first_shock_rebounds = 3;
   s.shocks_json = R"([{"rebounds":3}])";
   s.srf_definition = "reference_window";
   return {RunStatus::kOk, "message", s};
@@ -50,9 +54,9 @@ TEST(ByteCodec, CanonicalOutcomeComesBackFieldForField) {
   EXPECT_FALSE(got.score->srf.has_value());
   EXPECT_EQ(got.score->n_modes, 12);
   EXPECT_EQ(got.score->steps, 123456789012);
-  ASSERT_TRUE(got.score->first_shock.has_value());
-  EXPECT_EQ(got.score->first_shock->rebounds, 3);
-  EXPECT_EQ(got.score->first_shock->peak_n, 150.0);
+  EXPECT_EQ(got.score->first_shock_rebounds, 3);
+  EXPECT_EQ(got.score->first_shock_peak_n, 150.0);
+  EXPECT_EQ(got.score->first_shock_duration_s, 1e-4);
   EXPECT_EQ(got.score->shocks_json, sent.score->shocks_json);
   EXPECT_EQ(got.score->srf_definition, "reference_window");
 }

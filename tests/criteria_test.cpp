@@ -89,7 +89,7 @@ TEST_F(QuickStudyCriteria, CorruptedScoreIsCaughtAndNamed) {
   const std::string copy = db_ + ".corrupt.db";
   std::filesystem::copy_file(db_, copy, std::filesystem::copy_options::overwrite_existing);
   // The most truncated, finest-step point at the stiffest R_k meets every criterion.
-  const QueryResult target = RunReadOnlyQuery(
+  const Table target = RunReadOnlyQuery(
       copy,
       "SELECT point_id FROM results WHERE status = 'ok' ORDER BY r_k DESC, r_ftrunc DESC, "
       "dt_requested_s / dt_sharp_s ASC LIMIT 1");
@@ -117,8 +117,19 @@ TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
     for (int j = 0; j <= 40; ++j) {
       const double r_ftrunc = std::pow(10.0, 0.1 * j);
       const bool pass = r_ftrunc >= 2.0 * std::sqrt(r_k);
-      points.push_back({++id, r_k, r_ftrunc, RunStatus::kOk, pass ? 0.01 : 0.5, pass ? 0.99 : 0.5,
-                        1e-5, 1e-4, 1e-4, 1e-3, 10, 1000});
+      ScoredPoint p;
+      p.point_id = ++id;
+      p.r_k = r_k;
+      p.r_ftrunc = r_ftrunc;
+      p.status = RunStatus::kOk;
+      p.scores.Set("err", pass ? 0.01 : 0.5);
+      p.scores.Set("srf", pass ? 0.99 : 0.5);
+      p.dt_s = 1e-5;
+      p.dt_sharp_s = p.dt_paper_s = 1e-4;
+      p.wall_s = 1e-3;
+      p.cpu_s = 10;
+      p.n_modes = 1000;
+      points.push_back(p);
     }
   }
   const ValidityCriteria c = DeriveCriteria(points, {});

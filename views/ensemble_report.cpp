@@ -57,8 +57,8 @@ std::string Agreement(const EnsembleSizing& s) {
 }
 
 // The means over members of every zone's impact statistics; no rows when none were streamed.
-QueryResult ImpactTable(const EnsembleSizing& s) {
-  QueryResult t;
+Table ImpactTable(const EnsembleSizing& s) {
+  Table t;
   t.columns = {"state",
                "setting",
                "zone",
@@ -79,14 +79,14 @@ QueryResult ImpactTable(const EnsembleSizing& s) {
                         static_cast<std::int64_t>(z.members), m.impacts_per_s,
                         m.rebounds_per_impact, m.mean_impact_duration_s, m.contact_time_fraction,
                         m.mean_force_n, m.rms_force_n, m.impulse_n_s,
-                        m.wear_work_rate_w ? QueryCell(*m.wear_work_rate_w) : QueryCell()});
+                        m.wear_work_rate_w ? TableCell(*m.wear_work_rate_w) : TableCell()});
     }
   }
   return t;
 }
 
 std::string Impacts(const EnsembleSizing& s) {
-  const QueryResult table = ImpactTable(s);
+  const Table table = ImpactTable(s);
   if (table.rows.empty()) {
     return "<p>No member streamed impact statistics (the study file has no "
            "<code>impact_statistics</code>).</p>\n";

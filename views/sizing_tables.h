@@ -12,8 +12,8 @@
 
 namespace shockmap {
 
-QueryResult HottestZoneTable(const EnsembleSizing& sizing, bool compact);
-QueryResult ZoneTable(const EnsembleSizing& sizing);
+Table HottestZoneTable(const EnsembleSizing& sizing, bool compact);
+Table ZoneTable(const EnsembleSizing& sizing);
 
 // One line per setting other than the refined one, per state: how many zones agree with the
 // refined setting, how many do not, how many are undecided, and what the hottest zone does.
