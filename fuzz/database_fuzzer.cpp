@@ -6,7 +6,7 @@
 // one stored blob or text cell through SQLite, as SQLite's own dbfuzz does, so that mutations
 // reach the checks of stored rows and not only the page parser. The corpus must be at the
 // current schema version (readers refuse an older file, so every input would stop at the
-// schema check): a new migration is applied to it too, e.g. with the sqlite3 shell.
+// schema check): a new migration is applied to it too, by scripts/migrate-fuzz-corpus.
 
 #include <sqlite3.h>
 #include <unistd.h>
