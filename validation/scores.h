@@ -30,14 +30,14 @@ struct ScoringInput {
   // The reference displacement's spectrum with `psd` over [0, end_s] when it was computed once
   // for every run scored against it (compare/reference_run.h), or null.
   const PowerSpectrum* reference_spectrum = nullptr;
-  PsdOptions psd;
+  PsdOptions psd{};
   double end_s = 0.0;
   const UniformSignal& force;
   const std::vector<Shock>& shocks;
   const UniformSignal& reference_force;
   const std::vector<Shock>& reference_shocks;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
-  ShockSegmentationOptions segmentation;
+  ShockSegmentationOptions segmentation{};
 };
 
 // Which values of a score are better: smaller ones (its threshold is the largest acceptable
