@@ -90,7 +90,7 @@ void CheckMapCells(const Place& at) {
       "<a href=\"(points/point_(\\d+)\\.html)\"><rect class=\"cell\"[^>]* data-rk=\"([^\"]+)\" "
       "data-rftrunc=\"([^\"]+)\" data-dt=\"[^\"]+\" data-dt-ratio=\"([^\"]+)\" "
       "data-err=\"([^\"]+)\" "
-      "data-srf=\"([^\"]+)\" data-status=\"([^\"]+)\"");
+      "data-srf=\"([^\"]+)\" (?:data-[a-z_]+=\"[^\"]+\" )*data-status=\"([^\"]+)\"");
   int checked = 0;
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), cell); it != std::sregex_iterator();
        ++it, ++checked) {
