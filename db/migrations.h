@@ -445,6 +445,43 @@ LEFT JOIN runs ru ON ru.run_id = p.run_id;
     R"sql(
 UPDATE ensemble_members SET reference_key = state;
 )sql",
+    // 9 -> 10: the peak-force ratio of the first shock (validation/scores.h, "pfr"), a score of
+    // both kinds scored against a reference, at the end of their results views. Points stored
+    // before have none until computed again.
+    R"sql(
+ALTER TABLE scores ADD COLUMN pfr REAL;
+ALTER TABLE scene_points ADD COLUMN pfr REAL;
+DROP VIEW scene_params;
+DROP VIEW results;
+DROP VIEW scene_results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, p.pfr
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
 };
 
 inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));

@@ -44,7 +44,7 @@ inline constexpr Column<PointParameters> kPointParameterColumns[] = {
 // the paper's problem carries is an optional real column named after it.
 struct ScoreRow {
   std::int64_t reference_id = 0;
-  std::optional<double> err, srf;
+  std::optional<double> err, srf, pfr;
   int n_modes = 0, n_elements = 0, n_dofs = 0;
   double dt_requested_s = 0.0, dt_used_s = 0.0, dt_paper_s = 0.0, dt_sharp_s = 0.0;
   std::int64_t steps = 0;
@@ -63,6 +63,8 @@ inline constexpr Column<ScoreRow> kScoreColumns[] = {
      "the row of `reference_runs` it was scored against"},
     {"err", &ScoreRow::err, "", "Err, paper eq. 8 (NULL when not scored)"},
     {"srf", &ScoreRow::srf, "", "SRf, paper eq. 9 (NULL when not scored)"},
+    {"pfr", &ScoreRow::pfr, "",
+     "peak-force ratio of the first shock, min/max as SRf (NULL when not scored; schema 10)"},
     {"n_modes", &ScoreRow::n_modes, "", "modes kept"},
     {"n_elements", &ScoreRow::n_elements, "", "FE elements"},
     {"n_dofs", &ScoreRow::n_dofs, "", "unknowns"},

@@ -25,7 +25,7 @@ inline constexpr Column<ScenePointParameters> kScenePointParameterColumns[] = {
 // column named after it.
 struct SceneScoreRow {
   std::int64_t reference_id = 0;
-  std::optional<double> err, srf;
+  std::optional<double> err, srf, pfr;
   int coordinates = 0, zones = 0;
   double dt_used_s = 0.0, dt_paper_s = 0.0, dt_sharp_s = 0.0;
   std::int64_t steps = 0;
@@ -41,6 +41,8 @@ inline constexpr Column<SceneScoreRow> kSceneScoreColumns[] = {
      "the row of `scene_references` it was scored against"},
     {"err", &SceneScoreRow::err, "", "Err (eq. 8) on the scored displacement"},
     {"srf", &SceneScoreRow::srf, "", "SRf (eq. 9) on the scored zone"},
+    {"pfr", &SceneScoreRow::pfr, "",
+     "peak-force ratio of the scored zone's first shock (NULL before schema 10)"},
     {"coordinates", &SceneScoreRow::coordinates, "", "modal coordinates of the model"},
     {"zones", &SceneScoreRow::zones, "", "contact zones of the model"},
     {"dt_used_s", &SceneScoreRow::dt_used_s, "s", "time step used"},

@@ -812,6 +812,37 @@ TEST(ScoreRegistryTest, ThresholdsJudgeInTheScoresDirection) {
   }
 }
 
+// PFr: min / max of the first shocks' peak forces, whatever the later shocks and the impulses.
+TEST(ScoreRegistryTest, PfrIsTheRatioOfTheFirstShocksPeakForces) {
+  const TwoRuns runs;
+  ASSERT_EQ(runs.shocks.size(), 1u);  // Both pulses within the rest duration: one shock.
+  ASSERT_EQ(runs.reference_shocks.size(), 1u);
+  const ScoreValues scores = ComputeScores(runs.Input(SrfDefinition::kFirstShock));
+  ASSERT_TRUE(scores["pfr"].has_value());
+  EXPECT_NEAR(*scores["pfr"], 600.0 / 800.0, 1e-4);  // The half-sines' peaks, as sampled.
+  EXPECT_EQ(*scores["pfr"], runs.reference_shocks[0].peak_force_n / runs.shocks[0].peak_force_n);
+  const ScoreDefinition& pfr = *FindScore("pfr");
+  EXPECT_EQ(pfr.ThresholdKey(), "pfr_min");
+  EXPECT_FALSE(pfr.default_threshold.has_value());
+  // Nothing to compare without a shock on either side; 0 when one side has none.
+  const std::vector<Shock> none;
+  const UniformSignal quiet{0.0, 1e-5, std::vector<double>(3001, 0.0)};
+  EXPECT_EQ(pfr.compute(ScoringInput{.displacement = runs.displacement,
+                                     .reference_displacement = runs.reference_displacement,
+                                     .force = quiet,
+                                     .shocks = none,
+                                     .reference_force = quiet,
+                                     .reference_shocks = none}),
+            std::nullopt);
+  EXPECT_EQ(pfr.compute(ScoringInput{.displacement = runs.displacement,
+                                     .reference_displacement = runs.reference_displacement,
+                                     .force = quiet,
+                                     .shocks = none,
+                                     .reference_force = runs.reference_force,
+                                     .reference_shocks = runs.reference_shocks}),
+            std::optional<double>(0.0));
+}
+
 TEST(ScoreRegistryTest, ScoreValuesHoldAValueOrNone) {
   ScoreValues values;
   EXPECT_FALSE(values["err"].has_value());

@@ -21,6 +21,15 @@ std::optional<double> Srf(const ScoringInput& in) {
                              in.reference_shocks, in.segmentation, in.end_s);
 }
 
+// PFr: the ratio of the first shocks' peak forces, the force a pin is sized with, read as SRf
+// reads impulses (paper eq. 9): min / max, nothing when neither run has a shock, 0 when one has.
+std::optional<double> Pfr(const ScoringInput& in) {
+  if (in.shocks.empty() && in.reference_shocks.empty()) return std::nullopt;
+  if (in.shocks.empty() || in.reference_shocks.empty()) return 0.0;
+  const double a = in.shocks.front().peak_force_n, b = in.reference_shocks.front().peak_force_n;
+  return std::max(a, b) > 0.0 ? std::min(a, b) / std::max(a, b) : 1.0;
+}
+
 constexpr ScoreDefinition kScores[] = {
     {.name = "err",
      .label = "Err",
@@ -48,6 +57,18 @@ constexpr ScoreDefinition kScores[] = {
      .map_low = 0.5,
      .map_high = 1.0,
      .compute = Srf},
+    {.name = "pfr",
+     .label = "PFr",
+     .source = "eq. 9 on peak forces",
+     .meaning = "peak-force ratio of the first shock, the sizing force",
+     .better = Better::kLarger,
+     .default_threshold = std::nullopt,  // Judges only when a threshold is given.
+     .threshold_low = 0.0,
+     .threshold_high = 1.0,
+     .required = false,
+     .map_low = 0.5,
+     .map_high = 1.0,
+     .compute = Pfr},
 };
 
 }  // namespace
