@@ -1,8 +1,5 @@
 #include "app/flag_checks.h"
 
-#include <fmt/format.h>
-
-#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -12,7 +9,6 @@
 
 #include "db/study_database.h"
 #include "formats/scene_file.h"
-#include "validation/validity_criteria.h"
 
 namespace shockmap {
 
@@ -54,20 +50,6 @@ void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
     }
     database_path = variable;
   });
-}
-
-void AddThresholdFlags(CLI::App* command, CriteriaOptions& criteria) {
-  for (const ScoreDefinition& score : Scores()) {
-    std::string key = score.ThresholdKey();
-    std::ranges::replace(key, '_', '-');
-    const std::string name(score.name);
-    CLI::Option* flag = command->add_option_function<double>(
-        "--" + key, [&criteria, name](double v) { criteria.thresholds[name] = v; },
-        score.ThresholdMeaning() + " (" + std::string(score.source) + ")" +
-            (score.default_threshold ? "" : "; none by default: the score does not judge"));
-    if (score.default_threshold) flag->default_str(fmt::format("{:g}", *score.default_threshold));
-    flag->check(FiniteIn(score.threshold_low, false, score.threshold_high));
-  }
 }
 
 void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {

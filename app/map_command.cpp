@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/flag_checks.h"
+#include "app/thresholds.h"
 #include "db/study_database.h"
 #include "formats/output_file.h"
 #include "views/scored_points.h"
@@ -18,7 +19,7 @@ struct MapFlags {
   std::string metric = "err";
   std::string y = "rftrunc";
   double r_ftrunc = 0.0;
-  CriteriaOptions criteria;
+  ThresholdFlags thresholds;
   std::string out;
 };
 
@@ -33,7 +34,9 @@ void Draw(const MapFlags& f) {
   const std::string out = !f.out.empty() ? f.out
                                          : "out/maps/" + study + "_" + f.metric +
                                                (options.y == MapAxis::kDt ? "_dt" : "") + ".png";
-  DrawValidityMap(study, points, DeriveCriteria(points, f.criteria), options, out);
+  DrawValidityMap(study, points,
+                  DeriveCriteria(points, ThresholdsFor(f.thresholds, f.database_path, study)),
+                  options, out);
   std::cout << "map written to " << out << '\n';
 }
 
@@ -57,7 +60,7 @@ void AddMapCommand(CLI::App& app) {
   map->add_option("--rftrunc", flags->r_ftrunc,
                   "truncation shown by --y dt (default: the largest studied)")
       ->check(FiniteAbove(1.0, false));
-  AddThresholdFlags(map, flags->criteria);
+  AddThresholdFlags(map, flags->thresholds);
   map->add_option("--out", flags->out,
                   "image file, .png or .svg (default: out/maps/STUDY_METRIC.png)");
   map->callback([flags] {
