@@ -75,12 +75,15 @@ struct FrictionState {
   double anchor_m = 0.0;  // s0: the slip at which the tangential spring is relaxed.
   double force_n = 0.0;   // The latest tangential force on side a, along the zone's tangent.
   bool sliding = false;   // The latest force is mu N, the anchor following.
+  // The work the slider dissipated in the latest update, -F (s0 - s0_before) (J): the energy
+  // the spring did not store of the structure's work -F ds, F^2 / (2 k_t) following N included.
+  double slid_work_j = 0.0;
 };
 
 // The tangential force on side a along the tangent (N) at slip s (m) and slip rate s' (m/s)
 // under the normal force N >= 0, the state updated: an elastic trial -k_t (s - s0) - c_t s',
 // kept while within the limit (mu_s N sticking, mu N sliding), else mu N along the trial with
-// the anchor moved to s + F / k_t (a return mapping).
+// the anchor moved to s + F / k_t (a return mapping), the slider's work recorded.
 inline double FrictionForce(const FrictionLaw& law, double normal_force_n, double slip_m,
                             double slip_rate_m_s, FrictionState& state) {
   const double trial = -law.tangential_stiffness_n_per_m * (slip_m - state.anchor_m) -
@@ -89,10 +92,13 @@ inline double FrictionForce(const FrictionLaw& law, double normal_force_n, doubl
   if (std::abs(trial) <= limit) {
     state.sliding = false;
     state.force_n = trial;
+    state.slid_work_j = 0.0;
   } else {
     state.sliding = true;
     state.force_n = std::copysign(law.coefficient * normal_force_n, trial);
+    const double anchor_before = state.anchor_m;
     state.anchor_m = slip_m + state.force_n / law.tangential_stiffness_n_per_m;
+    state.slid_work_j = -state.force_n * (state.anchor_m - anchor_before);
   }
   return state.force_n;
 }
@@ -103,20 +109,13 @@ inline double FrictionEnergy(const FrictionLaw& law, const FrictionState& state,
   return 0.5 * law.tangential_stiffness_n_per_m * stretch * stretch;
 }
 
-// The power the friction dissipates (W) in the state of the latest force, at slip rate s',
-// normal force N and its rate N': sticking, the damper's c_t s'^2; sliding, the power taken
-// from the structure, -F s', less the rate of the energy the spring holds, F^2 / (2 k_t) with
-// F = +-mu N: (F^2 / (k_t N)) N'.
+// The power friction dissipates over an update of dt_s at slip rate s' (W): the slider's work
+// over the step, and while sticking the damper's c_t s'^2.
 inline double FrictionDissipatedPower(const FrictionLaw& law, const FrictionState& state,
-                                      double slip_rate_m_s, double normal_force_n,
-                                      double normal_force_rate_n_s) {
-  if (!state.sliding) return law.tangential_damping_n_s_per_m * slip_rate_m_s * slip_rate_m_s;
-  double p = -state.force_n * slip_rate_m_s;
-  if (normal_force_n > 0.0) {
-    p -= state.force_n * state.force_n * normal_force_rate_n_s /
-         (law.tangential_stiffness_n_per_m * normal_force_n);
-  }
-  return p;
+                                      double dt_s, double slip_rate_m_s) {
+  const double damper =
+      state.sliding ? 0.0 : law.tangential_damping_n_s_per_m * slip_rate_m_s * slip_rate_m_s;
+  return state.slid_work_j / dt_s + damper;
 }
 
 // A contact's laws: the normal one, and friction when the zone declares it.

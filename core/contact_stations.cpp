@@ -260,10 +260,12 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
   }
 }
 
-void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                                 Eigen::VectorXd& a) {
   Evaluate(x, displacement_);
   ++step_;
+  dt_s_ = t_s - t_s_;
+  t_s_ = t_s;
   // Plain pointers: the loop is the step's hottest, and the stores into a must not make the
   // compiler reload the arrays.
   const int* const slot_a = slot_a_.data();
@@ -291,6 +293,7 @@ void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd&
     n_closed += static_cast<int>(penetration > 0.0);
   }
   if (!power_.empty()) ApplyPowerLaws();
+  friction_power_w_ = 0.0;
   if (frictions_.empty()) {
     ProjectClosed<false>(n_closed, v, a);
   } else {
@@ -340,13 +343,21 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
 
 double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {
   Rubbing& r = frictions_[friction_of_[zone]];
-  VelocityAt(slot_a_[zone], v);
-  VelocityAt(slot_b_[zone], v);
   const double slip = Tangential(zone, displacement_);
   // A contact closing (not closed at the step before): its spring starts relaxed, sticking.
   if (r.closed_step == 0 || r.closed_step + 1 != step_) r.state = {slip, 0.0, false};
   r.closed_step = step_;
-  return FrictionForce(r.law, f, slip, Tangential(zone, velocity_), r.state);
+  // The slip rate enters through the tangential damper only: evaluated only with one.
+  const double rate = r.law.tangential_damping_n_s_per_m != 0.0 ? SlipRate(zone, v) : 0.0;
+  const double force = FrictionForce(r.law, f, slip, rate, r.state);
+  if (dt_s_ > 0.0) friction_power_w_ += FrictionDissipatedPower(r.law, r.state, dt_s_, rate);
+  return force;
+}
+
+double ContactStations::SlipRate(int zone, const Eigen::VectorXd& v) {
+  VelocityAt(slot_a_[zone], v);
+  VelocityAt(slot_b_[zone], v);
+  return Tangential(zone, velocity_);
 }
 
 double ContactStations::TangentialForce(int zone) const {
@@ -402,18 +413,12 @@ double ContactStations::AddDampingPower(const Eigen::VectorXd& x, const Eigen::V
     const NormalLaw& law = laws_[i].normal;
     p += (law.Force(d, rate) - law.ElasticForce(d)) * rate;
   }
-  for (std::size_t i = 0; i < force_.size(); ++i) {
-    const int j = friction_of_[i];
-    if (j < 0 || frictions_[j].closed_step != step_) continue;
-    const int zone = static_cast<int>(i);
-    const double d = NormalAt(zone, x) - gap_[i];
-    if (d <= 0.0) continue;
-    const double rate = NormalAt(zone, v);
-    const NormalLaw& law = laws_[i].normal;
-    p += FrictionDissipatedPower(frictions_[j].law, frictions_[j].state, TangentialAt(zone, v),
-                                 law.Force(d, rate), law.TangentStiffness(d) * rate);
-  }
-  return p;
+  return AddFrictionPower(x, v, p);
+}
+
+double ContactStations::AddFrictionPower(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*v*/,
+                                         double p) const {
+  return p + friction_power_w_;
 }
 
 std::vector<double> ContactStations::BoundStiffnesses() const {

@@ -52,7 +52,10 @@ class ContactStations {
   // F = max(0, k d^p + c d') (d' from v, evaluated only at the stations of closed damped or
   // rubbing zones, once per station and step), and each closed zone's force, with its friction
   // force, added to a on both beams' modes. Friction states advance: one call per step.
-  void AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& a);
+  // t_s: the time of the state, whose difference from the previous call's is the step the
+  // friction's work is spread over.
+  void AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                 Eigen::VectorXd& a);
   // The normal force of each zone (N, >= 0) in the last AddForces.
   std::span<const double> Forces() const { return force_; }
   // A zone's tangential force on side a along t in the last AddForces (0 when open or without
@@ -74,8 +77,8 @@ class ContactStations {
   double ContactEnergy(const Eigen::VectorXd& x) const;
   // p plus the power taken out by contact damping at (x, v): the terms (F - F_e) d' of the
   // closed damped zones added to p one by one, in zone order (F_e the law's elastic force), then
-  // the power friction dissipates in the zones rubbing in the last AddForces
-  // (FrictionDissipatedPower).
+  // the power friction dissipated over the step the last AddForces solved
+  // (FrictionDissipatedPower: x and v are the state that step reached).
   double AddDampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double p) const;
   bool AnyDamping() const { return !damped_.empty() || !frictions_.empty(); }
   // Each zone's stiffness in the sharp bound: its normal law's BoundStiffness().
@@ -112,6 +115,12 @@ class ContactStations {
   // The closed zones' damping, friction (when kFriction) and projection, in zone order.
   template <bool kFriction>
   void ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eigen::VectorXd& a);
+  // p plus the power friction dissipated over the step the last AddForces solved: its sliders'
+  // work over that step, and its dampers' power at the predicted velocity (x and v, the state
+  // that step reached, are not read again).
+  double AddFrictionPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double p) const;
+  // t . (v_a - v_b) at v, the stations' velocities evaluated once per step.
+  double SlipRate(int zone, const Eigen::VectorXd& v);
   // The friction force of a closed zone under normal force f, its state advanced.
   double RubbingForce(int zone, double f, const Eigen::VectorXd& v);
   // A slot's (y, z) values at a state, from its row (the base: zero).
@@ -144,6 +153,8 @@ class ContactStations {
   std::vector<int> closed_;  // The zones closed in this step, in zone order.
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
+  double friction_power_w_ = 0.0;  // Dissipated by friction in the last AddForces (W).
+  double t_s_ = 0.0, dt_s_ = 0.0;  // The last AddForces' time and step.
 };
 
 }  // namespace shockmap

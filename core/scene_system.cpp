@@ -29,7 +29,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
   (void)beta_dt2;
   NegativeProduct(omega_squared_, x_pred, a);
   for (const auto& load : loads_) a.noalias() += load.Amplitude(t_s) * load.shape;
-  contacts_.AddForces(x_pred, v_pred, a);
+  contacts_.AddForces(t_s, x_pred, v_pred, a);
   if (modal_damping_) {
     const auto& d = *modal_damping_;
     if (gamma_dt != divisor_gamma_dt_) {

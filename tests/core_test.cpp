@@ -993,7 +993,7 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
     v[i] = 0.2 * std::cos(0.5 + 1.7 * i);
   }
   Eigen::VectorXd a = Eigen::VectorXd::Zero(12), expected_a = a, stiffness = a, expected_k = a;
-  stations.AddForces(x, v, a);
+  stations.AddForces(0.0, x, v, a);
   stations.AddClosedStiffness(x, stations.BoundStiffnesses(), stiffness);
   int closed = 0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
