@@ -22,7 +22,9 @@ CodeAsterImpactCounter::CodeAsterImpactCounter(const ImpactCounting& counting, d
       dt_s_(dt_s),
       friction_(friction),
       records_(records),
-      look_ahead_(std::max<std::int64_t>(1, std::llround(counting.rest_duration_s / dt_s))),
+      // Capped far beyond any run's steps, so that the rounding stays defined.
+      look_ahead_(
+          std::max<std::int64_t>(1, std::llround(std::min(counting.rest_duration_s / dt_s, 1e15)))),
       first_(SampleIndex(counting.window_start_s, dt_s)),
       last_(SampleIndex(counting.window_end_s, dt_s)) {}
 

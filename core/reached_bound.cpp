@@ -13,22 +13,22 @@ ReachedBound CheckReachedBound(const SceneModalSystem& system) {
   const std::vector<double> reached = contacts.LargestPenetrations();
   std::vector<double> stiffness = contacts.BoundStiffnesses();
   bool any_power_law = false;
-  double worst = 1.0;
+  double deepest = 0.0;  // The largest ratio of a zone's penetration to its bound's.
   for (std::size_t z = 0; z < reached.size(); ++z) {
     const NormalLaw& law = system.Zones()[z].law.normal;
     if (law.IsLinear()) continue;
     any_power_law = true;
     const double depth = std::max(reached[z], law.bound_penetration_m);
     stiffness[z] = law.TangentStiffness(depth);
-    if (reached[z] > law.bound_penetration_m && reached[z] / law.bound_penetration_m > worst) {
-      worst = reached[z] / law.bound_penetration_m;
+    if (reached[z] / law.bound_penetration_m > deepest) {
+      deepest = reached[z] / law.bound_penetration_m;
       b.deepest_zone = static_cast<int>(z);
       b.largest_penetration_m = reached[z];
       b.bound_penetration_m = law.bound_penetration_m;
     }
   }
   if (!any_power_law) return b;
-  b.exceeded = b.deepest_zone >= 0;
+  b.exceeded = deepest > 1.0;
   b.dt_sharp_reached_s = 2.0 / std::sqrt(SharpOmegaSquared(system, stiffness));
   return b;
 }

@@ -11,8 +11,8 @@
 namespace shockmap {
 
 struct ReachedBound {
-  // The zone (index) that went furthest beyond its bound penetration, relative to it, and its
-  // largest penetration (m), or -1 when every power-law zone stayed within its own.
+  // The power-law zone (index) that went deepest relative to its bound penetration, its largest
+  // penetration and its bound penetration (m); -1 when none closed.
   int deepest_zone = -1;
   double largest_penetration_m = 0.0;
   double bound_penetration_m = 0.0;

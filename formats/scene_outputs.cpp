@@ -164,12 +164,13 @@ Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
   }
   if (run.reached_bound) {
     const ReachedBound& b = *run.reached_bound;
+    const bool closed = b.deepest_zone >= 0;
     json["power_law_bound"] = {
         {"exceeded", b.exceeded},
         {"dt_sharp_at_reached_penetrations_s", b.dt_sharp_reached_s},
-        {"zone", b.exceeded ? Json(scene.zones[b.deepest_zone].name) : Json(nullptr)},
-        {"largest_penetration_m", b.exceeded ? Json(b.largest_penetration_m) : Json(nullptr)},
-        {"bound_penetration_m", b.exceeded ? Json(b.bound_penetration_m) : Json(nullptr)}};
+        {"deepest_zone", closed ? Json(scene.zones[b.deepest_zone].name) : Json(nullptr)},
+        {"largest_penetration_m", closed ? Json(b.largest_penetration_m) : Json(nullptr)},
+        {"bound_penetration_m", closed ? Json(b.bound_penetration_m) : Json(nullptr)}};
   }
   if (!run.max_contact_force_n.empty()) {
     const auto largest =
