@@ -229,12 +229,6 @@ double ContactStations::NormalAt(int zone, const Eigen::VectorXd& state) const {
   return ny * ua[0] + nz * ua[1] - ny * ub[0] - nz * ub[1];
 }
 
-double ContactStations::TangentialAt(int zone, const Eigen::VectorXd& state) const {
-  const auto ua = SlotAt(slot_a_[zone], state), ub = SlotAt(slot_b_[zone], state);
-  const double ny = normal_y_[zone], nz = normal_z_[zone];
-  return -nz * ua[0] + ny * ua[1] + nz * ub[0] - ny * ub[1];
-}
-
 void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
   if (velocity_step_[slot] == step_) return;
   velocity_step_[slot] = step_;
@@ -413,11 +407,7 @@ double ContactStations::AddDampingPower(const Eigen::VectorXd& x, const Eigen::V
     const NormalLaw& law = laws_[i].normal;
     p += (law.Force(d, rate) - law.ElasticForce(d)) * rate;
   }
-  return AddFrictionPower(x, v, p);
-}
-
-double ContactStations::AddFrictionPower(const Eigen::VectorXd& /*x*/, const Eigen::VectorXd& /*v*/,
-                                         double p) const {
+  // Friction's power was found by the solve of the step that reached (x, v).
   return p + friction_power_w_;
 }
 

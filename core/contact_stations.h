@@ -115,10 +115,6 @@ class ContactStations {
   // The closed zones' damping, friction (when kFriction) and projection, in zone order.
   template <bool kFriction>
   void ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eigen::VectorXd& a);
-  // p plus the power friction dissipated over the step the last AddForces solved: its sliders'
-  // work over that step, and its dampers' power at the predicted velocity (x and v, the state
-  // that step reached, are not read again).
-  double AddFrictionPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double p) const;
   // t . (v_a - v_b) at v, the stations' velocities evaluated once per step.
   double SlipRate(int zone, const Eigen::VectorXd& v);
   // The friction force of a closed zone under normal force f, its state advanced.
@@ -126,7 +122,6 @@ class ContactStations {
   // A slot's (y, z) values at a state, from its row (the base: zero).
   std::array<double, 2> SlotAt(int slot, const Eigen::VectorXd& state) const;
   double NormalAt(int zone, const Eigen::VectorXd& state) const;
-  double TangentialAt(int zone, const Eigen::VectorXd& state) const;
   void VelocityAt(int slot, const Eigen::VectorXd& v);
   // a += the forces (y, z) of one zone side on its slot's modes (nothing for the base).
   void AddToSlot(int slot, double force_y, double force_z, Eigen::VectorXd& a) const;
@@ -153,7 +148,7 @@ class ContactStations {
   std::vector<int> closed_;  // The zones closed in this step, in zone order.
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
-  double friction_power_w_ = 0.0;  // Dissipated by friction in the last AddForces (W).
+  double friction_power_w_ = 0.0;  // Friction's over the last AddForces' step (W).
   double t_s_ = 0.0, dt_s_ = 0.0;  // The last AddForces' time and step.
 };
 
