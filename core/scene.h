@@ -60,9 +60,9 @@ struct SceneZone {
   // the stability bound gives the zone).
   double stiffness_n_per_m = 0.0;
   double damping_n_s_per_m = 0.0;
-  double y_m = 0.0, z_m = 0.0;             // Where the zone sits in the cross-section (for maps).
-  std::optional<ScenePowerLaw> power_law;  // In place of the linear law.
-  std::optional<FrictionLaw> friction;
+  double y_m = 0.0, z_m = 0.0;               // Where the zone sits in the cross-section (for maps).
+  std::optional<ScenePowerLaw> power_law{};  // In place of the linear law.
+  std::optional<FrictionLaw> friction{};
 
   // The zone's laws as the models evaluate them.
   ContactLaw Law() const;
