@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "formats/output_file.h"
 #include "views/contact_force_map.h"
@@ -210,6 +211,16 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
                                  GnuplotQuoted(title), axis, plot));
 }
 
+// The sizing estimate of each zone's wear volume; nullopt unless every zone has one.
+std::optional<std::vector<double>> WearSizingValues(const GroupSizing& g) {
+  std::vector<double> values;
+  for (const ZoneSizing& z : g.zones) {
+    if (!z.wear) return std::nullopt;
+    values.push_back(z.wear->sizing.estimate);
+  }
+  return values;
+}
+
 }  // namespace
 
 std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
@@ -226,6 +237,15 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
     pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
                                          "(paper Fig. 5b)",
                                          g->state, q)});
+    if (const auto wear = WearSizingValues(*g)) {
+      const fs::path wear_map = folder / ("wear_map_" + FileNamePart(g->state) + ".png");
+      DrawContactForceMap(
+          scene, *wear, wear_map,
+          fmt::format("{} wear volume (m^3) of {} members, {}", q, g->members, g->state));
+      pictures.push_back({wear_map, fmt::format("{}: every zone coloured by the {} of its wear "
+                                                "volume over the scene's wear life",
+                                                g->state, q)});
+    }
     const std::string hottest = g->zones[g->hottest].name;
     const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
     pictures.push_back({Convergence(s, *g, forces, folder),
