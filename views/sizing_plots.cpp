@@ -233,7 +233,7 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
     for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
     const fs::path map = folder / ("map_" + FileNamePart(g->state) + ".png");
     DrawContactForceMap(scene, sizing, map,
-                        fmt::format("{} of {} members, {}", q, g->members, g->state));
+                        {fmt::format("{} of {} members, {}", q, g->members, g->state), "N"});
     pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
                                          "(paper Fig. 5b)",
                                          g->state, q)});
@@ -241,7 +241,7 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
       const fs::path wear_map = folder / ("wear_map_" + FileNamePart(g->state) + ".png");
       DrawContactForceMap(
           scene, *wear, wear_map,
-          fmt::format("{} wear volume (m^3) of {} members, {}", q, g->members, g->state));
+          {fmt::format("{} wear volume of {} members, {}", q, g->members, g->state), "m^3"});
       pictures.push_back({wear_map, fmt::format("{}: every zone coloured by the {} of its wear "
                                                 "volume over the scene's wear life",
                                                 g->state, q)});
