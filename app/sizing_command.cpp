@@ -71,9 +71,10 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   for (const std::string& line : AgreementLines(s)) fmt::print("  {}\n", line);
 }
 
-// The wear volume's sizing per state, setting and zone, when the members have one.
+// The most worn zone of each state and setting, when the members have wear volumes (every
+// zone with --format csv|json).
 void PrintWearTable(const EnsembleSizing& s) {
-  const Table table = WearTable(s, true);
+  const Table table = MostWornZoneTable(s);
   if (table.rows.empty()) {
     fmt::print(
         "study {}: no member has a wear volume (the scene has no wear law, or its zones "
@@ -82,8 +83,9 @@ void PrintWearTable(const EnsembleSizing& s) {
     return;
   }
   fmt::print(
-      "study {}: P{:g} of the wear volume over the scene's wear life per zone, {:g} % "
-      "intervals; Wilks' limit, the design value\n",
+      "study {}: P{:g} of the wear volume over the scene's wear life, the most worn zone of "
+      "each state and setting, {:g} % intervals; Wilks' limit, the design value (every zone: "
+      "--format csv|json)\n",
       s.study, 100 * s.options.quantile, 100 * s.options.confidence);
   WriteTable(table, TableFormat::kTable, std::cout);
 }
@@ -98,15 +100,15 @@ void Size(const SizingFlags& f) {
   if (f.format == "table") {
     f.wear ? PrintWearTable(sizing) : PrintTable(sizing, stored);
   } else {
-    WriteTable(f.wear ? WearTable(sizing, false) : ZoneTable(sizing),
-               *TableFormatFromString(f.format), std::cout);
+    WriteTable(f.wear ? WearTable(sizing) : ZoneTable(sizing), *TableFormatFromString(f.format),
+               std::cout);
   }
   if (f.out.empty()) return;
   CreateOutputDirectory(f.out);
   for (const auto& [name, table] :
        {std::pair{"sizing_hottest.csv", HottestZoneTable(sizing, false)},
         std::pair{"sizing_zones.csv", ZoneTable(sizing)},
-        std::pair{"sizing_wear.csv", WearTable(sizing, false)}}) {
+        std::pair{"sizing_wear.csv", WearTable(sizing)}}) {
     AtomicFile file(std::filesystem::path(f.out) / name);
     WriteTable(table, TableFormat::kCsv, file.Stream());
     file.Commit();
@@ -165,9 +167,9 @@ void AddSizingCommand(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));
   sizing->add_flag("--wear", flags->wear,
-                   "the wear volume's sizing per state, setting and zone (P of the volume over "
-                   "the scene's wear life, its interval, Wilks' limit, the mean) instead of the "
-                   "force's");
+                   "the wear volume's sizing instead of the force's (the quantile of the volume "
+                   "over the scene's wear life, its interval, Wilks' limit, the mean): the most "
+                   "worn zone per state and setting as a table, every zone as CSV or JSON");
   sizing->callback([flags] { Size(*flags); });
 }
 

@@ -98,7 +98,7 @@ std::string Impacts(const EnsembleSizing& s) {
 }
 
 std::string Wear(const EnsembleSizing& s) {
-  const Table table = WearTable(s, false);
+  const Table table = WearTable(s);
   if (table.rows.empty()) {
     return "<p>No member has a wear volume (the scene has no <code>wear</code> law, or its "
            "zones do not slide: it bends in one plane, or the study file has no "
