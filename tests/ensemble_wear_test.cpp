@@ -2,7 +2,8 @@
 // member zone's stored wear volume is Archard's law of its stored wear work rate over the
 // scene's life, friction's power stays inside the Coulomb cone, the listed impacts are the
 // zone's impacts one by one (their impulses sum to the zone's impulse), the wear sizing is the
-// statistics of the stored volumes, the impacts export as CSV, and a bad counting is refused.
+// statistics of the stored volumes, the impacts export as CSV (an ensemble's only), and a bad
+// counting is refused.
 
 #include <gtest/gtest.h>
 
@@ -154,6 +155,17 @@ TEST_F(EnsembleWearTest, ExportedImpactsAreTheStoredRows) {
   }
   EXPECT_NE(out.output.find(std::to_string(lines) + " impacts of study rubbing"), std::string::npos)
       << out.output;
+}
+
+TEST_F(EnsembleWearTest, ExportingImpactsOfAnotherKindIsRefusedWithExitCode2) {
+  const std::string db = (dir_ / "canonical.db").string(), csv = (dir_ / "none.csv").string();
+  std::filesystem::copy_file(
+      std::string(SHOCKMAP_SOURCE_DIR) + "/fuzz/corpus/database/canonical.db", db);
+  const auto out = RunShockmap("export impacts --db " + db + " --out " + csv);
+  EXPECT_EQ(out.exit_code, 2) << out.output;
+  EXPECT_NE(out.output.find("study canonical is not an ensemble study"), std::string::npos)
+      << out.output;
+  EXPECT_FALSE(std::filesystem::exists(csv));
 }
 
 TEST_F(EnsembleWearTest, WearSizingIsTheStatisticsOfTheStoredVolumes) {
