@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "compare/score_columns.h"
@@ -71,7 +72,7 @@ SceneScore ScoreSceneRun(const Scene& scene, const SceneRun& run,
   return out;
 }
 
-std::vector<EnsembleZoneRow> MemberZoneRows(const SceneRun& run) {
+std::vector<EnsembleZoneRow> MemberZoneRows(const Scene& scene, const SceneRun& run) {
   std::vector<EnsembleZoneRow> zones(run.max_contact_force_n.size());
   for (std::size_t i = 0; i < zones.size(); ++i) {
     EnsembleZoneRow& z = zones[i];
@@ -89,8 +90,34 @@ std::vector<EnsembleZoneRow> MemberZoneRows(const SceneRun& run) {
     z.rms_force_n = s.rms_force_n;
     z.impulse_n_s = s.impulse_n_s;
     if (s.wear_available) z.wear_work_rate_w = s.wear_work_rate_w;
+    if (scene.wear && s.wear_available)
+      z.wear_volume_m3 = ArchardWearVolume(*scene.wear, s.wear_work_rate_w);
+    if (std::isfinite(s.friction_power_w)) z.friction_power_w = s.friction_power_w;
   }
   return zones;
+}
+
+std::vector<EnsembleImpactRow> MemberImpactRows(const Scene& scene, const SceneRun& run) {
+  std::vector<EnsembleImpactRow> rows;
+  if (run.impact_statistics.empty()) return rows;
+  for (const int zone : scene.outputs.impact_table_zones) {
+    const auto& records = run.impact_statistics[static_cast<std::size_t>(zone)].records;
+    for (std::size_t k = 0; k < records.size(); ++k) {
+      const ImpactRecord& r = records[k];
+      EnsembleImpactRow& row = rows.emplace_back();
+      row.zone = zone;
+      row.impact = static_cast<std::int64_t>(k) + 1;
+      row.start_s = r.start_s;
+      row.duration_s = r.duration_s;
+      row.peak_force_n = r.peak_force_n;
+      row.peak_time_s = r.peak_time_s;
+      row.impulse_n_s = r.impulse_n_s;
+      if (std::isfinite(r.impact_speed_m_s)) row.impact_speed_m_s = r.impact_speed_m_s;
+      row.rebounds = r.contacts - 1;
+      row.truncated = r.truncated ? 1 : 0;
+    }
+  }
+  return rows;
 }
 
 }  // namespace shockmap

@@ -34,8 +34,13 @@ struct SceneScore {
 SceneScore ScoreSceneRun(const Scene& scene, const SceneRun& run,
                          const SceneReferenceRow& reference, const SceneScoringOptions& options);
 
-// A member's zone rows of a run that ended ok: its largest force per zone and, when streamed,
-// its impact statistics (the wear work rate where the scene carries the sliding).
-std::vector<EnsembleZoneRow> MemberZoneRows(const SceneRun& run);
+// A member's zone rows of a run of `scene` that ended ok: its largest force per zone and, when
+// streamed, its impact statistics (the wear work rate where the scene carries the sliding, the
+// wear volume over the scene's wear life where it has a wear law, the friction power where the
+// zone has friction).
+std::vector<EnsembleZoneRow> MemberZoneRows(const Scene& scene, const SceneRun& run);
+// The impacts of the zones the scene lists (outputs.impact_table_zones) in a run that ended ok,
+// in zone then time order; none when the run did not stream impact statistics.
+std::vector<EnsembleImpactRow> MemberImpactRows(const Scene& scene, const SceneRun& run);
 
 }  // namespace shockmap

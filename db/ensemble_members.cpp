@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 
 #include "db/corrupt_rows.h"
+#include "db/read_only_query.h"
 #include "db/stored_json.h"
 
 namespace shockmap {
@@ -18,6 +19,19 @@ void InsertZones(Connection& c, std::int64_t point_id, const std::vector<Ensembl
     insert.Reset();
     insert.Bind(1, point_id).Bind(2, static_cast<std::int64_t>(i));
     BindRecord(insert, 3, zones[i], kEnsembleZoneColumns);
+    insert.Run();
+  }
+}
+
+void InsertImpacts(Connection& c, std::int64_t point_id,
+                   const std::vector<EnsembleImpactRow>& impacts) {
+  Statement insert = c.Prepare("INSERT INTO ensemble_member_impacts(point_id, " +
+                               ColumnList(kEnsembleImpactColumns) + ") VALUES (?, " +
+                               Placeholders(std::size(kEnsembleImpactColumns)) + ")");
+  for (const EnsembleImpactRow& impact : impacts) {
+    insert.Reset();
+    insert.Bind(1, point_id);
+    BindRecord(insert, 2, impact, kEnsembleImpactColumns);
     insert.Run();
   }
 }
@@ -88,11 +102,13 @@ std::vector<StoredMember> ReadMembersNotOk(Connection& c, std::int64_t study_id)
 void WriteScore(Connection& c, std::int64_t point_id,
                 const std::optional<EnsembleMemberRow>& score) {
   c.Prepare("DELETE FROM ensemble_member_zones WHERE point_id = ?").Bind(1, point_id).Run();
+  c.Prepare("DELETE FROM ensemble_member_impacts WHERE point_id = ?").Bind(1, point_id).Run();
   Statement update = c.Prepare("UPDATE ensemble_members SET " +
                                Assignments(kEnsembleMemberColumns) + " WHERE point_id = ?");
   const int next = score ? BindRecord(update, 1, *score, kEnsembleMemberColumns)
                          : BindNulls(update, 1, kEnsembleMemberColumns);
   if (score) InsertZones(c, point_id, score->zones);
+  if (score) InsertImpacts(c, point_id, score->impacts);
   update.Bind(next, point_id).Run();
 }
 
@@ -200,6 +216,19 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   e.not_ok = ReadMembersNotOk(c, study_id);
   CheckEnsemble(c.Path(), study, e);
   return e;
+}
+
+Table EnsembleImpacts(const std::string& database_path, const std::string& study) {
+  return RunReadOnlyQuery(
+      database_path,
+      "SELECT p.point_id, p.state, p.setting_json, p.member, "
+      "json_extract(r.zones_json, '$[' || i.zone || '].name') AS zone_name, " +
+          ColumnList(kEnsembleImpactColumns, "i.") +
+          " FROM ensemble_member_impacts i JOIN ensemble_members p ON p.point_id = i.point_id "
+          "JOIN studies st ON st.study_id = p.study_id LEFT JOIN ensemble_references r ON "
+          "r.reference_id = p.reference_id WHERE st.name = ?1 AND p.status = 'ok' "
+          "ORDER BY p.point_id, i.zone, i.impact",
+      {study});
 }
 
 std::vector<std::string> EnsembleStudies(Connection& c) {

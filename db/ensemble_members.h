@@ -1,8 +1,8 @@
 #pragma once
-// The members and nominal runs of ensemble studies in the study database (schema version 6; the
-// points table is kEnsembleMembers of db/point_tables.h): written by the one StudyDatabase
-// writer, one transaction per call; read by the sizing view. The records and their columns are
-// in records/ensemble_records.h.
+// The members, their listed impacts and nominal runs of ensemble studies in the study database
+// (schema version 6; the points table is kEnsembleMembers of db/point_tables.h): written by the one
+// StudyDatabase writer, one transaction per call; read by the sizing view. The records and their
+// columns are in records/ensemble_records.h.
 
 #include <cstdint>
 #include <optional>
@@ -46,6 +46,10 @@ struct StoredEnsemble {
 };
 // Throws DbError when the study does not exist or is not an ensemble study.
 StoredEnsemble ReadEnsemble(Connection& c, const std::string& study);
+// Every impact stored for the study's computed members (the zones their scene lists), with the
+// member's point id, state, setting and index and the zone's name: one row per impact, by
+// member, zone and time. Throws DbError when the file is not a current shockmap database.
+Table EnsembleImpacts(const std::string& database_path, const std::string& study);
 // The names of the ensemble studies stored, in order of creation.
 std::vector<std::string> EnsembleStudies(Connection& c);
 

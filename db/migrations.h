@@ -482,6 +482,28 @@ LEFT JOIN scene_references r ON r.reference_id = p.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 CREATE VIEW scene_params AS SELECT * FROM scene_results;
 )sql",
+    // 10 -> 11: a member zone's Archard wear volume over the scene's wear life and its friction
+    // power, and one row per impact of the zones a member's scene lists
+    // (outputs.impact_statistics.impact_table); records/ensemble_records.h. Members stored before
+    // have none until computed again.
+    R"sql(
+ALTER TABLE ensemble_member_zones ADD COLUMN wear_volume_m3 REAL;
+ALTER TABLE ensemble_member_zones ADD COLUMN friction_power_w REAL;
+CREATE TABLE ensemble_member_impacts (
+  point_id         INTEGER NOT NULL REFERENCES ensemble_members(point_id),
+  zone             INTEGER NOT NULL,
+  impact           INTEGER NOT NULL,
+  start_s          REAL NOT NULL,
+  duration_s       REAL NOT NULL,
+  peak_force_n     REAL NOT NULL,
+  peak_time_s      REAL NOT NULL,
+  impulse_n_s      REAL NOT NULL,
+  impact_speed_m_s REAL,
+  rebounds         INTEGER NOT NULL,
+  truncated        INTEGER NOT NULL,
+  PRIMARY KEY (point_id, zone, impact)
+) WITHOUT ROWID;
+)sql",
 };
 
 inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));

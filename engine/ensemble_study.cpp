@@ -95,7 +95,8 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
                                             std::int64_t reference_id) const {
   Outcome out;
   try {
-    const SceneRun run = RunScene(MemberScene(spec_, point));
+    const Scene scene = MemberScene(spec_, point);
+    const SceneRun run = RunScene(scene);
     const RunSummary& s = run.result.summary;
     EnsembleMemberRow row;
     row.reference_id = reference_id;
@@ -106,7 +107,10 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
     row.wall_s = s.wall_s;
     row.cpu_s = s.cpu_s;
     row.max_energy_ratio = s.max_energy_ratio;
-    if (s.status == RunStatus::kOk) row.zones = MemberZoneRows(run);
+    if (s.status == RunStatus::kOk) {
+      row.zones = MemberZoneRows(scene, run);
+      row.impacts = MemberImpactRows(scene, run);
+    }
     out.status = s.status;
     out.message = s.message;
     out.score = std::move(row);
@@ -132,6 +136,9 @@ void EnsembleStudy::EncodeScore(const EnsembleMemberRow& score, ByteWriter& out)
   PutRecord(score, kEnsembleMemberColumns, out);
   out.Put(static_cast<std::uint64_t>(score.zones.size()));
   for (const EnsembleZoneRow& zone : score.zones) PutRecord(zone, kEnsembleZoneColumns, out);
+  out.Put(static_cast<std::uint64_t>(score.impacts.size()));
+  for (const EnsembleImpactRow& impact : score.impacts)
+    PutRecord(impact, kEnsembleImpactColumns, out);
 }
 
 EnsembleMemberRow EnsembleStudy::DecodeScore(ByteReader& in) const {
@@ -140,6 +147,10 @@ EnsembleMemberRow EnsembleStudy::DecodeScore(ByteReader& in) const {
   // A truncated message throws in GetRecord before the count is reached.
   for (std::uint64_t i = 0; i < zones; ++i) {
     score.zones.push_back(GetRecord<EnsembleZoneRow>(in, kEnsembleZoneColumns));
+  }
+  const auto impacts = in.Get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < impacts; ++i) {
+    score.impacts.push_back(GetRecord<EnsembleImpactRow>(in, kEnsembleImpactColumns));
   }
   return score;
 }

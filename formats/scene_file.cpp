@@ -769,29 +769,8 @@ std::vector<int> ZoneIndices(const Json& list, const std::string& file, const st
 // the zones whose impacts are listed one by one.
 void ParseImpactStatistics(JsonObjectReader& im, Scene& scene) {
   scene.outputs.impact_statistics = true;
-  ImpactCounting& c = scene.outputs.impact_counting;
-  c.rest_duration_s = im.RequiredNumber("rest_duration_s");
-  if (c.rest_duration_s < 0.0 || c.rest_duration_s > 100.0) {
-    im.Fail("rest_duration_s", "value " + Shown(Json(c.rest_duration_s)) +
-                                   " must lie in [0, 100] s (0: every "
-                                   "contact is an impact)");
-  }
-  c.force_threshold_n = InRange(im, "force_threshold_n", 0.0, 0.0, 1e15);
-  const std::string convention = im.String("convention", "shockmap");
-  if (convention != "shockmap" && convention != "code_aster") {
-    im.Fail("convention",
-            "\"" + convention + "\" is not a convention: use \"shockmap\" or \"code_aster\"");
-  }
-  c.convention =
-      convention == "code_aster" ? ImpactConvention::kCodeAster : ImpactConvention::kShockmap;
-  const double end_s = scene.solver.end_time_s;
-  std::tie(c.window_start_s, c.window_end_s) = Vector2(im, "window_s", {0.0, end_s}, false);
-  if (!(c.window_start_s >= 0.0 && c.window_start_s < c.window_end_s && c.window_end_s <= end_s)) {
-    im.Fail("window_s",
-            "[" + Shown(Json(c.window_start_s)) + ", " + Shown(Json(c.window_end_s)) +
-                "] s must lie inside the run, 0 <= start < end <= solver.end_time_s = " +
-                Shown(Json(end_s)));
-  }
+  scene.outputs.impact_counting =
+      ParseImpactCounting(im, scene.solver.end_time_s, "solver.end_time_s");
   if (const Json* listed = im.Get("impact_table")) {
     scene.outputs.impact_table_zones =
         ZoneIndices(*listed, im.File(), im.PathOf("impact_table"), scene);
@@ -856,6 +835,32 @@ void ParseWear(const Json& wear, const std::string& path, Scene& scene) {
 }
 
 }  // namespace
+
+ImpactCounting ParseImpactCounting(JsonObjectReader& im, double end_s,
+                                   const std::string& end_name) {
+  ImpactCounting c;
+  c.rest_duration_s = im.RequiredNumber("rest_duration_s");
+  if (c.rest_duration_s < 0.0 || c.rest_duration_s > 100.0) {
+    im.Fail("rest_duration_s", "value " + Shown(Json(c.rest_duration_s)) +
+                                   " must lie in [0, 100] s (0: every "
+                                   "contact is an impact)");
+  }
+  c.force_threshold_n = InRange(im, "force_threshold_n", 0.0, 0.0, 1e15);
+  const std::string convention = im.String("convention", "shockmap");
+  if (convention != "shockmap" && convention != "code_aster") {
+    im.Fail("convention",
+            "\"" + convention + "\" is not a convention: use \"shockmap\" or \"code_aster\"");
+  }
+  c.convention =
+      convention == "code_aster" ? ImpactConvention::kCodeAster : ImpactConvention::kShockmap;
+  std::tie(c.window_start_s, c.window_end_s) = Vector2(im, "window_s", {0.0, end_s}, false);
+  if (!(c.window_start_s >= 0.0 && c.window_start_s < c.window_end_s && c.window_end_s <= end_s)) {
+    im.Fail("window_s", "[" + Shown(Json(c.window_start_s)) + ", " + Shown(Json(c.window_end_s)) +
+                            "] s must lie inside the run, 0 <= start < end <= " + end_name + " = " +
+                            Shown(Json(end_s)));
+  }
+  return c;
+}
 
 Scene LoadScene(const std::string& path, const SceneFileAccess& access) {
   return ParseScene(ReadJsonFile(path), path, access);

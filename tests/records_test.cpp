@@ -80,6 +80,8 @@ std::map<std::string, ColumnFacts> DeclaredTables() {
                                   Declared(kEnsembleMemberColumns, true)})},
       {"ensemble_member_zones", Union({{"point_id INTEGER NOT NULL", "zone INTEGER NOT NULL"},
                                        Declared(kEnsembleZoneColumns)})},
+      {"ensemble_member_impacts",
+       Union({{"point_id INTEGER NOT NULL"}, Declared(kEnsembleImpactColumns)})},
       {"ensemble_references", Union({kReferenceBookkeeping, Declared(kEnsembleReferenceColumns)})},
   };
 }
@@ -173,6 +175,7 @@ TEST(RecordsDoc, DatabaseDocListsEveryDeclaredColumnAsDeclared) {
       {"ensemble_members: the run (kEnsembleMemberColumns)",
        DocumentedRows(kEnsembleMemberColumns)},
       {"ensemble_member_zones (kEnsembleZoneColumns)", DocumentedRows(kEnsembleZoneColumns)},
+      {"ensemble_member_impacts (kEnsembleImpactColumns)", DocumentedRows(kEnsembleImpactColumns)},
       {"ensemble_references (kEnsembleReferenceColumns)",
        DocumentedRows(kEnsembleReferenceColumns)},
   };

@@ -1,6 +1,6 @@
 // The report's sections for an ensemble study (declared in views/html_report.h): the sizing
 // statistics of `shockmap sizing` (docs/ensembles.md, "Sizing") as sortable tables, the
-// settings' agreement, the impact statistics and the sizing pictures.
+// settings' agreement, the impact statistics, the wear sizing and the sizing pictures.
 
 #include <fmt/format.h>
 
@@ -97,6 +97,23 @@ std::string Impacts(const EnsembleSizing& s) {
                                  "Mean impact statistics per clearance state, setting and zone"));
 }
 
+std::string Wear(const EnsembleSizing& s) {
+  const Table table = WearTable(s);
+  if (table.rows.empty()) {
+    return "<p>No member has a wear volume (the scene has no <code>wear</code> law, or its "
+           "zones do not slide: it bends in one plane, or the study file has no "
+           "<code>impact_statistics</code>).</p>\n";
+  }
+  return fmt::format(
+             "<p>Archard's wear volume of each zone over the scene's wear life (docs/physics.md "
+             "§6.3): P{0:g} over the members with its {1:g} % order-statistic interval, Wilks' "
+             "upper tolerance limit (the design value) and the mean, beside the P{0:g} of the "
+             "largest force: the numbers of <code>shockmap sizing --wear</code>.</p>\n",
+             100 * s.options.quantile, 100 * s.options.confidence) +
+         Scrolling(SortableTable(table, "wear-table",
+                                 "Wear volume per clearance state, setting and zone"));
+}
+
 std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
                      const StoredEnsemble& stored, const Scene& scene) {
   std::string html;
@@ -122,6 +139,7 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
                                "Every zone per clearance state and setting"))},
       {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
       {"impacts", "Impact statistics", Impacts(sizing)},
+      {"wear-sizing", "Wear sizing", Wear(sizing)},
       {"sizing-pictures", "Sizing pictures", Pictures(ctx, sizing, stored, scene)},
       {"provenance", "Provenance",
        SortableTable(tables.provenance, "provenance-table", "Runs of the study")},

@@ -115,6 +115,64 @@ Table ZoneTable(const EnsembleSizing& s) {
   return t;
 }
 
+namespace {
+
+std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
+  const std::string q = "p" + Percent(s.options.quantile);
+  std::vector<std::string> c = {"state", "setting", "members", "zone"};
+  if (compact) {
+    c.push_back("wear_" + q + "_m3 [" + Percent(s.options.confidence) + " %]");
+  } else {
+    for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
+  }
+  c.insert(c.end(), {"wilks_order", "wilks_limit_m3", "mean_wear_volume_m3", "force_" + q + "_n"});
+  return c;
+}
+
+// Precondition: z.wear.
+std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool compact) {
+  const QuantileInterval& w = z.wear->sizing;
+  std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
+                                static_cast<std::int64_t>(z.members), z.name};
+  if (compact) {
+    row.push_back(Shown(w));
+  } else {
+    row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
+                           Bound(w.upper, w.upper_bounded, kInfinity)});
+  }
+  row.push_back(static_cast<std::int64_t>(z.wear->wilks_order));
+  row.push_back(z.wear->wilks ? TableCell(z.wear->wilks->value) : TableCell(std::monostate{}));
+  row.insert(row.end(), {z.wear->mean_m3, z.sizing.estimate});
+  return row;
+}
+
+}  // namespace
+
+Table WearTable(const EnsembleSizing& s) {
+  Table t;
+  t.columns = WearColumns(s, false);
+  for (const GroupSizing& g : s.groups) {
+    for (const ZoneSizing& z : g.zones) {
+      if (z.wear) t.rows.push_back(WearRow(g, z, false));
+    }
+  }
+  return t;
+}
+
+Table MostWornZoneTable(const EnsembleSizing& s) {
+  Table t;
+  t.columns = WearColumns(s, true);
+  for (const GroupSizing& g : s.groups) {
+    const ZoneSizing* most = nullptr;
+    for (const ZoneSizing& z : g.zones) {
+      if (z.wear && (most == nullptr || z.wear->sizing.estimate > most->wear->sizing.estimate))
+        most = &z;
+    }
+    if (most != nullptr) t.rows.push_back(WearRow(g, *most, true));
+  }
+  return t;
+}
+
 std::vector<std::string> AgreementLines(const EnsembleSizing& s) {
   std::vector<std::string> lines;
   for (const GroupSizing& g : s.groups) {
