@@ -37,13 +37,14 @@ struct ZoneExtent {
   std::set<double> heights_m;
 };
 
-// Columns: y (mm), z (mm), height (m), force (N), 1 between two beams / 0 against a stop; the
-// largest forces last, to be drawn on top.
+// Columns: y (mm), z (mm), height (m), the quantity (a force in N, a wear volume in m^3), 1
+// between two beams / 0 against a stop; the largest values last, to be drawn on top.
 ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n,
-                      const std::filesystem::path& zones_file) {
+                      const MapQuantity& quantity, const std::filesystem::path& zones_file) {
   AtomicFile out(zones_file);
   std::ostream& zones = out.Stream();
-  zones << "# y_mm z_mm height_m max_force_n between_beams\n";
+  zones << "# value: " << quantity.name << " (" << quantity.unit << ")\n"
+        << "# y_mm z_mm height_m value between_beams\n";
   ZoneExtent e;
   for (std::size_t i : ByForce(max_force_n)) {
     const SceneZone& z = scene.zones[i];
@@ -222,7 +223,7 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto zones_file = std::filesystem::path(file).replace_extension(".zones.dat");
   const auto beams_file = std::filesystem::path(file).replace_extension(".beams.dat");
-  const ZoneExtent extent = WriteZones(scene, max_force_n, zones_file);
+  const ZoneExtent extent = WriteZones(scene, max_force_n, quantity, zones_file);
   const bool both = scene.planes == BendingPlanes::kBoth;
   const SectionBox box = both ? WriteBeams(scene, beams_file) : SectionBox{};
   const std::string zones = GnuplotFileName(zones_file);
