@@ -52,10 +52,10 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              f.problem.r_k, f.options.r_ftrunc, ToString(f.options.scheme), f.options.window_s);
   fmt::print("  status            {}{}\n", ToString(r.status),
              r.message.empty() ? "" : " (" + r.message + ")");
-  fmt::print("  Err               {}  (eq. 8, PSD of the tip displacement)\n",
-             Scored(r.err, "{:.4f}"));
-  fmt::print("  SRf               {}  (eq. 9, impulse of the first shock)\n",
-             Scored(r.srf, "{:.4f}"));
+  for (const ScoreDefinition& score : Scores()) {
+    fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r.scores[score.name], "{:.4f}"),
+               score.source, score.meaning);
+  }
   fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
              r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", r.numerical.dt_used_s,

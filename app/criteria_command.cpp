@@ -6,6 +6,7 @@
 
 #include "app/exit_codes.h"
 #include "app/flag_checks.h"
+#include "app/thresholds.h"
 #include "core/input_error.h"
 #include "db/study_database.h"
 #include "formats/json_reader.h"
@@ -19,18 +20,19 @@ namespace {
 struct CriteriaFlags {
   std::string database_path = kDefaultDatabasePath;
   std::string study;
-  CriteriaOptions options;
+  ThresholdFlags thresholds;
   std::string out;
   std::string baseline;
 };
 
 void Derive(const CriteriaFlags& f) {
-  std::string error;
-  if (!f.options.IsValid(&error)) throw InputError(error);
   if (!f.out.empty()) CheckPathLength(f.out, "--out");
   const std::string study = ResolveStudyName(f.database_path, f.study);
+  const CriteriaOptions options = ThresholdsFor(f.thresholds, f.database_path, study);
+  std::string error;
+  if (!options.IsValid(&error)) throw InputError(error);
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
-  const ValidityCriteria criteria = DeriveCriteria(points, f.options);
+  const ValidityCriteria criteria = DeriveCriteria(points, options);
   if (!f.out.empty()) {
     const std::filesystem::path file(f.out);
     if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
@@ -72,7 +74,7 @@ void AddCriteriaCommand(CLI::App& app) {
       "log-log fit of the boundary, set against the paper's rules");
   derive->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   AddDatabaseFlag(derive, flags->database_path);
-  AddThresholdFlags(derive, flags->options);
+  AddThresholdFlags(derive, flags->thresholds);
   derive->add_option("--out", flags->out, "write the criteria as JSON (a baseline for check)");
   derive->callback([flags] { Derive(*flags); });
 

@@ -6,6 +6,7 @@
 
 #include "app/flag_checks.h"
 #include "core/input_error.h"
+#include "db/ensemble_members.h"
 #include "db/report_queries.h"
 #include "db/stored_signals.h"
 #include "db/study_database.h"
@@ -14,6 +15,7 @@
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/study_file.h"
+#include "formats/table_output.h"
 #include "views/scored_points.h"
 #include "views/signal_csv.h"
 
@@ -88,9 +90,34 @@ void ExportPoint(const ExportFlags& f) {
   const auto score = [](const std::optional<double>& v) {
     return v ? fmt::format("{}", *v) : std::string("not scored");
   };
-  fmt::print("point {} of study {} computed again: status {}, Err {}, SRf {}\n", f.point_id, study,
-             ToString(replay.result.status), score(replay.result.err), score(replay.result.srf));
+  std::string scores;
+  for (const ScoreDefinition& s : Scores()) {
+    scores += fmt::format(", {} {}", s.label, score(replay.result.scores[s.name]));
+  }
+  fmt::print("point {} of study {} computed again: status {}{}\n", f.point_id, study,
+             ToString(replay.result.status), scores);
   fmt::print("  histories {}/numerical.csv, reference.csv (the stored reference)\n", f.out);
+}
+
+// The listed impacts of an ensemble study's members, one CSV row each.
+void ExportImpacts(const ExportFlags& f) {
+  CheckPathLength(f.out, "--out");
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  if (KindOf(f.database_path, study) != StudyFileKind::kSceneEnsemble) {
+    throw InputError("STUDY: study " + study +
+                     " is not an ensemble study (\"kind\": \"scene_ensemble\"): only ensemble "
+                     "members store their impacts one by one");
+  }
+  const Table impacts = EnsembleImpacts(f.database_path, study);
+  AtomicFile file(f.out);
+  WriteTable(impacts, TableFormat::kCsv, file.Stream());
+  file.Commit();
+  fmt::print("{} impacts of study {} written to {}\n", impacts.rows.size(), study, f.out);
+  if (impacts.rows.empty()) {
+    fmt::print(
+        "  (none stored: the study file has no impact_statistics, or its scene lists no zone in "
+        "outputs.impact_statistics.impact_table)\n");
+  }
 }
 
 void AddStudyArgument(CLI::App* command, ExportFlags& f) {
@@ -103,7 +130,9 @@ void AddStudyArgument(CLI::App* command, ExportFlags& f) {
 void AddExportCommand(CLI::App& app) {
   auto flags = std::make_shared<ExportFlags>();
   CLI::App* cmd = app.add_subcommand(
-      "export", "Write stored signals as CSV: a reference's, or a point's histories");
+      "export",
+      "Write stored signals as CSV: a reference's, or a point's histories, or an ensemble's "
+      "impacts");
   cmd->require_subcommand(1);
 
   CLI::App* reference = cmd->add_subcommand(
@@ -136,6 +165,15 @@ void AddExportCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   one_point->add_option("--out", flags->out, "directory to write into")->required();
   one_point->callback([flags] { ExportPoint(*flags); });
+
+  CLI::App* impacts = cmd->add_subcommand(
+      "impacts",
+      "The impacts an ensemble study stored one by one (the zones its scene lists in "
+      "outputs.impact_statistics.impact_table), one CSV row per impact of each member: point_id, "
+      "state, setting_json, member, zone_name and the columns of ensemble_member_impacts");
+  AddStudyArgument(impacts, *flags);
+  impacts->add_option("--out", flags->out, "CSV file to write")->required();
+  impacts->callback([flags] { ExportImpacts(*flags); });
 }
 
 }  // namespace shockmap

@@ -9,7 +9,6 @@
 
 #include "db/study_database.h"
 #include "formats/scene_file.h"
-#include "validation/validity_criteria.h"
 
 namespace shockmap {
 
@@ -51,15 +50,6 @@ void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
     }
     database_path = variable;
   });
-}
-
-void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds) {
-  command->add_option("--err-max", thresholds.err_max, "largest acceptable Err")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, true) & CLI::Range(0.0, 1.0));
-  command->add_option("--srf-min", thresholds.srf_min, "smallest acceptable SRf")
-      ->capture_default_str()
-      ->check(FiniteAbove(0.0, false) & CLI::Range(0.0, 1.0));
 }
 
 void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {

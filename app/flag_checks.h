@@ -5,7 +5,6 @@
 
 namespace shockmap {
 
-struct CriteriaOptions;
 struct SceneFileAccess;
 
 // The environment variable naming the database used when --db is not given.
@@ -14,9 +13,6 @@ inline constexpr const char* kDatabaseEnvironmentVariable = "SHOCKMAP_DB";
 // --db FILE: the study database; without it, $SHOCKMAP_DB when set, else shockmap.db in the
 // current directory. An empty value or a directory is refused, naming both sources.
 void AddDatabaseFlag(CLI::App* command, std::string& database_path);
-
-// --err-max and --srf-min, the thresholds validity is judged with.
-void AddThresholdFlags(CLI::App* command, CriteriaOptions& thresholds);
 
 // --allow-path DIR (repeatable): a folder outside the scene's own from which its data files may
 // be read.

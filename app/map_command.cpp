@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/flag_checks.h"
+#include "app/thresholds.h"
 #include "db/study_database.h"
 #include "formats/output_file.h"
 #include "views/scored_points.h"
@@ -18,7 +19,7 @@ struct MapFlags {
   std::string metric = "err";
   std::string y = "rftrunc";
   double r_ftrunc = 0.0;
-  CriteriaOptions criteria;
+  ThresholdFlags thresholds;
   std::string out;
 };
 
@@ -27,13 +28,15 @@ void Draw(const MapFlags& f) {
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
   MapOptions options;
-  options.metric = *MapMetricFromString(f.metric);
+  options.metric = f.metric;
   options.y = *MapAxisFromString(f.y);
   if (f.r_ftrunc > 0.0) options.r_ftrunc = f.r_ftrunc;
   const std::string out = !f.out.empty() ? f.out
                                          : "out/maps/" + study + "_" + f.metric +
                                                (options.y == MapAxis::kDt ? "_dt" : "") + ".png";
-  DrawValidityMap(study, points, DeriveCriteria(points, f.criteria), options, out);
+  DrawValidityMap(study, points,
+                  DeriveCriteria(points, ThresholdsFor(f.thresholds, f.database_path, study)),
+                  options, out);
   std::cout << "map written to " << out << '\n';
 }
 
@@ -47,16 +50,17 @@ void AddMapCommand(CLI::App& app) {
       "R_ftrunc or dt/dt_sharp, with the derived boundary and the paper's rules");
   map->add_option("STUDY", flags->study, "study name (default: the database's only study)");
   AddDatabaseFlag(map, flags->database_path);
-  map->add_option("--metric", flags->metric, "what the colour shows")
+  map->add_option("--metric", flags->metric,
+                  "what the colour shows: a score, the outcome or the CPU time")
       ->capture_default_str()
-      ->check(CLI::IsMember({"err", "srf", "cost", "status"}));
+      ->check(CLI::IsMember(MapMetrics()));
   map->add_option("--y", flags->y, "vertical axis: truncation or time step")
       ->capture_default_str()
       ->check(CLI::IsMember({"rftrunc", "dt"}));
   map->add_option("--rftrunc", flags->r_ftrunc,
                   "truncation shown by --y dt (default: the largest studied)")
       ->check(FiniteAbove(1.0, false));
-  AddThresholdFlags(map, flags->criteria);
+  AddThresholdFlags(map, flags->thresholds);
   map->add_option("--out", flags->out,
                   "image file, .png or .svg (default: out/maps/STUDY_METRIC.png)");
   map->callback([flags] {

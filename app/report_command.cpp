@@ -9,6 +9,7 @@
 
 #include "app/flag_checks.h"
 #include "app/sizing_command.h"
+#include "app/thresholds.h"
 #include "compare/comparison.h"
 #include "compare/scene_run.h"
 #include "core/input_error.h"
@@ -35,7 +36,7 @@ namespace {
 struct ReportFlags {
   std::string database_path = kDefaultDatabasePath;
   std::string study;
-  CriteriaOptions thresholds;
+  ThresholdFlags thresholds;
   std::string out;
 };
 
@@ -53,8 +54,8 @@ std::optional<PointFigure> DrawFig3(const ReportContext& ctx, const StudySpec& s
   CreateOutputDirectory(dir);
   WriteComparisonCsv(r, dir);
   return PointFigure{
-      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir), r.err,
-      r.srf};
+      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir),
+      r.scores};
 }
 
 std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::string& json) {
@@ -155,12 +156,10 @@ std::vector<ReportSection> StudySections(const ReportContext& ctx, StudyFileKind
 void Run(const ReportFlags& f) {
   CheckPathLength(std::filesystem::path(f.out) / "points" / "point_1000000000" / "numerical.csv",
                   "--out");
-  ReportContext ctx{f.database_path,
-                    ResolveStudyName(f.database_path, f.study),
-                    "",
-                    f.thresholds,
-                    CurrentProvenance(1),
-                    f.out};
+  const std::string study = ResolveStudyName(f.database_path, f.study);
+  ReportContext ctx{
+      f.database_path,      study, "", ThresholdsFor(f.thresholds, f.database_path, study),
+      CurrentProvenance(1), f.out};
   const auto json = StoredStudySpec(ctx.database_path, ctx.study);
   if (!json) throw InputError("no study named \"" + ctx.study + "\" in " + ctx.database_path);
   const StudyFileKind kind = StudyKindOf(

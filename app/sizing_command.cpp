@@ -16,7 +16,7 @@
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
-#include "views/query_output.h"
+#include "formats/table_output.h"
 #include "views/sizing_plots.h"
 #include "views/sizing_tables.h"
 
@@ -29,6 +29,7 @@ struct SizingFlags {
   SizingOptions options;
   std::string out;
   std::string format = "table";
+  bool wear = false;  // The wear volume's table instead of the force's.
 };
 
 // The study named, or the database's only ensemble study.
@@ -56,7 +57,7 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   if (s.superseded > 0) {
     fmt::print("  {} stored members the study file no longer has: not counted\n", s.superseded);
   }
-  WriteQueryResult(HottestZoneTable(s, true), QueryFormat::kTable, std::cout);
+  WriteTable(HottestZoneTable(s, true), TableFormat::kTable, std::cout);
   for (const GroupSizing& g : s.groups) {
     const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
     const WidthScaling scaling = MeanWidthScaling(forces, s.options);
@@ -70,6 +71,25 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   for (const std::string& line : AgreementLines(s)) fmt::print("  {}\n", line);
 }
 
+// The most worn zone of each state and setting, when the members have wear volumes (every
+// zone with --format csv|json).
+void PrintWearTable(const EnsembleSizing& s) {
+  const Table table = MostWornZoneTable(s);
+  if (table.rows.empty()) {
+    fmt::print(
+        "study {}: no member has a wear volume (the scene has no wear law, or its zones "
+        "do not slide)\n",
+        s.study);
+    return;
+  }
+  fmt::print(
+      "study {}: P{:g} of the wear volume over the scene's wear life, the most worn zone of "
+      "each state and setting, {:g} % intervals; Wilks' limit, the design value (every zone: "
+      "--format csv|json)\n",
+      s.study, 100 * s.options.quantile, 100 * s.options.confidence);
+  WriteTable(table, TableFormat::kTable, std::cout);
+}
+
 void Size(const SizingFlags& f) {
   if (!f.out.empty()) CheckPathLength(f.out, "--out");
   Connection db(f.database_path, Connection::Mode::kReadOnly);
@@ -78,23 +98,26 @@ void Size(const SizingFlags& f) {
   const StoredEnsemble stored = CurrentMembers(ReadEnsemble(db, study));
   const EnsembleSizing sizing = SizeEnsemble(stored, study, f.options);
   if (f.format == "table") {
-    PrintTable(sizing, stored);
+    f.wear ? PrintWearTable(sizing) : PrintTable(sizing, stored);
   } else {
-    WriteQueryResult(ZoneTable(sizing), *QueryFormatFromString(f.format), std::cout);
+    WriteTable(f.wear ? WearTable(sizing) : ZoneTable(sizing), *TableFormatFromString(f.format),
+               std::cout);
   }
   if (f.out.empty()) return;
   CreateOutputDirectory(f.out);
   for (const auto& [name, table] :
        {std::pair{"sizing_hottest.csv", HottestZoneTable(sizing, false)},
-        std::pair{"sizing_zones.csv", ZoneTable(sizing)}}) {
+        std::pair{"sizing_zones.csv", ZoneTable(sizing)},
+        std::pair{"sizing_wear.csv", WearTable(sizing)}}) {
     AtomicFile file(std::filesystem::path(f.out) / name);
-    WriteQueryResult(table, QueryFormat::kCsv, file.Stream());
+    WriteTable(table, TableFormat::kCsv, file.Stream());
     file.Commit();
   }
   const auto pictures = DrawSizingPictures(
       sizing, stored, StoredEnsembleScene(stored, f.database_path, study), f.out);
   std::ostream& note = f.format == "table" ? std::cout : std::cerr;
-  note << "tables written to " << f.out << "/sizing_hottest.csv and sizing_zones.csv\n";
+  note << "tables written to " << f.out
+       << "/sizing_hottest.csv, sizing_zones.csv and sizing_wear.csv\n";
   for (const auto& p : pictures) note << "picture written to " << p.image.string() << '\n';
 }
 
@@ -116,7 +139,7 @@ void AddSizingCommand(CLI::App& app) {
       "Sizing statistics of an ensemble study: per zone and for the hottest zone, per clearance "
       "state and setting, P50/P95/P99 of the largest force with order-statistic intervals, "
       "Wilks' upper tolerance limit, a bootstrap cross-check, impact statistics, and each "
-      "setting against the refined one");
+      "setting against the refined one; with --wear, the same of the wear volume");
   sizing->add_option("STUDY", flags->study, "study name (default: the database's only ensemble)");
   AddDatabaseFlag(sizing, flags->database_path);
   sizing->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
@@ -143,6 +166,10 @@ void AddSizingCommand(CLI::App& app) {
                    "or every zone as CSV or JSON")
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));
+  sizing->add_flag("--wear", flags->wear,
+                   "the wear volume's sizing instead of the force's (the quantile of the volume "
+                   "over the scene's wear life, its interval, Wilks' limit, the mean): the most "
+                   "worn zone per state and setting as a table, every zone as CSV or JSON");
   sizing->callback([flags] { Size(*flags); });
 }
 

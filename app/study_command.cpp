@@ -15,7 +15,7 @@
 #include "engine/study_run.h"
 #include "formats/counted.h"
 #include "formats/output_file.h"
-#include "views/query_output.h"
+#include "formats/table_output.h"
 
 namespace shockmap {
 namespace {
@@ -26,20 +26,20 @@ constexpr double kDefaultTimeout_s = 60.0;
 
 // The query writer, with standard output checked after every row so that a failed write
 // stops the statement.
-class CheckedStdoutSink : public QueryRowSink {
+class CheckedStdoutSink : public TableSink {
  public:
-  explicit CheckedStdoutSink(QueryWriter& writer) : writer_(writer) {}
+  explicit CheckedStdoutSink(TableWriter& writer) : writer_(writer) {}
   void Columns(const std::vector<std::string>& names) override {
     writer_.Columns(names);
     CheckStandardOutput(false);
   }
-  void Row(const std::vector<QueryCell>& row) override {
+  void Row(const std::vector<TableCell>& row) override {
     writer_.Row(row);
     CheckStandardOutput(false);
   }
 
  private:
-  QueryWriter& writer_;
+  TableWriter& writer_;
 };
 
 struct StudyFlags {
@@ -169,24 +169,39 @@ void Run(const StudyFlags& f) {
   }
 }
 
+// Keeps the rows of `table` whose column `study` is `study` (all when `study` is empty).
+void KeepStudy(Table& table, const std::string& study) {
+  if (study.empty()) return;
+  std::vector<std::vector<TableCell>> kept;
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    if (NamedRow(table, i)["study"] == TableCell(study)) kept.push_back(std::move(table.rows[i]));
+  }
+  table.rows = std::move(kept);
+}
+
+// Every study's points by status, then the points of each kind that breaks them down (ensemble
+// members by clearance state and setting), then where they were computed.
 void Status(const StudyFlags& f) {
-  QueryResult r = StudyProgress(f.run.database_path);
-  if (!f.study.empty()) {
-    std::erase_if(r.rows,
-                  [&](const auto& row) { return std::get<std::string>(row[0]) != f.study; });
-    if (r.rows.empty()) {
-      throw InputError("no study named \"" + f.study + "\" in " + f.run.database_path);
+  Table r = StudyProgress(f.run.database_path);
+  KeepStudy(r, f.study);
+  if (!f.study.empty() && r.rows.empty()) {
+    throw InputError("no study named \"" + f.study + "\" in " + f.run.database_path);
+  }
+  WriteTable(r, TableFormat::kTable, std::cout);
+  for (StudyBreakdown& b : StudyProgressBreakdowns(f.run.database_path)) {
+    KeepStudy(b.progress, f.study);
+    if (b.progress.rows.empty()) continue;
+    std::string by;
+    for (std::string_view column : b.table->progress_by) {
+      by += (by.empty() ? "" : " and ") + std::string(column);
     }
+    std::cout << "\n" << b.table->name << " by " << by << ":\n";
+    WriteTable(b.progress, TableFormat::kTable, std::cout);
   }
-  WriteQueryResult(r, QueryFormat::kTable, std::cout);
-  QueryResult origins = StudyOrigins(f.run.database_path);
-  if (!f.study.empty()) {
-    std::erase_if(origins.rows,
-                  [&](const auto& row) { return std::get<std::string>(row[0]) != f.study; });
-  }
-  std::cout << "\ncomputed on (host, rank; each point's in the views results and "
-               "scene_results):\n";
-  WriteQueryResult(origins, QueryFormat::kTable, std::cout);
+  Table origins = StudyOrigins(f.run.database_path);
+  KeepStudy(origins, f.study);
+  std::cout << "\ncomputed on (host, rank; each point's in the results views):\n";
+  WriteTable(origins, TableFormat::kTable, std::cout);
   if (const auto writer = LiveWriter(f.run.database_path)) {
     std::cout << "being written by " << *writer << "; its running points are held by it\n";
   }
@@ -194,7 +209,7 @@ void Status(const StudyFlags& f) {
 
 // Rows are printed as SQLite produces them; a limit reached closes the output, then fails.
 void Query(const StudyFlags& f) {
-  QueryWriter writer(*QueryFormatFromString(f.format), std::cout);
+  TableWriter writer(*TableFormatFromString(f.format), std::cout);
   CheckedStdoutSink sink(writer);
   try {
     StreamReadOnlyQuery(f.run.database_path, f.sql, {}, f.limits, sink);

@@ -7,17 +7,19 @@
 #include <nlohmann/json.hpp>
 
 #include "app/flag_checks.h"
+#include "app/thresholds.h"
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "db/study_database.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
-#include "views/advice.h"
+#include "formats/study_spec.h"
+#include "views/advice_summary.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
-#include "views/scene_advice.h"
+#include "views/scene_advice_summary.h"
 #include "views/scored_points.h"
 
 namespace shockmap {
@@ -26,7 +28,7 @@ namespace {
 struct ViewFlags {
   std::string database_path = kDefaultDatabasePath;
   std::string study;
-  CriteriaOptions thresholds;
+  ThresholdFlags thresholds;
   std::string out;
   double r_k = 0.0;
   bool json = false;
@@ -86,8 +88,8 @@ void AddPlotCommand(CLI::App& app, const Flags& flags) {
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const std::string out = flags->out.empty() ? "out/" + study + "_fig4.png" : flags->out;
     DrawFig4(study, LoadScoredPoints(flags->database_path, study, "explicit-modal"),
-             LoadScoredPoints(flags->database_path, study, "implicit-full"), flags->thresholds,
-             out);
+             LoadScoredPoints(flags->database_path, study, "implicit-full"),
+             ThresholdsFor(flags->thresholds, flags->database_path, study), out);
     std::cout << "Fig. 4 written to " << out << '\n';
   });
 }
@@ -110,10 +112,11 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
     }
     CheckPlotPath(flags->out);
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
-    const auto tables = BuildCostTables(
-        LoadScoredPoints(flags->database_path, study, "explicit-modal"),
-        LoadScoredPoints(flags->database_path, study, "implicit-full"),
-        flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt, flags->thresholds);
+    const auto tables =
+        BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
+                        LoadScoredPoints(flags->database_path, study, "implicit-full"),
+                        flags->r_k > 0 ? std::optional<double>(flags->r_k) : std::nullopt,
+                        ThresholdsFor(flags->thresholds, flags->database_path, study));
     std::cout << CostSummary(tables);
     if (flags->r_k > 0 && !tables.empty()) {
       const std::string out =
@@ -151,8 +154,11 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
     }
     const std::string study = ResolveStudyName(flags->database_path, flags->study);
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
-    const Advice a = Advise(StoredSpec(flags->database_path, study),
-                            DeriveCriteria(points, flags->thresholds), points, flags->r_k);
+    const StudySpec spec = StoredSpec(flags->database_path, study);
+    const Advice a = Advise(
+        spec.problem, spec.scoring.window_s,
+        DeriveCriteria(points, ThresholdsFor(flags->thresholds, flags->database_path, study)),
+        points, flags->r_k);
     if (flags->json) {
       nlohmann::json j = AdviceToJson(a);
       j["study"] = study;

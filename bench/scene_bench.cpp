@@ -4,6 +4,8 @@
 //   BundleRow/pins        the planar row of scenes/bundle_row.json with `pins` pins, 0.05 s
 //   BundleHex/rings       scenes/bundle_hex.json with `rings` rings around the centre pin (1 to 8:
 //                         7, 19, 37, 61, 91, 127, 169, 217 pins), 0.02 s
+//   BundleHexFriction/rings  BundleHex with Coulomb friction at every wire zone (mu 0.3, k_t the
+//                         wire's stiffness): what friction costs per step
 //   BundleHexOneSecond    scenes/bundle_hex.json as shipped: 1 s simulated, one iteration
 //   Effect/<name>         the paper's cantilever with one effect declared or not: an
 //                         undeclared effect must cost nothing
@@ -65,6 +67,7 @@ void Integrate(benchmark::State& state, const Scene& scene) {
   state.counters["steps"] = static_cast<double>(steps);
   state.counters["cpu_s_per_simulated_s"] = per_run / scene.solver.end_time_s;
   state.counters["ns_per_step_per_term"] = 1e9 * per_run / (static_cast<double>(steps) * terms);
+  state.counters["us_per_step"] = 1e6 * per_run / static_cast<double>(steps);
 }
 
 void BundleRow(benchmark::State& state) {
@@ -85,6 +88,17 @@ void BundleHex(benchmark::State& state) {
   Integrate(state, Load(json));
 }
 BENCHMARK(BundleHex)->DenseRange(1, 8)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+void BundleHexFriction(benchmark::State& state) {
+  Json json = ReadScene("bundle_hex");
+  json["bundle"]["rings"] = state.range(0);
+  json["bundle"]["wire"]["friction"] = {{"coefficient", 0.3},
+                                        {"tangential_stiffness_n_per_m", 1e6}};
+  json["outputs"] = {{"max_contact_force", true}};
+  json["solver"]["end_time_s"] = 0.02;
+  Integrate(state, Load(json));
+}
+BENCHMARK(BundleHexFriction)->DenseRange(1, 8)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BundleHexOneSecond(benchmark::State& state) {
   Integrate(state, Load(ReadScene("bundle_hex")));

@@ -51,7 +51,11 @@ CanonicalStudy::Outcome SyntheticOutcome(const CanonicalStudy&, std::int64_t ref
   s.dt_requested_s = s.dt_used_s = 1e-6;
   s.steps = 30000;
   s.n_shocks = 3;
-  s.first_shock = ShockColumns{0.001, 0.02, 150.0, 1e-4, 2};
+  s.first_shock_start_s = 0.001;
+  s.first_shock_impulse_n_s = 0.02;
+  s.first_shock_peak_n = 150.0;
+  s.first_shock_duration_s = 1e-4;
+  s.first_shock_rebounds = 2;
   s.shocks_json = std::string(
       R"([{"start_s":0.00123,"end_s":0.00145,"peak_force_n":153.2,"peak_time_s":0.00131,)"
       R"("impulse_n_s":0.0213,"rebounds":2,"truncated":false}])");

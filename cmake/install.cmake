@@ -3,7 +3,7 @@
 # shockmap::views, their dependencies found again by shockmapConfig.cmake.
 include(CMakePackageConfigHelpers)
 
-set(SHOCKMAP_LIBRARIES core reference validation statistics compare formats db engine views)
+set(SHOCKMAP_LIBRARIES core records reference validation statistics compare formats db engine views)
 set(SHOCKMAP_LIBRARY_TARGETS)
 foreach(folder IN LISTS SHOCKMAP_LIBRARIES)
   set_target_properties(shockmap_${folder} PROPERTIES EXPORT_NAME ${folder})

@@ -5,8 +5,6 @@
 #include <algorithm>
 
 #include "core/validity.h"
-#include "validation/impulse_ratio.h"
-#include "validation/spectral_error.h"
 
 namespace shockmap {
 
@@ -146,15 +144,21 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
     result.message = UnconvergedMessage(result.reference->convergence, options.reference_tolerance);
     return result;
   }
-  const UniformSignal& tip = result.histories.displacement_m[0];
-  const std::optional<ReferenceSpectrum>& spectrum = result.reference->tip_spectrum;
-  result.err =
-      spectrum && spectrum->options == options.psd && spectrum->window_s == options.window_s
-          ? SpectralError(tip, spectrum->psd, 0.0, options.window_s, options.psd)
-          : SpectralError(tip, result.reference->tip_m, 0.0, options.window_s, options.psd);
-  result.srf = DefinedImpulseRatio(options.srf_definition, result.histories.contact_force_n[0],
-                                   result.shocks_numerical, result.reference->force_n,
-                                   result.reference->shocks, shocks, options.window_s);
+  const ReferenceRun& ref = *result.reference;
+  const std::optional<ReferenceSpectrum>& spectrum = ref.tip_spectrum;
+  const bool spectrum_fits =
+      spectrum && spectrum->options == options.psd && spectrum->window_s == options.window_s;
+  result.scores = ComputeScores({.displacement = result.histories.displacement_m[0],
+                                 .reference_displacement = ref.tip_m,
+                                 .reference_spectrum = spectrum_fits ? &spectrum->psd : nullptr,
+                                 .psd = options.psd,
+                                 .end_s = options.window_s,
+                                 .force = result.histories.contact_force_n[0],
+                                 .shocks = result.shocks_numerical,
+                                 .reference_force = ref.force_n,
+                                 .reference_shocks = ref.shocks,
+                                 .srf_definition = options.srf_definition,
+                                 .segmentation = shocks});
   return result;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // One point of a study: the numerical solver against the reference on the canonical problem,
-// scored with Err (paper eq. 8) and SRf (eq. 9).
+// scored with every registered score (validation/scores.h: Err, paper eq. 8, SRf, eq. 9, ...).
 
 #include <memory>
 #include <optional>
@@ -16,6 +16,7 @@
 #include "core/transient_run.h"
 #include "validation/impulse_ratio.h"
 #include "validation/psd.h"
+#include "validation/scores.h"
 
 namespace shockmap {
 
@@ -52,8 +53,9 @@ struct ComparisonResult {
   // The numerical run's status, or kReferenceUnconverged when it ran but nothing is scored.
   RunStatus status = RunStatus::kOk;
   std::string message;
-  std::optional<double> err;  // Set only when status is kOk or kUnstable.
-  std::optional<double> srf;  // Set when err is and either side has a shock.
+  // Every registered score (validation/scores.h), set only when status is kOk or kUnstable:
+  // Err always, SRf when either side has a shock.
+  ScoreValues scores;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;  // The one srf was computed with.
   int n_modes = 0;
   int n_elements = 0;

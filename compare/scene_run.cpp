@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -53,6 +54,7 @@ TransientOptions RunOptions(const Scene& scene, SceneModel& model) {
   options.track_max_contact_force = out.max_contact_force;
   options.track_impact_statistics = out.impact_statistics;
   options.impact_counting = out.impact_counting;
+  options.listed_impact_contacts = out.impact_table_zones;
   options.observed_rows = std::move(model.observed_rows);
   return options;
 }
@@ -81,6 +83,10 @@ SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progres
   run.result = RunTransient(*model.system, NewmarkParameters::CentralDifference(), model.x0,
                             model.v0, options);
 
+  if (std::ranges::any_of(scene.zones,
+                          [](const SceneZone& z) { return z.power_law.has_value(); })) {
+    run.reached_bound = CheckReachedBound(*model.system);
+  }
   if (out.max_contact_force) run.max_contact_force_n = run.result.max_contact_force_n;
   run.impact_statistics = run.result.impact_statistics;
   if (options.record_contact_forces) {

@@ -4,8 +4,10 @@
 // docs/architecture.md).
 
 #include <functional>
+#include <optional>
 #include <vector>
 
+#include "core/reached_bound.h"
 #include "core/scene.h"
 #include "core/scene_model.h"
 #include "core/transient_run.h"
@@ -28,9 +30,12 @@ struct SceneRun {
   // when requested the shocks of each.
   std::vector<int> recorded_zones;
   std::vector<std::vector<Shock>> shocks;
-  // Per zone, when requested (empty otherwise): the impact statistics over the run
-  // (docs/physics.md §6); empty also when the run took no step.
+  // Per zone, when requested (empty otherwise): the impact statistics over their window
+  // (docs/physics.md §6), with the impacts of the zones the scene lists; empty also when the
+  // window held no step.
   std::vector<ImpactStatistics> impact_statistics;
+  // When some zone has a power law: the bound at the penetrations reached (docs/physics.md §7).
+  std::optional<ReachedBound> reached_bound;
 };
 
 // Checks, without integrating, what RunScene checks before it integrates: the step count its dt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 namespace shockmap {
 
@@ -15,11 +16,12 @@ ScoreSpread ScoreUnderPerturbations(const CantileverImpact& problem,
     CantileverImpact perturbed = problem;
     perturbed.initial_tip_m *= 1.0 + p;
     const ComparisonResult r = RunComparison(perturbed, options);
-    if (!r.err) continue;
+    const std::optional<double> err = r.scores["err"];
+    if (!err) continue;
     ++s.runs;
-    s.err_min = std::min(s.err_min, *r.err);
-    s.err_max = std::max(s.err_max, *r.err);
-    const double srf = r.srf.value_or(1.0);
+    s.err_min = std::min(s.err_min, *err);
+    s.err_max = std::max(s.err_max, *err);
+    const double srf = r.scores["srf"].value_or(1.0);
     s.srf_min = std::min(s.srf_min, srf);
     s.srf_max = std::max(s.srf_max, srf);
   }

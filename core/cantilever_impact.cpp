@@ -85,12 +85,11 @@ ImpactModel BuildImpactModel(const CantileverImpact& problem, Scheme scheme, dou
     model.n_modes = basis.NumModes();
     const Eigen::VectorXd tip_row_fe = fe.DeflectionRow(problem.beam.length_m);
     const Eigen::VectorXd tip_row_modal = basis.shapes.transpose() * tip_row_fe;
-    const PointContact modal_contact{tip_row_modal, problem.gap_m, problem.SpringStiffness(),
-                                     problem.contact_damping_n_s_per_m};
+    const NormalLaw spring{problem.SpringStiffness(), problem.contact_damping_n_s_per_m};
+    const PointContact modal_contact{tip_row_modal, problem.gap_m, spring};
     model.bounds = ComputeStabilityBounds(
         basis.omega_rad_s, std::max(f_trunc_hz, basis.HighestFrequencyHz()), {modal_contact});
-    const PointContact fe_contact{tip_row_fe, problem.gap_m, problem.SpringStiffness(),
-                                  problem.contact_damping_n_s_per_m};
+    const PointContact fe_contact{tip_row_fe, problem.gap_m, spring};
     model.system = std::make_unique<FullFeContactSystem>(
         fe.mass, fe.stiffness, problem.mass_damping_per_s, std::vector{fe_contact});
     model.x0 = (problem.initial_tip_m / tip_row_modal[0]) * basis.shapes.col(0);

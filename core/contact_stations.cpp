@@ -176,10 +176,15 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
     normal_y_.push_back(z.normal_y);
     normal_z_.push_back(z.normal_z);
     gap_.push_back(z.gap_m);
-    stiffness_.push_back(z.stiffness_n_per_m);
-    damping_.push_back(z.damping_n_s_per_m);
-    if (z.damping_n_s_per_m != 0.0) damped_.push_back(static_cast<int>(i));
+    stiffness_.push_back(z.law.normal.stiffness);
+    damping_.push_back(z.law.normal.damping_n_s_per_m);
+    laws_.push_back(z.law);
+    if (z.law.normal.damping_n_s_per_m != 0.0) damped_.push_back(static_cast<int>(i));
+    if (!z.law.normal.IsLinear()) power_.push_back(static_cast<int>(i));
+    friction_of_.push_back(z.law.friction ? static_cast<int>(frictions_.size()) : -1);
+    if (z.law.friction) frictions_.push_back({*z.law.friction, {}, 0});
   }
+  largest_penetration_.assign(power_.size(), 0.0);
   for (Slots* s : {&displacement_, &velocity_, &scratch_}) {
     s->y.assign(slots, 0.0);
     s->z.assign(slots, 0.0);
@@ -210,6 +215,12 @@ std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& s
   const int n = slot_modes_[slot];
   return {Dot(row, state.data() + slot_y_[slot], n),
           slot_z_[slot] >= 0 ? Dot(row, state.data() + slot_z_[slot], n) : 0.0};
+}
+
+double ContactStations::Tangential(int zone, const Slots& u) const {
+  const int a = slot_a_[zone], b = slot_b_[zone];
+  const double ny = normal_y_[zone], nz = normal_z_[zone];
+  return -nz * u.y[a] + ny * u.z[a] + nz * u.y[b] - ny * u.z[b];
 }
 
 double ContactStations::NormalAt(int zone, const Eigen::VectorXd& state) const {
@@ -243,10 +254,12 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
   }
 }
 
-void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                                 Eigen::VectorXd& a) {
   Evaluate(x, displacement_);
   ++step_;
+  dt_s_ = t_s - t_s_;
+  t_s_ = t_s;
   // Plain pointers: the loop is the step's hottest, and the stores into a must not make the
   // compiler reload the arrays.
   const int* const slot_a = slot_a_.data();
@@ -255,13 +268,12 @@ void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd&
   const double* const nz = normal_z_.data();
   const double* const gap = gap_.data();
   const double* const k = stiffness_.data();
-  const double* const c = damping_.data();
   const double* const uy = displacement_.y.data();
   const double* const uz = displacement_.z.data();
   double* const force = force_.data();
-  // First the penalty forces and the list of closed zones, without a branch on contact (zones
-  // open and close at random, a branch would be mispredicted half the time); then the closed
-  // zones' damping and projection, in zone order.
+  // First the linear penalty forces and the list of closed zones, without a branch on contact
+  // (zones open and close at random, a branch would be mispredicted half the time); then the
+  // power laws' forces; then the closed zones' damping, friction and projection, in zone order.
   int* const closed = closed_.data();
   int n_closed = 0;
   const int zones = static_cast<int>(force_.size());
@@ -270,10 +282,37 @@ void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd&
     // n . (u_a - u_b) as Normal() sums it.
     const double penetration =
         ny[i] * uy[sa] + nz[i] * uz[sa] - ny[i] * uy[sb] - nz[i] * uz[sb] - gap[i];
-    force[i] = k[i] * std::max(0.0, penetration);  // 0 when open (or not a number).
+    force[i] = LinearPenaltyForce(k[i], penetration);  // 0 when open (or not a number).
     closed[n_closed] = i;
     n_closed += static_cast<int>(penetration > 0.0);
   }
+  if (!power_.empty()) ApplyPowerLaws();
+  friction_power_w_ = 0.0;
+  if (frictions_.empty()) {
+    ProjectClosed<false>(n_closed, v, a);
+  } else {
+    ProjectClosed<true>(n_closed, v, a);
+  }
+}
+
+void ContactStations::ApplyPowerLaws() {
+  for (std::size_t j = 0; j < power_.size(); ++j) {
+    const int i = power_[j];
+    const double penetration = Normal(i, displacement_) - gap_[i];
+    force_[i] = laws_[i].normal.ElasticForce(penetration);
+    largest_penetration_[j] = std::max(largest_penetration_[j], penetration);
+  }
+}
+
+template <bool kFriction>
+void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eigen::VectorXd& a) {
+  const int* const slot_a = slot_a_.data();
+  const int* const slot_b = slot_b_.data();
+  const double* const ny = normal_y_.data();
+  const double* const nz = normal_z_.data();
+  const double* const c = damping_.data();
+  double* const force = force_.data();
+  const int* const closed = closed_.data();
   for (int j = 0; j < n_closed; ++j) {
     const int i = closed[j], sa = slot_a[i], sb = slot_b[i];
     if (c[i] != 0.0) {
@@ -282,9 +321,53 @@ void ContactStations::AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd&
       force[i] = std::max(0.0, force[i] + c[i] * Normal(i, velocity_));
     }
     const double f = force[i];
+    if constexpr (kFriction) {
+      if (friction_of_[i] >= 0) {
+        // The friction force along t = (-n_z, n_y), on a, and its reaction on b.
+        const double ft = RubbingForce(i, f, v);
+        AddToSlot(sa, -f * ny[i] - ft * nz[i], -f * nz[i] + ft * ny[i], a);
+        AddToSlot(sb, f * ny[i] + ft * nz[i], f * nz[i] - ft * ny[i], a);
+        continue;
+      }
+    }
     AddToSlot(sa, -f * ny[i], -f * nz[i], a);
     AddToSlot(sb, f * ny[i], f * nz[i], a);
   }
+}
+
+double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {
+  Rubbing& r = frictions_[friction_of_[zone]];
+  const double slip = Tangential(zone, displacement_);
+  // A contact closing (not closed at the step before): its spring starts relaxed, sticking.
+  if (r.closed_step == 0 || r.closed_step + 1 != step_) r.state = {slip, 0.0, false};
+  r.closed_step = step_;
+  // The slip rate enters through the tangential damper only: evaluated only with one.
+  const double rate = r.law.tangential_damping_n_s_per_m != 0.0 ? SlipRate(zone, v) : 0.0;
+  const double force = FrictionForce(r.law, f, slip, rate, r.state);
+  if (dt_s_ > 0.0) friction_power_w_ += FrictionDissipatedPower(r.law, r.state, dt_s_, rate);
+  return force;
+}
+
+double ContactStations::SlipRate(int zone, const Eigen::VectorXd& v) {
+  VelocityAt(slot_a_[zone], v);
+  VelocityAt(slot_b_[zone], v);
+  return Tangential(zone, velocity_);
+}
+
+double ContactStations::TangentialForce(int zone) const {
+  const int j = friction_of_[zone];
+  return j >= 0 && frictions_[j].closed_step == step_ ? frictions_[j].state.force_n : 0.0;
+}
+
+bool ContactStations::Sticks(int zone) const {
+  const int j = friction_of_[zone];
+  return j >= 0 && frictions_[j].closed_step == step_ && !frictions_[j].state.sliding;
+}
+
+std::vector<double> ContactStations::LargestPenetrations() const {
+  std::vector<double> largest(force_.size(), 0.0);
+  for (std::size_t j = 0; j < power_.size(); ++j) largest[power_[j]] = largest_penetration_[j];
+  return largest;
 }
 
 std::array<double, 2> ContactStations::RelativeDisplacement(int zone) const {
@@ -302,7 +385,14 @@ double ContactStations::ContactEnergy(const Eigen::VectorXd& x) const {
   double e = 0.0;
   for (std::size_t i = 0; i < force_.size(); ++i) {
     const double d = Normal(static_cast<int>(i), scratch_) - gap_[i];
-    if (d > 0.0) e += 0.5 * stiffness_[i] * d * d;
+    if (d > 0.0) e += laws_[i].normal.Energy(d);
+  }
+  for (std::size_t i = 0; i < force_.size(); ++i) {
+    const int j = friction_of_[i];
+    if (j < 0 || frictions_[j].closed_step != step_) continue;
+    const int zone = static_cast<int>(i);
+    if (Normal(zone, scratch_) - gap_[i] <= 0.0) continue;
+    e += FrictionEnergy(frictions_[j].law, frictions_[j].state, Tangential(zone, scratch_));
   }
   return e;
 }
@@ -312,26 +402,44 @@ double ContactStations::AddDampingPower(const Eigen::VectorXd& x, const Eigen::V
   for (int i : damped_) {
     const double d = NormalAt(i, x) - gap_[i];
     if (d <= 0.0) continue;
-    // d/dt (kinetic + strain + spring) = (k d - F) d': what leaves is (F - k d) d'.
+    // d/dt (kinetic + strain + spring) = (F_e - F) d': what leaves is (F - F_e) d'.
     const double rate = NormalAt(i, v);
-    const double force = std::max(0.0, stiffness_[i] * d + damping_[i] * rate);
-    p += (force - stiffness_[i] * d) * rate;
+    const NormalLaw& law = laws_[i].normal;
+    p += (law.Force(d, rate) - law.ElasticForce(d)) * rate;
   }
-  return p;
+  // Friction's power was found by the solve of the step that reached (x, v).
+  return p + friction_power_w_;
 }
 
-void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+std::vector<double> ContactStations::BoundStiffnesses() const {
+  std::vector<double> k;
+  for (const ContactLaw& law : laws_) k.push_back(law.normal.BoundStiffness());
+  return k;
+}
+
+void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x,
+                                         std::span<const double> normal_stiffness,
+                                         Eigen::VectorXd& y) const {
   Evaluate(x, scratch_);
-  // Per station, the generalized force k_z (r_z . x) n with the sign of its side.
+  // Per station, the generalized force k_z (r_z . x) n with the sign of its side, and
+  // k_t (t_z . x) t for the zones with friction.
   Slots g;
   g.y.assign(scratch_.y.size(), 0.0);
   g.z.assign(scratch_.z.size(), 0.0);
   for (std::size_t i = 0; i < force_.size(); ++i) {
-    const double f = stiffness_[i] * Normal(static_cast<int>(i), scratch_);
+    const int zone = static_cast<int>(i);
+    const double f = normal_stiffness[i] * Normal(zone, scratch_);
     g.y[slot_a_[i]] += f * normal_y_[i];
     g.z[slot_a_[i]] += f * normal_z_[i];
     g.y[slot_b_[i]] -= f * normal_y_[i];
     g.z[slot_b_[i]] -= f * normal_z_[i];
+    if (friction_of_[i] < 0) continue;
+    const double ft =
+        frictions_[friction_of_[i]].law.tangential_stiffness_n_per_m * Tangential(zone, scratch_);
+    g.y[slot_a_[i]] -= ft * normal_z_[i];
+    g.z[slot_a_[i]] += ft * normal_y_[i];
+    g.y[slot_b_[i]] += ft * normal_z_[i];
+    g.z[slot_b_[i]] -= ft * normal_y_[i];
   }
   for (std::size_t s = 1; s < g.y.size(); ++s) {
     if (slot_row_[s] < 0) continue;

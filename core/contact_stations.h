@@ -15,12 +15,20 @@
 // Per-zone quantities stay reachable: Forces() (zone order, the last step's), and
 // RelativeDisplacement / RelativeVelocity of a zone (u_a - u_b and v_a - v_b at its height, y
 // and z), from which any normal or tangential component follows.
+//
+// Each zone's force follows its law (core/contact_law.h). The linear penalty, the law of every
+// zone of the shipped scenes, is evaluated for all zones at once without a branch; zones with a
+// power law then have their force replaced, and zones with friction add their tangential force
+// along t = (-n_z, n_y) (scenes bending in both planes) when they are projected. A scene without
+// either runs the loops it ran before them.
 
 #include <Eigen/Dense>
 #include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
+
+#include "core/contact_law.h"
 
 namespace shockmap {
 
@@ -30,7 +38,8 @@ struct ZoneTerm {
   int a_y = -1, a_z = -1, b_y = -1, b_z = -1;
   std::vector<double> phi_a, phi_b;  // Mode shapes at the zone's height (1/sqrt(kg)).
   double normal_y = 1.0, normal_z = 0.0;
-  double gap_m = 0.0, stiffness_n_per_m = 0.0, damping_n_s_per_m = 0.0;
+  double gap_m = 0.0;
+  ContactLaw law;  // Friction only where both sides bend in y and z.
 };
 
 class ContactStations {
@@ -39,26 +48,45 @@ class ContactStations {
   // beam so that a beam's stations are evaluated together. Zones keep their order.
   explicit ContactStations(const std::vector<ZoneTerm>& zones);
 
-  // The step's contact forces: every station's displacement at x, every zone's penalty force
-  // F = max(0, k d + c d') (d' from v, evaluated only at the stations of closed damped zones,
-  // once per station and step), each closed zone's force added to a on both beams' modes.
-  void AddForces(const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd& a);
-  // The force of each zone (N, >= 0) in the last AddForces.
+  // The step's contact forces: every station's displacement at x, every zone's normal force
+  // F = max(0, k d^p + c d') (d' from v, evaluated only at the stations of closed damped or
+  // rubbing zones, once per station and step), and each closed zone's force, with its friction
+  // force, added to a on both beams' modes. Friction states advance: one call per step.
+  // t_s: the time of the state, whose difference from the previous call's is the step the
+  // friction's work is spread over.
+  void AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                 Eigen::VectorXd& a);
+  // The normal force of each zone (N, >= 0) in the last AddForces.
   std::span<const double> Forces() const { return force_; }
+  // A zone's tangential force on side a along t in the last AddForces (0 when open or without
+  // friction), and whether it stuck (true only for a closed zone with friction).
+  double TangentialForce(int zone) const;
+  bool Sticks(int zone) const;
+  bool HasFriction(int zone) const { return friction_of_[zone] >= 0; }
+  // The largest penetration each zone reached over the AddForces calls, for zones with a power
+  // law (0 for the others).
+  std::vector<double> LargestPenetrations() const;
 
   // u_a - u_b at the zone's height, (y, z) components (m), at the last AddForces' x.
   std::array<double, 2> RelativeDisplacement(int zone) const;
   // v_a - v_b at the zone's height, (y, z) components (m/s), at state v.
   std::array<double, 2> RelativeVelocity(int zone, const Eigen::VectorXd& v) const;
 
-  // Sum over closed zones of the penalty energy k d^2 / 2 at x (J).
+  // Sum over closed zones of the elastic energy of their normal law at x, and of the energy in
+  // the tangential springs of those rubbing in the last AddForces (J).
   double ContactEnergy(const Eigen::VectorXd& x) const;
-  // p plus the power taken out by contact damping at (x, v): the terms (F - k d) d' of the
-  // closed damped zones added to p one by one, in zone order.
+  // p plus the power taken out by contact damping at (x, v): the terms (F - F_e) d' of the
+  // closed damped zones added to p one by one, in zone order (F_e the law's elastic force), then
+  // the power friction dissipated over the step the last AddForces solved
+  // (FrictionDissipatedPower: x and v are the state that step reached).
   double AddDampingPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double p) const;
-  bool AnyDamping() const { return !damped_.empty(); }
-  // y += sum_z k_z r_z r_z^T x: the stiffness of every zone closed, applied to x.
-  void AddClosedStiffness(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  bool AnyDamping() const { return !damped_.empty() || !frictions_.empty(); }
+  // Each zone's stiffness in the sharp bound: its normal law's BoundStiffness().
+  std::vector<double> BoundStiffnesses() const;
+  // y += sum_z (k_z r_z r_z^T + k_t,z t_z t_z^T) x: every zone closed with the normal stiffness
+  // k_z given (zone order), and the tangential springs of the zones with friction sticking.
+  void AddClosedStiffness(const Eigen::VectorXd& x, std::span<const double> normal_stiffness,
+                          Eigen::VectorXd& y) const;
 
  private:
   // The stations of one beam: slots [first, first + width), width padded to the kernel's lane
@@ -71,8 +99,26 @@ class ContactStations {
     std::vector<double> y, z;
   };
 
+  // A zone's friction: its law, its state, and the step it was last closed at.
+  struct Rubbing {
+    FrictionLaw law;
+    FrictionState state;
+    std::uint64_t closed_step = 0;
+  };
+
   void Evaluate(const Eigen::VectorXd& x, Slots& out) const;
   double Normal(int zone, const Slots& u) const;
+  // t . (u_a - u_b), t = (-n_z, n_y).
+  double Tangential(int zone, const Slots& u) const;
+  // The power-law zones' forces, replacing the linear ones of the first pass.
+  void ApplyPowerLaws();
+  // The closed zones' damping, friction (when kFriction) and projection, in zone order.
+  template <bool kFriction>
+  void ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eigen::VectorXd& a);
+  // t . (v_a - v_b) at v, the stations' velocities evaluated once per step.
+  double SlipRate(int zone, const Eigen::VectorXd& v);
+  // The friction force of a closed zone under normal force f, its state advanced.
+  double RubbingForce(int zone, double f, const Eigen::VectorXd& v);
   // A slot's (y, z) values at a state, from its row (the base: zero).
   std::array<double, 2> SlotAt(int slot, const Eigen::VectorXd& state) const;
   double NormalAt(int zone, const Eigen::VectorXd& state) const;
@@ -89,6 +135,11 @@ class ContactStations {
   std::vector<int> slot_a_, slot_b_;
   std::vector<double> normal_y_, normal_z_, gap_, stiffness_, damping_;
   std::vector<int> damped_;  // The zones with contact damping.
+  std::vector<ContactLaw> laws_;
+  std::vector<int> power_;                   // The zones whose normal law is not linear.
+  std::vector<double> largest_penetration_;  // Per power_ entry.
+  std::vector<int> friction_of_;             // Per zone, its index in frictions_ (-1: none).
+  std::vector<Rubbing> frictions_;
   // The step's state.
   Slots displacement_, velocity_;
   std::vector<std::uint64_t> velocity_step_;  // The step a slot's velocity belongs to.
@@ -97,6 +148,8 @@ class ContactStations {
   std::vector<int> closed_;  // The zones closed in this step, in zone order.
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
+  double friction_power_w_ = 0.0;  // Friction's over the last AddForces' step (W).
+  double t_s_ = 0.0, dt_s_ = 0.0;  // The last AddForces' time and step.
 };
 
 }  // namespace shockmap

@@ -1,6 +1,7 @@
 #include "core/full_fe_contact_system.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace shockmap {
 
@@ -19,7 +20,11 @@ FullFeContactSystem::FullFeContactSystem(Eigen::SparseMatrix<double> mass,
       stiffness_(std::move(stiffness)),
       mass_damping_per_s_(mass_damping_per_s),
       contacts_(std::move(contacts)),
-      forces_(contacts_.size(), 0.0) {}
+      forces_(contacts_.size(), 0.0) {
+  for ([[maybe_unused]] const PointContact& c : contacts_) {
+    assert(c.law.IsLinear() && "the active set solves piecewise-linear laws exactly, no other");
+  }
+}
 
 FullFeContactSystem::~FullFeContactSystem() = default;
 
@@ -52,14 +57,15 @@ bool FullFeContactSystem::SolveAcceleration(double /*t_s*/, double beta_dt2, dou
   const Eigen::VectorXd a_free = f.solver.solve(rhs);
   if (f.solver.info() != Eigen::Success) return false;
 
-  // Contact s: F_s = F0_s - eff_s (r_s . a) while active (u < g and F_s > 0).
+  // Contact s, its linear law's k and c: F_s = F0_s - eff_s (r_s . a) while active (u < g and
+  // F_s > 0).
   const auto n_c = static_cast<Eigen::Index>(contacts_.size());
   Eigen::VectorXd f0(n_c), eff(n_c);
   for (Eigen::Index s = 0; s < n_c; ++s) {
     const auto& c = contacts_[s];
-    f0[s] = c.stiffness_n_per_m * (c.gap_m - c.row.dot(x_pred)) -
-            c.damping_n_s_per_m * c.row.dot(v_pred);
-    eff[s] = c.stiffness_n_per_m * beta_dt2 + c.damping_n_s_per_m * gamma_dt;
+    const double k = c.law.stiffness, damping = c.law.damping_n_s_per_m;
+    f0[s] = k * (c.gap_m - c.row.dot(x_pred)) - damping * c.row.dot(v_pred);
+    eff[s] = k * beta_dt2 + damping * gamma_dt;
   }
   auto active_at = [&](const Eigen::VectorXd& acc) {
     std::vector<Eigen::Index> set;

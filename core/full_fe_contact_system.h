@@ -12,6 +12,8 @@ namespace shockmap {
 // alpha (1/s, 0 for none). SolveAcceleration factorizes A = (1 + gamma_dt alpha) M + beta_dt2 K
 // once per (beta_dt2, gamma_dt) pair and solves the piecewise-linear contact exactly by an
 // active-set iteration, each active set through a Woodbury update of A^-1 with the contact rows.
+// Precondition: every contact's normal law is linear (the canonical problem's spring; a power
+// law would need a Newton iteration inside each active set, which no model here asks for).
 class FullFeContactSystem final : public SecondOrderSystem {
  public:
   FullFeContactSystem(Eigen::SparseMatrix<double> mass, Eigen::SparseMatrix<double> stiffness,
@@ -23,6 +25,10 @@ class FullFeContactSystem final : public SecondOrderSystem {
                          const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
                          Eigen::VectorXd& a) override;
   std::span<const double> LastContactForces() const override { return forces_; }
+  // -r . v: the penetration g - u grows as the point moves down.
+  double PenetrationRate(int contact, const Eigen::VectorXd& v) const override {
+    return -contacts_[static_cast<std::size_t>(contact)].row.dot(v);
+  }
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
   double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;

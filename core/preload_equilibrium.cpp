@@ -33,20 +33,30 @@ double Penetration(const std::vector<std::pair<int, double>>& row, double gap,
   return u - gap;
 }
 
-// Solves the equilibrium with the zones `active` closed.
+const NormalLaw& LawOf(const SceneModalSystem& system, std::size_t zone) {
+  return system.Zones()[zone].law.normal;
+}
+
+// The Newton step's target from x with the zones `active` closed, each zone's force linearized
+// at its penetration d0 = r . x - g: F ~ K_t (r . x - g) + (F(d0) - K_t d0), so that
+// (diag(omega^2) + sum K_t r r^T) x' = sum (K_t g - (F(d0) - K_t d0)) r. For a linear law the
+// bracket is exactly 0 and x' is the minimum of the closed set's quadratic.
 Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
                                 const std::vector<std::vector<std::pair<int, double>>>& rows,
-                                const std::set<std::size_t>& active) {
+                                const std::set<std::size_t>& active, const Eigen::VectorXd& x) {
   const int n = system.Size();
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < n; ++i) entries.emplace_back(i, i, system.OmegaSquared()[i]);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (const std::size_t z : active) {
     const ZoneTerm& zone = system.Zones()[z];
+    const NormalLaw& law = zone.law.normal;
+    const double d0 = Penetration(rows[z], zone.gap_m, x);
+    const double k = law.TangentStiffness(d0);
+    const double offset = law.ElasticForce(d0) - k * d0;
     for (const auto& [i, ci] : rows[z]) {
-      rhs[i] += zone.stiffness_n_per_m * zone.gap_m * ci;
-      for (const auto& [j, cj] : rows[z])
-        entries.emplace_back(i, j, zone.stiffness_n_per_m * ci * cj);
+      rhs[i] += (k * zone.gap_m - offset) * ci;
+      for (const auto& [j, cj] : rows[z]) entries.emplace_back(i, j, k * ci * cj);
     }
   }
   Eigen::SparseMatrix<double> a(n, n);
@@ -60,8 +70,8 @@ Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
   return ldlt.solve(rhs);
 }
 
-// E(x) = 1/2 sum omega_i^2 x_i^2 + sum_z 1/2 k_z max(0, r_z . x - g_z)^2, whose minimum is the
-// equilibrium, and its gradient.
+// E(x) = 1/2 sum omega_i^2 x_i^2 + sum_z E_z(r_z . x - g_z), E_z the elastic energy of the
+// zone's normal law, whose minimum is the equilibrium, and its gradient.
 struct Energy {
   const SceneModalSystem& system;
   const std::vector<std::vector<std::pair<int, double>>>& rows;
@@ -70,7 +80,7 @@ struct Energy {
     double e = 0.5 * system.OmegaSquared().dot(x.cwiseProduct(x));
     for (std::size_t z = 0; z < rows.size(); ++z) {
       const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
-      if (d > 0.0) e += 0.5 * system.Zones()[z].stiffness_n_per_m * d * d;
+      if (d > 0.0) e += LawOf(system, z).Energy(d);
     }
     return e;
   }
@@ -79,7 +89,8 @@ struct Energy {
     for (std::size_t z = 0; z < rows.size(); ++z) {
       const double d = Penetration(rows[z], system.Zones()[z].gap_m, x);
       if (d <= 0.0) continue;
-      for (const auto& [i, c] : rows[z]) g[i] += system.Zones()[z].stiffness_n_per_m * d * c;
+      const double force = LawOf(system, z).ElasticForce(d);
+      for (const auto& [i, c] : rows[z]) g[i] += force * c;
     }
     return g;
   }
@@ -92,6 +103,15 @@ struct Energy {
   }
 };
 
+// True when a full Newton step changed x by at most a relative 1e-12, or when every zone of the
+// closed set is linear: the step then landed on the minimum of the set's quadratic.
+bool Converged(const SceneModalSystem& system, const std::set<std::size_t>& closed,
+               const Eigen::VectorXd& step, const Eigen::VectorXd& x) {
+  bool linear = true;
+  for (const std::size_t z : closed) linear = linear && LawOf(system, z).IsLinear();
+  return linear || step.norm() <= 1e-12 * x.norm();
+}
+
 }  // namespace
 
 bool HasPreloadedZones(const SceneModalSystem& system) {
@@ -101,10 +121,11 @@ bool HasPreloadedZones(const SceneModalSystem& system) {
   return false;
 }
 
-// Newton's method on the convex, piecewise-quadratic energy, damped by backtracking (Armijo) so
-// that the energy decreases at every step: the closed set cannot cycle. A full step lands on
-// the minimum of the quadratic of its closed set; when that set holds there, it is the
-// equilibrium.
+// Newton's method on the convex energy, damped by backtracking (Armijo) so that the energy
+// decreases at every step: the closed set cannot cycle. With linear laws the energy is
+// piecewise quadratic, and a full step lands on the minimum of the quadratic of its closed set:
+// when that set holds there, it is the equilibrium. A power law's zones need further steps,
+// until a full one moves x by a relative 1e-12.
 Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
   std::vector<std::vector<std::pair<int, double>>> rows;
   for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
@@ -115,7 +136,7 @@ Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
     if (system.Zones()[z].gap_m < 0.0) closed.insert(z);
   }
   for (int iteration = 0; iteration < kMaxActiveSetIterations; ++iteration) {
-    Eigen::VectorXd next = SolveWithActive(system, rows, closed);
+    Eigen::VectorXd next = SolveWithActive(system, rows, closed, x);
     const Eigen::VectorXd step = next - x;
     const double e0 = energy(x), slope = energy.Gradient(x).dot(step);
     double t = 1.0;
@@ -123,7 +144,7 @@ Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
     if (t < 1.0) next = x + t * step;
     x = std::move(next);
     const std::set<std::size_t> now = energy.Closed(x);
-    if (t == 1.0 && now == closed) return x;
+    if (t == 1.0 && now == closed && Converged(system, closed, step, x)) return x;
     closed = now;
   }
   throw InputError(

@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "core/contact_law.h"
 #include "core/end_condition.h"
 #include "core/impact_statistics.h"
 #include "core/stability_bounds.h"
+#include "core/wear.h"
 
 namespace shockmap {
 
@@ -33,9 +35,20 @@ struct SceneBeam {
   std::optional<double> f_trunc_hz, r_ftrunc;
 };
 
+// A power law F = k d^p for a zone's normal force (Hertz: p = 3/2).
+struct ScenePowerLaw {
+  double coefficient = 0.0;  // k, N/m^p.
+  double exponent = 1.5;     // p in [1, 3].
+  // The penetration at which the stability bound takes the law's tangent stiffness p k d^(p-1)
+  // (the largest the zone is expected to reach; a run that goes deeper is flagged).
+  double bound_penetration_m = 0.0;
+};
+
 // A contact at one height: beam a against a stop fixed to the base (beam_b < 0) or against
 // beam b. Contact when the penetration d = n . (u_a - u_b) - gap is positive; the force
-// F = k d + c d' (never pulling) pushes a along -n and b along +n.
+// F = k d + c d' (never pulling), or k d^p + c d' with a power law, pushes a along -n and b
+// along +n. With friction (scenes bending in both planes), a tangential force along
+// t = (-n_z, n_y) acts on a and its reaction on b (docs/physics.md §7).
 struct SceneZone {
   std::string name;
   int beam_a = 0;
@@ -43,9 +56,16 @@ struct SceneZone {
   double height_m = 0.0;
   double normal_y = 1.0, normal_z = 0.0;  // Unit vector from a towards b (or the stop).
   double gap_m = 0.0;
+  // The linear law's k; with a power law, its tangent stiffness at the bound penetration (what
+  // the stability bound gives the zone).
   double stiffness_n_per_m = 0.0;
   double damping_n_s_per_m = 0.0;
-  double y_m = 0.0, z_m = 0.0;  // Where the zone sits in the cross-section (for maps).
+  double y_m = 0.0, z_m = 0.0;               // Where the zone sits in the cross-section (for maps).
+  std::optional<ScenePowerLaw> power_law{};  // In place of the linear law.
+  std::optional<FrictionLaw> friction{};
+
+  // The zone's laws as the models evaluate them.
+  ContactLaw Law() const;
 };
 
 struct ModalDampingEffect {
@@ -113,7 +133,8 @@ struct SceneOutputs {
   double rest_duration_s = 0.0;  // Shock grouping; required with shocks.
   // Impact statistics of every zone (docs/physics.md §6), streamed: no history needed.
   bool impact_statistics = false;
-  ImpactCounting impact_counting;  // Its rest duration required (> 0) with impact_statistics.
+  ImpactCounting impact_counting;       // Its rest duration required (>= 0) with impact_statistics.
+  std::vector<int> impact_table_zones;  // The zones whose impacts are listed one by one.
   int record_stride = 1;
 };
 
@@ -127,6 +148,7 @@ struct Scene {
   std::optional<BaseMotionEffect> base_motion;
   std::vector<StaticForceEffect> static_forces;
   std::vector<InitialStateEffect> initial_state;
+  std::optional<WearLaw> wear;  // Wear volumes of the zones (needs impact statistics).
   SceneSolver solver;
   SceneOutputs outputs;
 

@@ -26,4 +26,15 @@ double StaticForceEffect::At(double t_s) const {
   return force_n * std::min(1.0, (t_s - start_s) / ramp_s);
 }
 
+ContactLaw SceneZone::Law() const {
+  ContactLaw law;
+  law.normal = {stiffness_n_per_m, damping_n_s_per_m};
+  if (power_law) {
+    law.normal = {power_law->coefficient, damping_n_s_per_m, power_law->exponent,
+                  power_law->bound_penetration_m};
+  }
+  law.friction = friction;
+  return law;
+}
+
 }  // namespace shockmap

@@ -123,27 +123,19 @@ std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
   return heights;
 }
 
-double SharpOmegaSquared(const SceneModalSystem& system, const Eigen::VectorXd& omega) {
-  const int n = system.Size();
-  // Power iteration approaches the top of the spectrum from below; the margin keeps the bound
-  // on the safe side (checked against the dense solver in the tests).
-  if (n > kDenseBoundLimit) return (1.0 + kPowerIterationMargin) * system.StiffestOmegaSquared();
-  Eigen::MatrixXd k = omega.array().square().matrix().asDiagonal();
-  for (const auto& z : system.Zones()) {
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
-    auto put = [&](int offset, double scale, const std::vector<double>& phi) {
-      if (offset < 0) return;
-      for (std::size_t i = 0; i < phi.size(); ++i)
-        r[offset + static_cast<int>(i)] += scale * phi[i];
-    };
-    put(z.a_y, z.normal_y, z.phi_a);
-    put(z.a_z, z.normal_z, z.phi_a);
-    put(z.b_y, -z.normal_y, z.phi_b);
-    put(z.b_z, -z.normal_z, z.phi_b);
-    k.noalias() += z.stiffness_n_per_m * r * r.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, Eigen::EigenvaluesOnly);
-  return eig.eigenvalues().maxCoeff();
+// The zone's row along a direction (n for the normal, t for the tangent) in the scene's
+// coordinates: d . (u_a - u_b) = row . x.
+Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+  auto put = [&](int offset, double scale, const std::vector<double>& phi) {
+    if (offset < 0) return;
+    for (std::size_t i = 0; i < phi.size(); ++i) r[offset + static_cast<int>(i)] += scale * phi[i];
+  };
+  put(z.a_y, dir_y, z.phi_a);
+  put(z.a_z, dir_z, z.phi_a);
+  put(z.b_y, -dir_y, z.phi_b);
+  put(z.b_z, -dir_z, z.phi_b);
+  return r;
 }
 
 // Where each beam's modes sit in the scene's coordinates: beam b's block in direction d (y, z)
@@ -239,8 +231,8 @@ std::vector<ZoneTerm> ZoneTerms(const Scene& scene, const Layout& layout) {
     t.normal_y = z.normal_y;
     t.normal_z = layout.dirs == 2 ? z.normal_z : 0.0;
     t.gap_m = z.gap_m;
-    t.stiffness_n_per_m = z.stiffness_n_per_m;
-    t.damping_n_s_per_m = z.damping_n_s_per_m;
+    t.law = z.Law();
+    if (layout.dirs == 1) t.law.friction.reset();  // No tangential motion in a planar scene.
     zones.push_back(std::move(t));
   }
   return zones;
@@ -341,6 +333,26 @@ void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
 
 }  // namespace
 
+double SharpOmegaSquared(const SceneModalSystem& system, std::span<const double> normal_stiffness) {
+  const int n = system.Size();
+  // Power iteration approaches the top of the spectrum from below; the margin keeps the bound
+  // on the safe side (checked against the dense solver in the tests).
+  if (n > kDenseBoundLimit) {
+    return (1.0 + kPowerIterationMargin) * system.StiffestOmegaSquared(normal_stiffness);
+  }
+  Eigen::MatrixXd k = system.OmegaSquared().asDiagonal();
+  for (std::size_t i = 0; i < system.Zones().size(); ++i) {
+    const ZoneTerm& z = system.Zones()[i];
+    const Eigen::VectorXd r = ZoneRow(z, n, z.normal_y, z.normal_z);
+    k.noalias() += normal_stiffness[i] * r * r.transpose();
+    if (!z.law.friction) continue;
+    const Eigen::VectorXd t = ZoneRow(z, n, -z.normal_z, z.normal_y);
+    k.noalias() += z.law.friction->tangential_stiffness_n_per_m * t * t.transpose();
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k, Eigen::EigenvaluesOnly);
+  return eig.eigenvalues().maxCoeff();
+}
+
 FeBeamModel AssembleSceneBeam(const SceneBeam& b) {
   FeBeamModel fe =
       AssembleBeam({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}, b.n_elements, b.at_zero, b.at_length);
@@ -371,7 +383,8 @@ SceneModel BuildSceneModel(const Scene& scene) {
   SetRows(scene, layout, model);
 
   model.bounds.dt_paper_s = 1.0 / (4.0 * HighestTruncationHz(layout));
-  model.bounds.omega_max_rad_s = std::sqrt(SharpOmegaSquared(*model.system, omega));
+  model.bounds.omega_max_rad_s =
+      std::sqrt(SharpOmegaSquared(*model.system, model.system->Contacts().BoundStiffnesses()));
   model.bounds.dt_sharp_s = 2.0 / model.bounds.omega_max_rad_s;
   return model;
 }

@@ -29,7 +29,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
   (void)beta_dt2;
   NegativeProduct(omega_squared_, x_pred, a);
   for (const auto& load : loads_) a.noalias() += load.Amplitude(t_s) * load.shape;
-  contacts_.AddForces(x_pred, v_pred, a);
+  contacts_.AddForces(t_s, x_pred, v_pred, a);
   if (modal_damping_) {
     const auto& d = *modal_damping_;
     if (gamma_dt != divisor_gamma_dt_) {
@@ -41,11 +41,18 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
   return true;
 }
 
-double SceneModalSystem::SlidingSpeed(int contact, const Eigen::VectorXd& v) const {
+TangentialSample SceneModalSystem::Tangential(int contact, const Eigen::VectorXd& v) const {
   const ZoneTerm& z = zones_[static_cast<std::size_t>(contact)];
-  if (z.a_y < 0 || z.a_z < 0) return std::numeric_limits<double>::quiet_NaN();
+  if (z.a_y < 0 || z.a_z < 0) return {};
   const auto [w_y, w_z] = contacts_.RelativeVelocity(contact, v);
-  return std::abs(-z.normal_z * w_y + z.normal_y * w_z);
+  return {std::abs(-z.normal_z * w_y + z.normal_y * w_z),
+          std::abs(contacts_.TangentialForce(contact)), contacts_.Sticks(contact)};
+}
+
+double SceneModalSystem::PenetrationRate(int contact, const Eigen::VectorXd& v) const {
+  const ZoneTerm& z = zones_[static_cast<std::size_t>(contact)];
+  const auto [w_y, w_z] = contacts_.RelativeVelocity(contact, v);
+  return z.normal_y * w_y + z.normal_z * w_z;
 }
 
 Energies SceneModalSystem::EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
@@ -66,7 +73,7 @@ double SceneModalSystem::ExternalPower(double t_s, const Eigen::VectorXd& v) con
   return p;
 }
 
-double SceneModalSystem::StiffestOmegaSquared() const {
+double SceneModalSystem::StiffestOmegaSquared(std::span<const double> normal_stiffness) const {
   // Power iteration from a vector touching every coordinate. The Rayleigh quotients rise towards
   // the largest eigenvalue from below; 300 iterations bring them within 1e-3 of it on the
   // bundles shipped (checked against the dense solver in the tests).
@@ -75,7 +82,7 @@ double SceneModalSystem::StiffestOmegaSquared() const {
   double lambda = omega_squared_.size() > 0 ? omega_squared_.maxCoeff() : 0.0;
   for (int iter = 0; iter < 300; ++iter) {
     y = omega_squared_.cwiseProduct(x);
-    contacts_.AddClosedStiffness(x, y);
+    contacts_.AddClosedStiffness(x, normal_stiffness, y);
     lambda = std::max(lambda, x.dot(y));
     const double norm = y.norm();
     if (norm == 0.0) break;

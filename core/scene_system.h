@@ -33,18 +33,24 @@ class SceneModalSystem final : public SecondOrderSystem {
                          const Eigen::VectorXd& x_pred, const Eigen::VectorXd& v_pred,
                          Eigen::VectorXd& a) override;
   std::span<const double> LastContactForces() const override { return contacts_.Forces(); }
-  // |t . (v_a - v_b)| at the zone's height, t = (-n_z, n_y) the in-plane tangent: for zones
-  // whose beam a bends in both planes; NaN otherwise (planar scenes).
-  double SlidingSpeed(int contact, const Eigen::VectorXd& v) const override;
+  // |t . (v_a - v_b)| at the zone's height, t = (-n_z, n_y) the in-plane tangent, for zones
+  // whose beam a bends in both planes (NaN otherwise: planar scenes), and the zone's friction
+  // force and state in the last solve.
+  TangentialSample Tangential(int contact, const Eigen::VectorXd& v) const override;
+  bool HasFriction(int contact) const override { return contacts_.HasFriction(contact); }
+  // n . (v_a - v_b) at the zone's height.
+  double PenetrationRate(int contact, const Eigen::VectorXd& v) const override;
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
   double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool HasExternalLoads() const override { return !loads_.empty(); }
   double ExternalPower(double t_s, const Eigen::VectorXd& v) const override;
 
-  // The largest eigenvalue of diag(omega^2) + sum_z k_z r_z r_z^T (every zone closed), by power
-  // iteration on the operator: the sharp central-difference bound is 2 / sqrt of it.
-  double StiffestOmegaSquared() const;
+  // The largest eigenvalue of diag(omega^2) + sum_z (k_z r_z r_z^T + k_t,z t_z t_z^T) (every
+  // zone closed with normal stiffness k_z, zone order, and the tangential springs of its zones
+  // with friction), by power iteration on the operator: the sharp central-difference bound is
+  // 2 / sqrt of it.
+  double StiffestOmegaSquared(std::span<const double> normal_stiffness) const;
   const std::vector<ZoneTerm>& Zones() const { return zones_; }
   // The zones as the step evaluates them: per-zone forces, relative displacements and
   // velocities (core/contact_stations.h).

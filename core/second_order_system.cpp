@@ -10,7 +10,7 @@ double ContactEnergy(const std::vector<PointContact>& contacts, const Eigen::Vec
 
 bool AnyContactDamping(const std::vector<PointContact>& contacts) {
   for (const auto& c : contacts) {
-    if (c.damping_n_s_per_m != 0.0) return true;
+    if (c.law.damping_n_s_per_m != 0.0) return true;
   }
   return false;
 }
@@ -19,13 +19,14 @@ double ContactDampingPower(const std::vector<PointContact>& contacts, const Eige
                            const Eigen::VectorXd& v) {
   double p = 0.0;
   for (const auto& c : contacts) {
-    if (c.damping_n_s_per_m == 0.0) continue;
+    if (c.law.damping_n_s_per_m == 0.0) continue;
     const double u = c.row.dot(x);
     if (u >= c.gap_m) continue;
-    // d/dt (kinetic + strain + spring) = -(k (g - u) - F) w: the damper's share, c w^2 while
-    // the force is positive, and the whole spring power k (g - u) w while it is clamped at 0.
+    // d/dt (kinetic + strain + spring) = -(F_e - F) w with F_e the elastic force: the damper's
+    // share, c w^2 while the force is positive, and the whole spring power F_e w while it is
+    // clamped at 0.
     const double w = c.row.dot(v);
-    p += (c.stiffness_n_per_m * (c.gap_m - u) - PenaltyForce(c, u, w)) * w;
+    p += (c.law.ElasticForce(c.gap_m - u) - PenaltyForce(c, u, w)) * w;
   }
   return p;
 }

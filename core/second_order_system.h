@@ -18,6 +18,13 @@ struct Energies {
   double Total() const { return kinetic_j + strain_j + contact_j; }
 };
 
+// A contact's tangential side at one step (SecondOrderSystem::Tangential).
+struct TangentialSample {
+  double sliding_speed_m_s = std::numeric_limits<double>::quiet_NaN();
+  double force_n = 0.0;  // |F_t| (N): 0 without friction.
+  bool sticks = false;   // Friction holds the two sides together (they do not slide).
+};
+
 class SecondOrderSystem {
  public:
   virtual ~SecondOrderSystem() = default;
@@ -37,11 +44,18 @@ class SecondOrderSystem {
   // forces the integrator applied, recorded without computing them again.
   virtual std::span<const double> LastContactForces() const = 0;
 
-  // The tangential sliding speed at contact `contact` (index into LastContactForces) at
-  // velocity v (m/s, >= 0): the relative velocity of the two sides there, less its normal part.
-  // NaN when the model does not carry the tangential motion of that contact (the default; in
-  // scenes, zones that bend in one plane): its wear work rate is then unavailable.
-  virtual double SlidingSpeed(int /*contact*/, const Eigen::VectorXd& /*v*/) const {
+  // The tangential side of contact `contact` (index into LastContactForces) at velocity v,
+  // after the last solve: its sliding speed, the relative velocity of the two sides less its
+  // normal part (m/s, >= 0; NaN when the model does not carry the tangential motion of that
+  // contact, the default, and in scenes the zones that bend in one plane: its wear work rate is
+  // then unavailable), and with friction its tangential force and whether it sticks.
+  virtual TangentialSample Tangential(int /*contact*/, const Eigen::VectorXd& /*v*/) const {
+    return {};
+  }
+  // True when the contact has friction (its tangential force and stick state then matter).
+  virtual bool HasFriction(int /*contact*/) const { return false; }
+  // The rate of a contact's penetration at velocity v (m/s, > 0 closing; NaN when unknown).
+  virtual double PenetrationRate(int /*contact*/, const Eigen::VectorXd& /*v*/) const {
     return std::numeric_limits<double>::quiet_NaN();
   }
 

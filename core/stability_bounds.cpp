@@ -9,7 +9,7 @@ namespace shockmap {
 StabilityBounds ComputeStabilityBounds(const Eigen::VectorXd& omega_rad_s, double f_trunc_hz,
                                        const std::vector<PointContact>& contacts) {
   Eigen::MatrixXd k = omega_rad_s.array().square().matrix().asDiagonal();
-  for (const auto& c : contacts) k.noalias() += c.stiffness_n_per_m * c.row * c.row.transpose();
+  for (const auto& c : contacts) k.noalias() += c.law.BoundStiffness() * c.row * c.row.transpose();
   StabilityBounds b;
   b.dt_paper_s = 1.0 / (4.0 * f_trunc_hz);
   if (k.rows() > 0) {

@@ -18,8 +18,9 @@ struct StabilityBounds {
 };
 
 // omega_max^2 is the largest eigenvalue of diag(omega^2) + sum_c k_c phi_c phi_c^T, every
-// contact closed at once: the stiffest state the explicit scheme can meet. Contact damping is
-// not part of the bound. `contacts` rows are in modal coordinates.
+// contact closed at once with k_c its law's bound stiffness (NormalLaw::BoundStiffness): the
+// stiffest state the explicit scheme can meet. Contact damping is not part of the bound.
+// `contacts` rows are in modal coordinates.
 StabilityBounds ComputeStabilityBounds(const Eigen::VectorXd& omega_rad_s, double f_trunc_hz,
                                        const std::vector<PointContact>& contacts);
 

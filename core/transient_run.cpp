@@ -117,7 +117,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   std::optional<ImpactTracker> impacts;
   auto finish = [&](RunStatus status, std::string message) {
     if (impacts && summary.steps_taken > 0) {
-      result.impact_statistics = impacts->Finish(static_cast<double>(summary.steps_taken) * dt);
+      result.impact_statistics = impacts->Finish(summary.steps_taken);
     }
     summary.status = status;
     summary.message = std::move(message);
@@ -144,7 +144,9 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
     const auto forces = system.LastContactForces();
     result.max_contact_force_n.assign(forces.begin(), forces.end());
   }
-  if (options.track_impact_statistics) impacts.emplace(system, options.impact_counting, v0);
+  if (options.track_impact_statistics) {
+    impacts.emplace(system, options.impact_counting, options.listed_impact_contacts, v0, dt);
+  }
 
   // Steps until the next record and the next check: counted down, no division per step.
   int to_record = options.record_stride, to_check = options.divergence_check_stride;
@@ -162,7 +164,7 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
         result.max_contact_force_n[c] = std::max(result.max_contact_force_n[c], forces[c]);
       }
     }
-    if (impacts) impacts->Step(integrator.V(), dt);
+    if (impacts) impacts->Step(integrator.V());
     if (dissipates) {
       const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
       dissipated += 0.5 * dt * (power_before + power_now);

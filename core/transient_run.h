@@ -44,9 +44,11 @@ struct TransientOptions {
   // The largest force of each contact over the run, from every step (cheap: no history kept).
   bool track_max_contact_force = false;
   // The impact statistics of each contact (docs/physics.md §6), from every step, streamed (no
-  // history kept); contacts and impacts told apart by impact_counting (checked by IsValid).
+  // history kept); contacts and impacts told apart by impact_counting (checked by IsValid), in
+  // its convention and window; the contacts listed keep one record per impact.
   bool track_impact_statistics = false;
   ImpactCounting impact_counting;
+  std::vector<int> listed_impact_contacts;
   // Displacement histories are recorded at each of these points (row . x), and velocity
   // histories (row . v) too when record_velocity.
   std::vector<Eigen::VectorXd> observed_rows;
@@ -82,7 +84,8 @@ struct TransientResult {
   // One per contact (or per recorded_contacts entry), when recorded.
   std::vector<UniformSignal> contact_force_n;
   std::vector<double> max_contact_force_n;  // One per contact, when tracked.
-  // One per contact, when tracked, over the steps taken (empty if none was).
+  // One per contact, when tracked, over the window within the steps taken (empty if it held
+  // none).
   std::vector<ImpactStatistics> impact_statistics;
   EnergyHistory energy;  // Empty unless record_energy.
 };

@@ -13,7 +13,7 @@ void ThrowCorrupt(const std::string& database_path, const std::string& row,
   throw DbError(database_path + ": database corrupt: " + row + ": " + reason);
 }
 
-const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
+const std::string& StoredText(const TableCell& cell, const std::string& database_path,
                               const std::string& row, const std::string& column) {
   if (const auto* text = std::get_if<std::string>(&cell)) return *text;
   const char* held = std::holds_alternative<std::monostate>(cell) ? "NULL"
@@ -22,7 +22,7 @@ const std::string& StoredText(const QueryCell& cell, const std::string& database
   ThrowCorrupt(database_path, row, column + " holds " + held + " where text belongs");
 }
 
-std::int64_t StoredCount(const QueryCell& cell, const std::string& database_path,
+std::int64_t StoredCount(const TableCell& cell, const std::string& database_path,
                          const std::string& row, const std::string& column, std::int64_t max) {
   const auto* count = std::get_if<std::int64_t>(&cell);
   if (count == nullptr || *count < 0 || *count > max) {

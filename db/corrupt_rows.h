@@ -9,9 +9,10 @@
 #include <string_view>
 #include <vector>
 
-#include "db/canonical_points.h"
-#include "db/read_only_query.h"
-#include "db/scene_points.h"
+#include "db/sqlite_handle.h"
+#include "records/canonical_records.h"
+#include "records/scene_records.h"
+#include "records/table.h"
 
 namespace shockmap {
 
@@ -22,12 +23,12 @@ namespace shockmap {
 // The text of a cell its column declares TEXT NOT NULL; DbError "<database_path>: database
 // corrupt: <row>: <column> holds <what it holds> where text belongs" when the file holds
 // something else there (SQLite does not check the constraint on reading).
-const std::string& StoredText(const QueryCell& cell, const std::string& database_path,
+const std::string& StoredText(const TableCell& cell, const std::string& database_path,
                               const std::string& row, const std::string& column);
 
 // A count stored as an integer from 0 to `max` (modes, steps); DbError "... <column> holds
 // <value> (a count from 0 to <max>)" otherwise.
-std::int64_t StoredCount(const QueryCell& cell, const std::string& database_path,
+std::int64_t StoredCount(const TableCell& cell, const std::string& database_path,
                          const std::string& row, const std::string& column, std::int64_t max);
 
 // One stored signal, named by its column.

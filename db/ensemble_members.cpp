@@ -4,48 +4,36 @@
 #include <fmt/ranges.h>
 
 #include "db/corrupt_rows.h"
+#include "db/read_only_query.h"
 #include "db/stored_json.h"
 
 namespace shockmap {
 
-const PointTable kEnsembleMembers{"ensemble_members", {"state", "setting_json", "member"}};
-
 namespace {
 
-constexpr const char* kZoneColumns =
-    "max_force_n, impacts, impacts_per_s, rebounds_per_impact, mean_impact_duration_s, "
-    "longest_impact_duration_s, contact_time_fraction, mean_force_n, mean_force_in_contact_n, "
-    "rms_force_n, impulse_n_s, wear_work_rate_w";
-
 void InsertZones(Connection& c, std::int64_t point_id, const std::vector<EnsembleZoneRow>& zones) {
-  Statement insert =
-      c.Prepare(std::string("INSERT INTO ensemble_member_zones(point_id, zone, ") + kZoneColumns +
-                ") VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+  Statement insert = c.Prepare("INSERT INTO ensemble_member_zones(point_id, zone, " +
+                               ColumnList(kEnsembleZoneColumns) + ") VALUES (?, ?, " +
+                               Placeholders(std::size(kEnsembleZoneColumns)) + ")");
   for (std::size_t i = 0; i < zones.size(); ++i) {
-    const EnsembleZoneRow& z = zones[i];
     insert.Reset();
-    insert
-        .BindAll(point_id, static_cast<std::int64_t>(i), z.max_force_n, z.impacts, z.impacts_per_s,
-                 z.rebounds_per_impact, z.mean_impact_duration_s, z.longest_impact_duration_s,
-                 z.contact_time_fraction, z.mean_force_n, z.mean_force_in_contact_n, z.rms_force_n,
-                 z.impulse_n_s, z.wear_work_rate_w)
-        .Run();
+    insert.Bind(1, point_id).Bind(2, static_cast<std::int64_t>(i));
+    BindRecord(insert, 3, zones[i], kEnsembleZoneColumns);
+    insert.Run();
   }
 }
 
-std::optional<std::int64_t> OptionalInt(const Statement& s, int i) {
-  if (s.IsNull(i)) return std::nullopt;
-  return s.GetInt(i);
-}
-
-// Columns `first`... of a row read by kZoneColumns.
-EnsembleZoneRow ZoneAt(const Statement& s, int first) {
-  EnsembleZoneRow z;
-  z.max_force_n = s.GetDouble(first);
-  z.impacts = OptionalInt(s, first + 1);
-  int column = first + 2;
-  for (auto field : kZoneStatistics) z.*field = s.GetOptionalDouble(column++);
-  return z;
+void InsertImpacts(Connection& c, std::int64_t point_id,
+                   const std::vector<EnsembleImpactRow>& impacts) {
+  Statement insert = c.Prepare("INSERT INTO ensemble_member_impacts(point_id, " +
+                               ColumnList(kEnsembleImpactColumns) + ") VALUES (?, " +
+                               Placeholders(std::size(kEnsembleImpactColumns)) + ")");
+  for (const EnsembleImpactRow& impact : impacts) {
+    insert.Reset();
+    insert.Bind(1, point_id);
+    BindRecord(insert, 2, impact, kEnsembleImpactColumns);
+    insert.Run();
+  }
 }
 
 // A nominal run's largest forces, one per zone, are finite (the zones' count is the views'
@@ -56,16 +44,15 @@ void CheckEnsembleReference(const std::string& database_path, const EnsembleRefe
 }
 
 std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t study_id) {
-  Statement s = c.Prepare(
-      "SELECT reference_id, reference_key, state, status, message, zones_json, max_force_n, "
-      "steps, wall_s FROM ensemble_references WHERE reference_id IN (SELECT reference_id FROM "
-      "ensemble_members WHERE study_id = ?) ORDER BY reference_id");
+  Statement s = c.Prepare("SELECT reference_id, " + ColumnList(kEnsembleReferenceColumns) +
+                          " FROM ensemble_references WHERE reference_id IN (SELECT reference_id "
+                          "FROM ensemble_members WHERE study_id = ?) ORDER BY reference_id");
   s.Bind(1, study_id);
   std::vector<EnsembleReferenceRow> rows;
   while (s.Step()) {
     EnsembleReferenceRow r;
-    s.ReadColumns(r.reference_id, r.reference_key, r.state, r.status, r.message, r.zones_json,
-                  r.max_force_n, r.steps, r.wall_s);
+    s.ReadColumn(0, r.reference_id);
+    ReadRecord(s, 1, r, kEnsembleReferenceColumns);
     CheckEnsembleReference(c.Path(), r);
     rows.push_back(std::move(r));
   }
@@ -74,9 +61,8 @@ std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t stu
 
 std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
   Statement s = c.Prepare(
-      std::string(
-          "SELECT p.point_id, p.state, p.setting_json, p.member, p.wall_s, p.cpu_s, z.zone, ") +
-      kZoneColumns +
+      "SELECT p.point_id, p.state, p.setting_json, p.member, p.wall_s, p.cpu_s, z.zone, " +
+      ColumnList(kEnsembleZoneColumns, "z.") +
       " FROM ensemble_members p LEFT JOIN ensemble_member_zones z ON z.point_id = p.point_id "
       "WHERE p.study_id = ? AND p.status = 'ok' ORDER BY p.point_id, z.zone");
   s.Bind(1, study_id);
@@ -92,7 +78,7 @@ std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
     }
     if (s.IsNull(6)) continue;  // A member without zone rows (CheckEnsemble refuses it).
     members.back().zone_indices.push_back(s.GetInt(6));
-    members.back().zones.push_back(ZoneAt(s, 7));
+    ReadRecord(s, 7, members.back().zones.emplace_back(), kEnsembleZoneColumns);
   }
   return members;
 }
@@ -116,40 +102,27 @@ std::vector<StoredMember> ReadMembersNotOk(Connection& c, std::int64_t study_id)
 void WriteScore(Connection& c, std::int64_t point_id,
                 const std::optional<EnsembleMemberRow>& score) {
   c.Prepare("DELETE FROM ensemble_member_zones WHERE point_id = ?").Bind(1, point_id).Run();
-  Statement update = c.Prepare(
-      "UPDATE ensemble_members SET reference_id = ?, member_seed = ?, coordinates = ?, "
-      "dt_used_s = ?, steps = ?, wall_s = ?, cpu_s = ?, max_energy_ratio = ? WHERE point_id = ?");
-  if (score) {
-    const EnsembleMemberRow& r = *score;
-    update.BindAll(r.reference_id, r.member_seed, r.coordinates, r.dt_used_s, r.steps, r.wall_s,
-                   r.cpu_s, r.max_energy_ratio);
-    InsertZones(c, point_id, r.zones);
-  } else {
-    for (int i = 1; i <= 8; ++i) update.BindNull(i);
-  }
-  update.Bind(9, point_id).Run();
+  c.Prepare("DELETE FROM ensemble_member_impacts WHERE point_id = ?").Bind(1, point_id).Run();
+  Statement update = c.Prepare("UPDATE ensemble_members SET " +
+                               Assignments(kEnsembleMemberColumns) + " WHERE point_id = ?");
+  const int next = score ? BindRecord(update, 1, *score, kEnsembleMemberColumns)
+                         : BindNulls(update, 1, kEnsembleMemberColumns);
+  if (score) InsertZones(c, point_id, score->zones);
+  if (score) InsertImpacts(c, point_id, score->impacts);
+  update.Bind(next, point_id).Run();
 }
 
 std::optional<EnsembleReferenceRow> FindEnsembleReference(StudyDatabase& db,
                                                           const std::string& key) {
-  using R = EnsembleReferenceRow;
-  auto row = FindRow(db,
-                     "SELECT reference_id, state, status, message, zones_json, max_force_n, steps, "
-                     "wall_s FROM ensemble_references WHERE reference_key = ?",
-                     key, &R::reference_key, &R::reference_id, &R::state, &R::status, &R::message,
-                     &R::zones_json, &R::max_force_n, &R::steps, &R::wall_s);
+  auto row = FindReferenceRow<EnsembleReferenceRow>(db, "ensemble_references", key,
+                                                    kEnsembleReferenceColumns);
   if (row) CheckEnsembleReference(db.Raw().Path(), *row);
   return row;
 }
 
-std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRow& r,
+std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRow& reference,
                                     std::int64_t run_id) {
-  return InsertRow(db,
-                   "INSERT INTO ensemble_references(reference_key, state, status, message, "
-                   "zones_json, max_force_n, steps, wall_s, run_id, created_utc) VALUES (?, ?, ?, "
-                   "?, ?, ?, ?, ?, ?, ?)",
-                   r.reference_key, r.state, r.status, r.message, r.zones_json, r.max_force_n,
-                   r.steps, r.wall_s, run_id, UtcNow());
+  return InsertReference(db, "ensemble_references", reference, kEnsembleReferenceColumns, run_id);
 }
 
 namespace {
@@ -243,6 +216,19 @@ StoredEnsemble ReadEnsemble(Connection& c, const std::string& study) {
   e.not_ok = ReadMembersNotOk(c, study_id);
   CheckEnsemble(c.Path(), study, e);
   return e;
+}
+
+Table EnsembleImpacts(const std::string& database_path, const std::string& study) {
+  return RunReadOnlyQuery(
+      database_path,
+      "SELECT p.point_id, p.state, p.setting_json, p.member, "
+      "json_extract(r.zones_json, '$[' || i.zone || '].name') AS zone_name, " +
+          ColumnList(kEnsembleImpactColumns, "i.") +
+          " FROM ensemble_member_impacts i JOIN ensemble_members p ON p.point_id = i.point_id "
+          "JOIN studies st ON st.study_id = p.study_id LEFT JOIN ensemble_references r ON "
+          "r.reference_id = p.reference_id WHERE st.name = ?1 AND p.status = 'ok' "
+          "ORDER BY p.point_id, i.zone, i.impact",
+      {study});
 }
 
 std::vector<std::string> EnsembleStudies(Connection& c) {

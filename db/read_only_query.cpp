@@ -46,7 +46,7 @@ Statement PrepareOne(Connection& db, const std::string& sql) {
   return statement;
 }
 
-QueryCell Cell(const Statement& statement, int i) {
+TableCell Cell(const Statement& statement, int i) {
   switch (statement.ColumnType(i)) {
     case SQLITE_NULL:
       return std::monostate{};
@@ -74,21 +74,21 @@ bool Step(Statement& statement, const Deadline& deadline, double timeout_s) {
   }
 }
 
-class Collector : public QueryRowSink {
+class Collector : public TableSink {
  public:
-  explicit Collector(QueryResult& result) : result_(result) {}
+  explicit Collector(Table& result) : result_(result) {}
   void Columns(const std::vector<std::string>& names) override { result_.columns = names; }
-  void Row(const std::vector<QueryCell>& row) override { result_.rows.push_back(row); }
+  void Row(const std::vector<TableCell>& row) override { result_.rows.push_back(row); }
 
  private:
-  QueryResult& result_;
+  Table& result_;
 };
 
 }  // namespace
 
 void StreamReadOnlyQuery(const std::string& database_path, const std::string& sql,
                          const std::vector<std::string>& text_parameters, const QueryLimits& limits,
-                         QueryRowSink& sink) {
+                         TableSink& sink) {
   Connection db(database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
   Statement statement = PrepareOne(db, sql);
@@ -103,7 +103,7 @@ void StreamReadOnlyQuery(const std::string& database_path, const std::string& sq
   std::vector<std::string> columns;
   for (int i = 0; i < statement.ColumnCount(); ++i) columns.push_back(statement.ColumnName(i));
   sink.Columns(columns);
-  std::vector<QueryCell> row(columns.size());
+  std::vector<TableCell> row(columns.size());
   for (std::int64_t n = 0; Step(statement, deadline, limits.timeout_s); ++n) {
     if (limits.max_rows > 0 && n == limits.max_rows) {
       throw QueryLimitReached("the result has more than the row limit of " +
@@ -114,9 +114,9 @@ void StreamReadOnlyQuery(const std::string& database_path, const std::string& sq
   }
 }
 
-QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                             const std::vector<std::string>& text_parameters) {
-  QueryResult result;
+Table RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
+                       const std::vector<std::string>& text_parameters) {
+  Table result;
   Collector collector(result);
   StreamReadOnlyQuery(database_path, sql, text_parameters, {}, collector);
   return result;

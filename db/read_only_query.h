@@ -3,19 +3,12 @@
 
 #include <cstdint>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "db/sqlite_handle.h"
+#include "records/table.h"
 
 namespace shockmap {
-
-using QueryCell = std::variant<std::monostate, std::int64_t, double, std::string>;
-
-struct QueryResult {
-  std::vector<std::string> columns;
-  std::vector<std::vector<QueryCell>> rows;
-};
 
 // Bounds on one statement; 0 lifts a bound.
 struct QueryLimits {
@@ -29,14 +22,6 @@ class QueryLimitReached : public DbError {
   using DbError::DbError;
 };
 
-// Takes a statement's column names once, then its rows one by one as SQLite produces them.
-class QueryRowSink {
- public:
-  virtual ~QueryRowSink() = default;
-  virtual void Columns(const std::vector<std::string>& names) = 0;
-  virtual void Row(const std::vector<QueryCell>& row) = 0;
-};
-
 // Runs exactly one statement, binding `text_parameters` to its ?1, ?2, ..., and hands its rows
 // to `sink` without holding them. Throws DbError when the file does not exist or is not a
 // current shockmap database, the SQL does not compile, holds more than one statement, or could
@@ -44,10 +29,10 @@ class QueryRowSink {
 // read-only (see Connection::Mode::kReadOnly).
 void StreamReadOnlyQuery(const std::string& database_path, const std::string& sql,
                          const std::vector<std::string>& text_parameters, const QueryLimits& limits,
-                         QueryRowSink& sink);
+                         TableSink& sink);
 
 // StreamReadOnlyQuery without limits, its rows collected.
-QueryResult RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                             const std::vector<std::string>& text_parameters = {});
+Table RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
+                       const std::vector<std::string>& text_parameters = {});
 
 }  // namespace shockmap

@@ -21,16 +21,15 @@ ReportTables LoadReportTables(const std::string& database_path, const std::strin
   return t;
 }
 
-QueryResult StudyResultRows(const std::string& database_path, const std::string& study,
-                            bool scene_study) {
-  return RunReadOnlyQuery(database_path,
-                          std::string("SELECT * FROM ") +
-                              (scene_study ? "scene_results" : "results") +
-                              " WHERE study = ?1 ORDER BY point_id",
-                          {study});
+Table StudyResultRows(const std::string& database_path, const std::string& study,
+                      const PointTable& table) {
+  return RunReadOnlyQuery(
+      database_path,
+      "SELECT * FROM " + std::string(table.results_view) + " WHERE study = ?1 ORDER BY point_id",
+      {study});
 }
 
-QueryResult PointKeys(const std::string& database_path, const std::string& study) {
+Table PointKeys(const std::string& database_path, const std::string& study) {
   return RunReadOnlyQuery(
       database_path,
       "SELECT p.point_id, p.point_key, p.reference_key FROM points p JOIN studies st USING "
@@ -40,7 +39,7 @@ QueryResult PointKeys(const std::string& database_path, const std::string& study
 
 std::optional<ReferenceRow> StoredReference(const std::string& database_path,
                                             const std::string& reference_key) {
-  const QueryResult id = RunReadOnlyQuery(
+  const Table id = RunReadOnlyQuery(
       database_path, "SELECT reference_id FROM reference_runs WHERE reference_key = ?1",
       {reference_key});
   if (id.rows.empty()) return std::nullopt;
@@ -49,7 +48,7 @@ std::optional<ReferenceRow> StoredReference(const std::string& database_path,
 
 std::optional<std::string> StoredStudySpec(const std::string& database_path,
                                            const std::string& study) {
-  const QueryResult spec =
+  const Table spec =
       RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = ?1", {study});
   if (spec.rows.empty()) return std::nullopt;
   return StoredText(spec.rows.front().front(), database_path, "study " + study, "spec_json");

@@ -4,27 +4,28 @@
 #include <optional>
 #include <string>
 
-#include "db/canonical_points.h"
+#include "db/point_tables.h"
 #include "db/read_only_query.h"
+#include "records/canonical_records.h"
 
 namespace shockmap {
 
 struct ReportTables {
-  QueryResult outcomes;    // scheme, status, points: how many points ended how.
-  QueryResult provenance;  // One row per run: code version, compiler, host, times, points done.
-  std::string spec_json;   // The study file as stored ("" when the study is unknown).
+  Table outcomes;         // scheme, status, points: how many points ended how.
+  Table provenance;       // One row per run: code version, compiler, host, times, points done.
+  std::string spec_json;  // The study file as stored ("" when the study is unknown).
 };
 
 // Throws DbError as RunReadOnlyQuery does.
 ReportTables LoadReportTables(const std::string& database_path, const std::string& study);
 
-// Every column of the `results` view (canonical studies) or `scene_results` (scene studies)
-// for the points of `study`, by point_id.
-QueryResult StudyResultRows(const std::string& database_path, const std::string& study,
-                            bool scene_study);
+// Every column of the results view of the kind's table (`results`, `scene_results`, ...) for
+// the points of `study`, by point_id.
+Table StudyResultRows(const std::string& database_path, const std::string& study,
+                      const PointTable& table);
 
 // The keys of each point of a canonical `study`: columns point_id, point_key, reference_key.
-QueryResult PointKeys(const std::string& database_path, const std::string& study);
+Table PointKeys(const std::string& database_path, const std::string& study);
 
 // The stored reference of that key, read on a read-only connection; nothing when none is
 // stored. Throws DbError as RunReadOnlyQuery does.

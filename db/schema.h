@@ -1,11 +1,11 @@
 #pragma once
 // The study database schema, versioned by PRAGMA user_version, with forward migrations.
 
+#include "db/migrations.h"
 #include "db/sqlite_handle.h"
 
 namespace shockmap {
 
-inline constexpr int kSchemaVersion = 9;
 // PRAGMA application_id of every shockmap database ("SHMP"): tells ours from a foreign file.
 inline constexpr int kApplicationId = 0x53484D50;
 

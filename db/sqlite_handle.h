@@ -12,6 +12,8 @@
 #include <variant>
 #include <vector>
 
+#include "records/table.h"
+
 namespace shockmap {
 
 class DbError : public std::runtime_error {
@@ -22,7 +24,7 @@ class DbError : public std::runtime_error {
 class Statement;
 
 // One SQL value: NULL, integer, real or text.
-using SqlValue = std::variant<std::monostate, std::int64_t, double, std::string>;
+using SqlValue = TableCell;
 
 // True when a read-only connection to `path` may treat the file as immutable: its file system
 // is mounted read-only, or this process may not write the file or its folder and no -wal file
@@ -105,18 +107,26 @@ class Statement {
   template <typename... T>
   void ReadColumns(T&... out) const {
     int i = 0;
-    (Read(i++, out), ...);
+    (ReadColumn(i++, out), ...);
+  }
+  // Reads column i of the current row into `v` by its type; an optional is empty for NULL.
+  void ReadColumn(int i, double& v) const { v = GetDouble(i); }
+  void ReadColumn(int i, std::int64_t& v) const { v = GetInt(i); }
+  void ReadColumn(int i, int& v) const { v = static_cast<int>(GetInt(i)); }
+  void ReadColumn(int i, std::string& v) const { v = GetText(i); }
+  void ReadColumn(int i, std::vector<double>& v) const { v = GetBlob(i); }
+  template <typename T>
+  void ReadColumn(int i, std::optional<T>& v) const {
+    if (IsNull(i)) {
+      v.reset();
+    } else {
+      ReadColumn(i, v.emplace());
+    }
   }
   // True when the statement cannot modify the database (sqlite3_stmt_readonly).
   bool IsReadOnly() const;
 
  private:
-  void Read(int i, double& v) const { v = GetDouble(i); }
-  void Read(int i, std::int64_t& v) const { v = GetInt(i); }
-  void Read(int i, int& v) const { v = static_cast<int>(GetInt(i)); }
-  void Read(int i, std::string& v) const { v = GetText(i); }
-  void Read(int i, std::optional<double>& v) const { v = GetOptionalDouble(i); }
-  void Read(int i, std::vector<double>& v) const { v = GetBlob(i); }
   void Check(int rc) const;
   sqlite3* db_;
   sqlite3_stmt* stmt_;

@@ -6,6 +6,8 @@
 #include "db/corrupt_rows.h"
 #include "db/read_only_query.h"
 #include "db/schema.h"
+#include "db/stored_record.h"
+#include "records/scene_records.h"
 
 namespace shockmap {
 namespace {
@@ -20,7 +22,22 @@ std::unique_ptr<Connection> OpenReadOnly(const std::string& database_path) {
   return db;
 }
 
-std::optional<std::int64_t> FirstInteger(const QueryResult& r) {
+// The reference `reference_id` of `table`, read on a read-only connection.
+template <typename Row>
+std::optional<Row> ReadById(const std::string& database_path, std::string_view table,
+                            std::int64_t reference_id, const auto& columns) {
+  const auto db = OpenReadOnly(database_path);
+  Statement s = db->Prepare("SELECT " + ColumnList(columns) + " FROM " + std::string(table) +
+                            " WHERE reference_id = ?");
+  s.Bind(1, reference_id);
+  if (!s.Step()) return std::nullopt;
+  Row row;
+  row.reference_id = reference_id;
+  ReadRecord(s, 0, row, columns);
+  return row;
+}
+
+std::optional<std::int64_t> FirstInteger(const Table& r) {
   if (r.rows.empty() || !std::holds_alternative<std::int64_t>(r.rows.front().front())) {
     return std::nullopt;
   }
@@ -44,19 +61,9 @@ std::vector<std::int64_t> ReferenceIdsAt(const std::string& database_path, const
 
 std::optional<ReferenceRow> ReadReference(const std::string& database_path,
                                           std::int64_t reference_id) {
-  const auto db = OpenReadOnly(database_path);
-  Statement s = db->Prepare(
-      "SELECT reference_key, r_k, r_fref, r_fref_check, window_s, convergence, n_modes_free, "
-      "n_modes_contact, n_transitions, wall_s, output_dt_s, tip_m, force_n, shocks_json "
-      "FROM reference_runs WHERE reference_id = ?");
-  s.Bind(1, reference_id);
-  if (!s.Step()) return std::nullopt;
-  ReferenceRow r;
-  r.reference_id = reference_id;
-  s.ReadColumns(r.reference_key, r.r_k, r.r_fref, r.r_fref_check, r.window_s, r.convergence,
-                r.n_modes_free, r.n_modes_contact, r.n_transitions, r.wall_s, r.output_dt_s,
-                r.tip_m, r.force_n, r.shocks_json);
-  CheckReference(database_path, r);
+  const auto r =
+      ReadById<ReferenceRow>(database_path, "reference_runs", reference_id, kReferenceColumns);
+  if (r) CheckReference(database_path, *r);
   return r;
 }
 
@@ -80,25 +87,19 @@ std::optional<std::int64_t> ReferenceOfPoint(const std::string& database_path,
 
 std::optional<StoredSignals> ReadSceneReferenceSignals(const std::string& database_path,
                                                        std::int64_t reference_id) {
-  const auto db = OpenReadOnly(database_path);
-  Statement s = db->Prepare(
-      "SELECT status, output_dt_s, displacement_m, force_n FROM scene_references WHERE "
-      "reference_id = ?");
-  s.Bind(1, reference_id);
-  if (!s.Step()) return std::nullopt;
-  SceneReferenceRow r;
-  r.reference_id = reference_id;
-  s.ReadColumns(r.status, r.output_dt_s, r.displacement_m, r.force_n);
-  CheckSceneReference(database_path, r);
+  auto r = ReadById<SceneReferenceRow>(database_path, "scene_references", reference_id,
+                                       kSceneReferenceColumns);
+  if (!r) return std::nullopt;
+  CheckSceneReference(database_path, *r);
   return StoredSignals{reference_id,
-                       r.output_dt_s,
+                       r->output_dt_s,
                        {"displacement_m", "contact_force_n"},
-                       {std::move(r.displacement_m), std::move(r.force_n)}};
+                       {std::move(r->displacement_m), std::move(r->force_n)}};
 }
 
 std::optional<std::string> CanonicalPointKey(const std::string& database_path,
                                              const std::string& study, std::int64_t point_id) {
-  const QueryResult r = RunReadOnlyQuery(
+  const Table r = RunReadOnlyQuery(
       database_path,
       "SELECT p.point_key FROM points p JOIN studies st USING (study_id) WHERE st.name = ?1 AND "
       "p.point_id = CAST(?2 AS INTEGER)",

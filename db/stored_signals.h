@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "db/canonical_points.h"
+#include "records/canonical_records.h"
 
 namespace shockmap {
 

@@ -215,7 +215,7 @@ int StudyDatabase::AddPoints(const PointTable& table, std::int64_t study_id,
     insert.Run();
     added += sqlite3_changes(db_.Raw());
   }
-  if (table.refresh_views != nullptr) table.refresh_views(db_);
+  RefreshParameterView(db_, table);
   t.Commit();
   return added;
 }

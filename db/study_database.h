@@ -4,8 +4,9 @@
 // killed at any moment leaves every point either as it was or completely stored.
 //
 // What is common to every study kind lives here: studies, runs (with the writer's lease) and the
-// life of a point (pending -> running -> its outcome). Each kind keeps its own parameters,
-// scores and references (db/canonical_points.h, db/scene_points.h) in its own point table.
+// life of a point (pending -> running -> its outcome) in the kind's point table
+// (db/point_tables.h). Each kind keeps its own scores and references (db/canonical_points.h,
+// db/scene_points.h, db/ensemble_members.h).
 
 #include <cstdint>
 #include <optional>
@@ -13,7 +14,9 @@
 #include <string_view>
 #include <vector>
 
+#include "db/point_tables.h"
 #include "db/sqlite_handle.h"
+#include "db/stored_record.h"
 
 namespace shockmap {
 
@@ -35,16 +38,6 @@ struct Provenance {
 struct PointOrigin {
   std::string host;
   int rank = 0;
-};
-
-// A table of study points. Its lifecycle columns are the same for every kind: point_id,
-// study_id, point_key, reference_key, status, message, run_id, updated_utc. The parameter
-// columns are the kind's, bound in this order.
-struct PointTable {
-  std::string_view name;
-  std::vector<std::string_view> parameter_columns;
-  // Views to write again when points are added (inside AddPoints' transaction), or null.
-  void (*refresh_views)(Connection& c) = nullptr;
 };
 
 // A point to register: its key within the study, the key of its reference (equal keys share
@@ -86,7 +79,8 @@ class StudyDatabase {
   // ..."), for the run that takes up its points. Call before BeginRun.
   std::optional<std::string> UnfinishedLastRun(std::int64_t study_id);
 
-  // Inserts the points not yet in the study as 'pending'; returns how many were new.
+  // Inserts the points not yet in the study as 'pending', and writes the table's parameter view
+  // again; returns how many were new.
   int AddPoints(const PointTable& table, std::int64_t study_id,
                 const std::vector<NewPoint>& points);
   // Points left 'running' by any run but `run_id` go back to 'pending'; the caller holds the
@@ -101,7 +95,7 @@ class StudyDatabase {
   // many.
   int ReleaseRunningPoints(const PointTable& table, std::int64_t run_id);
 
-  // For the kinds' own tables in db/ (canonical_points, scene_points) only.
+  // For the kinds' own tables in db/ (canonical_points, scene_points, ensemble_members) only.
   Connection& Raw() { return db_; }
 
  private:
@@ -119,36 +113,44 @@ void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t 
                        std::int64_t run_id, const PointOrigin& origin, std::string_view status,
                        std::string_view message, WriteScore write_score);
 
-// Runs one INSERT with `values` bound in order, in its own transaction; returns the new rowid.
-template <typename... T>
-std::int64_t InsertRow(StudyDatabase& db, std::string_view sql, const T&... values) {
-  Connection& c = db.Raw();
-  Transaction t(c);
-  c.Prepare(sql).BindAll(values...).Run();
-  const std::int64_t id = c.LastInsertRowId();
-  t.Commit();
-  return id;
-}
-
-// The row of `sql` (one ? bound to `key`) read into `members` of a Row in column order, with
-// `key_member` set to the key; nullopt when there is none.
-template <typename Row, typename... M>
-std::optional<Row> FindRow(StudyDatabase& db, std::string_view sql, const std::string& key,
-                           std::string Row::*key_member, M Row::*... members) {
-  Statement s = db.Raw().Prepare(sql);
-  s.Bind(1, key);
-  if (!s.Step()) return std::nullopt;
-  Row row;
-  row.*key_member = key;
-  s.ReadColumns((row.*members)...);
-  return row;
-}
-
 // Seconds since the Unix epoch (the clock of the writer's heartbeat).
 double UnixNow();
 
 // The current UTC time as ISO 8601 with milliseconds.
 std::string UtcNow();
+
+// Stores a computed reference `row` (a record with its column table and a reference_id
+// member: the rows of reference_runs, scene_references and ensemble_references) in `table`
+// with the run that computed it and the time, in its own transaction. Returns its new id.
+template <typename Row>
+std::int64_t InsertReference(StudyDatabase& db, std::string_view table, const Row& row,
+                             const auto& columns, std::int64_t run_id) {
+  Connection& c = db.Raw();
+  Transaction t(c);
+  Statement insert =
+      c.Prepare("INSERT INTO " + std::string(table) + "(" + ColumnList(columns) +
+                ", run_id, created_utc) VALUES (" + Placeholders(std::size(columns) + 2) + ")");
+  const int next = BindRecord(insert, 1, row, columns);
+  insert.Bind(next, run_id).Bind(next + 1, UtcNow()).Run();
+  const std::int64_t id = c.LastInsertRowId();
+  t.Commit();
+  return id;
+}
+
+// The reference of `table` whose reference_key is `key`, with its id; nothing when none is
+// stored.
+template <typename Row>
+std::optional<Row> FindReferenceRow(StudyDatabase& db, std::string_view table,
+                                    const std::string& key, const auto& columns) {
+  Statement s = db.Raw().Prepare("SELECT reference_id, " + ColumnList(columns) + " FROM " +
+                                 std::string(table) + " WHERE reference_key = ?");
+  s.Bind(1, key);
+  if (!s.Step()) return std::nullopt;
+  Row row;
+  s.ReadColumn(0, row.reference_id);
+  ReadRecord(s, 1, row, columns);
+  return row;
+}
 
 namespace detail {
 void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,

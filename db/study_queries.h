@@ -6,16 +6,27 @@
 #include <string>
 #include <vector>
 
+#include "db/point_tables.h"
 #include "db/read_only_query.h"
 
 namespace shockmap {
 
-// One row per study: points, counts by status (running ones are held by a run), last update.
-QueryResult StudyProgress(const std::string& database_path);
+// One row per study of any kind: points, counts by status (running ones are held by a run),
+// last update.
+Table StudyProgress(const std::string& database_path);
+
+// The points of a kind whose PointTable lists progress_by columns (ensemble members by clearance
+// state and setting), counted by status as StudyProgress counts them: one row per study and
+// value of those columns.
+struct StudyBreakdown {
+  const PointTable* table = nullptr;
+  Table progress;
+};
+std::vector<StudyBreakdown> StudyProgressBreakdowns(const std::string& database_path);
 
 // Where the stored points were computed: one row per study, host and rank (0 in a local run;
 // 1..N-1 the worker ranks of an MPI job) with its count of points and their point_id range.
-QueryResult StudyOrigins(const std::string& database_path);
+Table StudyOrigins(const std::string& database_path);
 
 // The names of the stored studies, sorted.
 std::vector<std::string> StudyNames(const std::string& database_path);
@@ -24,9 +35,9 @@ std::vector<std::string> StudyNames(const std::string& database_path);
 // heartbeat is younger than kLeaseGraceS.
 std::optional<std::string> LiveWriter(const std::string& database_path);
 
-// Columns point_id, r_k, r_ftrunc, status, err, srf, dt_requested_s, dt_sharp_s, dt_paper_s,
-// wall_s, n_modes, steps of the points of `study` run with `scheme` that have a score row.
-QueryResult ScoredPointRows(const std::string& database_path, const std::string& study,
-                            const std::string& scheme);
+// Every column of the view `results` (the parameters, status and scores of canonical points)
+// of the points of `study` run with `scheme` that have a score row, by point_id.
+Table ScoredPointRows(const std::string& database_path, const std::string& study,
+                      const std::string& scheme);
 
 }  // namespace shockmap

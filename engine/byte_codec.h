@@ -70,6 +70,20 @@ class ByteReader {
     if (Get<std::uint8_t>() == 0) return std::nullopt;
     return Get<T>();
   }
+  // Reads into `v` what ByteWriter::Put(v) wrote, by v's type.
+  template <typename T>
+  requires std::is_arithmetic_v<T>
+  void Read(T& v) { v = Get<T>(); }
+  void Read(std::string& v) { v = GetString(); }
+  void Read(std::vector<double>& v) { v = GetDoubles(); }
+  template <typename T>
+  void Read(std::optional<T>& v) {
+    if (Get<std::uint8_t>() == 0) {
+      v.reset();
+    } else {
+      Read(v.emplace());
+    }
+  }
   bool AtEnd() const { return at_ == bytes_.size(); }
   // Throws unless every byte was read.
   void ExpectEnd() const {

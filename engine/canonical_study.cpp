@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/score_columns.h"
+#include "engine/record_codec.h"
 #include "engine/reference_store.h"
 #include "formats/comparison_json.h"
 
@@ -18,8 +20,7 @@ constexpr RepeatedTiming kShortRunTiming{5e-4, 2, 101};
 ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   ScoreRow s;
   s.reference_id = reference_id;
-  s.err = r.err;
-  s.srf = r.srf;
+  SetScoreColumns(s, kScoreColumns, r.scores);
   s.n_modes = r.n_modes;
   s.n_elements = r.n_elements;
   s.n_dofs = r.n_dofs;
@@ -38,8 +39,11 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   s.srf_definition = ToString(r.srf_definition);
   if (!r.shocks_numerical.empty()) {
     const Shock& f = r.shocks_numerical.front();
-    s.first_shock =
-        ShockColumns{f.start_s, f.impulse_n_s, f.peak_force_n, f.Duration(), f.Rebounds()};
+    s.first_shock_start_s = f.start_s;
+    s.first_shock_impulse_n_s = f.impulse_n_s;
+    s.first_shock_peak_n = f.peak_force_n;
+    s.first_shock_duration_s = f.Duration();
+    s.first_shock_rebounds = f.Rebounds();
   }
   return s;
 }
@@ -61,36 +65,6 @@ PointParameters ParametersOf(const StudyPoint& p) {
   return r;
 }
 
-void PutSignal(const UniformSignal& signal, ByteWriter& out) {
-  out.Put(signal.t0_s);
-  out.Put(signal.dt_s);
-  out.Put(signal.values);
-}
-
-UniformSignal GetSignal(ByteReader& in) {
-  UniformSignal signal;
-  signal.t0_s = in.Get<double>();
-  signal.dt_s = in.Get<double>();
-  signal.values = in.GetDoubles();
-  return signal;
-}
-
-void PutShock(const Shock& s, ByteWriter& out) {
-  for (double v : {s.start_s, s.end_s, s.peak_force_n, s.peak_time_s, s.impulse_n_s}) out.Put(v);
-  out.Put(s.n_contacts);
-  out.Put(static_cast<std::uint8_t>(s.truncated));
-}
-
-Shock GetShock(ByteReader& in) {
-  Shock s;
-  for (double* v : {&s.start_s, &s.end_s, &s.peak_force_n, &s.peak_time_s, &s.impulse_n_s}) {
-    *v = in.Get<double>();
-  }
-  s.n_contacts = in.Get<int>();
-  s.truncated = in.Get<std::uint8_t>() != 0;
-  return s;
-}
-
 }  // namespace
 
 CanonicalStudy::CanonicalStudy(StudySpec spec)
@@ -102,7 +76,8 @@ bool CanonicalStudy::KeepsSettingsOf(const nlohmann::json& stored,
 }
 
 NewPoint CanonicalStudy::Describe(const Point& point) const {
-  return {PointKey(point), ReferenceKey(spec_, point), ParameterValues(ParametersOf(point))};
+  return {PointKey(point), ReferenceKey(spec_, point),
+          CellsOf(ParametersOf(point), kPointParameterColumns)};
 }
 
 double CanonicalStudy::ReferenceCost(const Point& point) const {
@@ -156,89 +131,23 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
 }
 
 void CanonicalStudy::EncodeReference(const Reference& reference, ByteWriter& out) const {
-  out.Put(reference.key);
-  out.Put(reference.r_k);
-  out.Put(reference.window_s);
-  const ReferenceRun& run = *reference.run;
-  PutSignal(run.tip_m, out);
-  PutSignal(run.force_n, out);
-  out.Put(static_cast<std::uint64_t>(run.shocks.size()));
-  for (const Shock& shock : run.shocks) PutShock(shock, out);
-  const ReferenceSummary& s = run.summary;
-  out.Put(s.n_modes_free);
-  out.Put(s.n_modes_contact);
-  out.Put(s.n_transitions);
-  out.Put(s.shortest_period_s);
-  out.Put(s.wall_s);
-  const ReferenceConvergence& c = run.convergence;
-  for (double v : {c.r_fref, c.r_fref_check, c.difference, c.wall_check_s}) out.Put(v);
-  out.Put(run.wall_s);
+  PutRecord(ToReferenceRow(*reference.run, reference.key, reference.r_k, reference.window_s),
+            kReferenceColumns, out);
 }
 
 CanonicalStudy::Reference CanonicalStudy::DecodeReference(ByteReader& in) const {
-  Reference reference;
-  reference.key = in.GetString();
-  reference.r_k = in.Get<double>();
-  reference.window_s = in.Get<double>();
-  ReferenceRun run;
-  run.tip_m = GetSignal(in);
-  run.force_n = GetSignal(in);
-  const auto n_shocks = in.Get<std::uint64_t>();
-  for (std::uint64_t i = 0; i < n_shocks && !in.AtEnd(); ++i) run.shocks.push_back(GetShock(in));
-  ReferenceSummary& s = run.summary;
-  s.n_modes_free = in.Get<int>();
-  s.n_modes_contact = in.Get<int>();
-  s.n_transitions = in.Get<int>();
-  s.shortest_period_s = in.Get<double>();
-  s.wall_s = in.Get<double>();
-  ReferenceConvergence& c = run.convergence;
-  for (double* v : {&c.r_fref, &c.r_fref_check, &c.difference, &c.wall_check_s}) {
-    *v = in.Get<double>();
-  }
-  run.wall_s = in.Get<double>();
-  reference.run = std::make_shared<const ReferenceRun>(
-      WithTipSpectrum(std::move(run), spec_.scoring.psd, reference.window_s));
-  return reference;
+  const auto row = GetRecord<ReferenceRow>(in, kReferenceColumns);
+  return {row.reference_key, row.r_k, row.window_s,
+          std::make_shared<const ReferenceRun>(WithTipSpectrum(
+              FromReferenceRow(row, "an MPI message"), spec_.scoring.psd, row.window_s))};
 }
 
-void CanonicalStudy::EncodeScore(const ScoreRow& s, ByteWriter& out) const {
-  out.Put(s.reference_id);
-  out.Put(s.err);
-  out.Put(s.srf);
-  for (int v : {s.n_modes, s.n_elements, s.n_dofs, s.n_shocks}) out.Put(v);
-  for (double v : {s.dt_requested_s, s.dt_used_s, s.dt_paper_s, s.dt_sharp_s, s.wall_s, s.cpu_s,
-                   s.max_energy_ratio}) {
-    out.Put(v);
-  }
-  out.Put(s.steps);
-  out.Put(static_cast<std::uint8_t>(s.first_shock.has_value()));
-  if (const auto& f = s.first_shock) {
-    for (double v : {f->start_s, f->impulse_n_s, f->peak_n, f->duration_s}) out.Put(v);
-    out.Put(f->rebounds);
-  }
-  out.Put(s.shocks_json);
-  out.Put(s.srf_definition);
+void CanonicalStudy::EncodeScore(const ScoreRow& score, ByteWriter& out) const {
+  PutRecord(score, kScoreColumns, out);
 }
 
 ScoreRow CanonicalStudy::DecodeScore(ByteReader& in) const {
-  ScoreRow s;
-  s.reference_id = in.Get<std::int64_t>();
-  s.err = in.GetOptional<double>();
-  s.srf = in.GetOptional<double>();
-  for (int* v : {&s.n_modes, &s.n_elements, &s.n_dofs, &s.n_shocks}) *v = in.Get<int>();
-  for (double* v : {&s.dt_requested_s, &s.dt_used_s, &s.dt_paper_s, &s.dt_sharp_s, &s.wall_s,
-                    &s.cpu_s, &s.max_energy_ratio}) {
-    *v = in.Get<double>();
-  }
-  s.steps = in.Get<std::int64_t>();
-  if (in.Get<std::uint8_t>() != 0) {
-    ShockColumns& f = s.first_shock.emplace();
-    for (double* v : {&f.start_s, &f.impulse_n_s, &f.peak_n, &f.duration_s}) *v = in.Get<double>();
-    f.rebounds = in.Get<int>();
-  }
-  s.shocks_json = in.GetString();
-  s.srf_definition = in.GetString();
-  return s;
+  return GetRecord<ScoreRow>(in, kScoreColumns);
 }
 
 }  // namespace shockmap

@@ -4,7 +4,8 @@
 
 #include <algorithm>
 
-#include "compare/scene_run.h"
+#include "compare/scene_scoring.h"
+#include "engine/record_codec.h"
 
 namespace shockmap {
 namespace {
@@ -23,44 +24,6 @@ std::string ZonesJson(const Scene& scene) {
                      {"z_m", z.z_m}});
   }
   return zones.dump();
-}
-
-// The member's zone rows of a run that ended ok: its largest force per zone and, when streamed,
-// its impact statistics (the wear work rate where the scene carries the sliding).
-std::vector<EnsembleZoneRow> ZoneRows(const SceneRun& run) {
-  std::vector<EnsembleZoneRow> zones(run.max_contact_force_n.size());
-  for (std::size_t i = 0; i < zones.size(); ++i) {
-    EnsembleZoneRow& z = zones[i];
-    z.max_force_n = run.max_contact_force_n[i];
-    if (i >= run.impact_statistics.size()) continue;
-    const ImpactStatistics& s = run.impact_statistics[i];
-    z.impacts = s.impacts;
-    z.impacts_per_s = s.impacts_per_s;
-    z.rebounds_per_impact = s.rebounds_per_impact;
-    z.mean_impact_duration_s = s.mean_impact_duration_s;
-    z.longest_impact_duration_s = s.longest_impact_duration_s;
-    z.contact_time_fraction = s.contact_time_fraction;
-    z.mean_force_n = s.mean_force_n;
-    z.mean_force_in_contact_n = s.mean_force_in_contact_n;
-    z.rms_force_n = s.rms_force_n;
-    z.impulse_n_s = s.impulse_n_s;
-    if (s.wear_available) z.wear_work_rate_w = s.wear_work_rate_w;
-  }
-  return zones;
-}
-
-void EncodeZone(const EnsembleZoneRow& z, ByteWriter& out) {
-  out.Put(z.max_force_n);
-  out.Put(z.impacts);
-  for (auto field : kZoneStatistics) out.Put(z.*field);
-}
-
-EnsembleZoneRow DecodeZone(ByteReader& in) {
-  EnsembleZoneRow z;
-  z.max_force_n = in.Get<double>();
-  z.impacts = in.GetOptional<std::int64_t>();
-  for (auto field : kZoneStatistics) z.*field = in.GetOptional<double>();
-  return z;
 }
 
 }  // namespace
@@ -83,10 +46,10 @@ bool EnsembleStudy::KeepsSettingsOf(const Json& stored, const std::string&) cons
 }
 
 NewPoint EnsembleStudy::Describe(const Point& m) const {
-  return {MemberKey(spec_, m),
-          spec_.states[m.state].name,
-          {spec_.states[m.state].name, spec_.settings[m.setting].dump(),
-           static_cast<std::int64_t>(m.member)}};
+  const EnsembleMemberParameters parameters{spec_.states[m.state].name,
+                                            spec_.settings[m.setting].dump(), m.member};
+  return {MemberKey(spec_, m), parameters.state,
+          CellsOf(parameters, kEnsembleMemberParameterColumns)};
 }
 
 EnsembleStudy::Reference EnsembleStudy::ComputeReference(const Point& point) const {
@@ -132,7 +95,8 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
                                             std::int64_t reference_id) const {
   Outcome out;
   try {
-    const SceneRun run = RunScene(MemberScene(spec_, point));
+    const Scene scene = MemberScene(spec_, point);
+    const SceneRun run = RunScene(scene);
     const RunSummary& s = run.result.summary;
     EnsembleMemberRow row;
     row.reference_id = reference_id;
@@ -143,7 +107,10 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
     row.wall_s = s.wall_s;
     row.cpu_s = s.cpu_s;
     row.max_energy_ratio = s.max_energy_ratio;
-    if (s.status == RunStatus::kOk) row.zones = ZoneRows(run);
+    if (s.status == RunStatus::kOk) {
+      row.zones = MemberZoneRows(scene, run);
+      row.impacts = MemberImpactRows(scene, run);
+    }
     out.status = s.status;
     out.message = s.message;
     out.score = std::move(row);
@@ -153,52 +120,39 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
   return out;
 }
 
-void EnsembleStudy::EncodeReference(const Reference& r, ByteWriter& out) const {
-  out.Put(r.reference_id);
-  for (const std::string* text :
-       {&r.reference_key, &r.state, &r.status, &r.message, &r.zones_json}) {
-    out.Put(*text);
-  }
-  out.Put(r.max_force_n);
-  out.Put(r.steps);
-  out.Put(r.wall_s);
+void EnsembleStudy::EncodeReference(const Reference& reference, ByteWriter& out) const {
+  out.Put(reference.reference_id);
+  PutRecord(reference, kEnsembleReferenceColumns, out);
 }
 
 EnsembleStudy::Reference EnsembleStudy::DecodeReference(ByteReader& in) const {
-  Reference r;
-  r.reference_id = in.Get<std::int64_t>();
-  for (std::string* text : {&r.reference_key, &r.state, &r.status, &r.message, &r.zones_json}) {
-    *text = in.GetString();
-  }
-  r.max_force_n = in.GetDoubles();
-  r.steps = in.Get<std::int64_t>();
-  r.wall_s = in.Get<double>();
-  return r;
+  const auto id = in.Get<std::int64_t>();
+  Reference reference = GetRecord<Reference>(in, kEnsembleReferenceColumns);
+  reference.reference_id = id;
+  return reference;
 }
 
-void EnsembleStudy::EncodeScore(const EnsembleMemberRow& s, ByteWriter& out) const {
-  out.Put(s.reference_id);
-  out.Put(s.member_seed);
-  out.Put(s.coordinates);
-  out.Put(s.dt_used_s);
-  out.Put(s.steps);
-  for (double v : {s.wall_s, s.cpu_s, s.max_energy_ratio}) out.Put(v);
-  out.Put(static_cast<std::uint64_t>(s.zones.size()));
-  for (const EnsembleZoneRow& z : s.zones) EncodeZone(z, out);
+void EnsembleStudy::EncodeScore(const EnsembleMemberRow& score, ByteWriter& out) const {
+  PutRecord(score, kEnsembleMemberColumns, out);
+  out.Put(static_cast<std::uint64_t>(score.zones.size()));
+  for (const EnsembleZoneRow& zone : score.zones) PutRecord(zone, kEnsembleZoneColumns, out);
+  out.Put(static_cast<std::uint64_t>(score.impacts.size()));
+  for (const EnsembleImpactRow& impact : score.impacts)
+    PutRecord(impact, kEnsembleImpactColumns, out);
 }
 
 EnsembleMemberRow EnsembleStudy::DecodeScore(ByteReader& in) const {
-  EnsembleMemberRow s;
-  s.reference_id = in.Get<std::int64_t>();
-  s.member_seed = in.GetString();
-  s.coordinates = in.Get<int>();
-  s.dt_used_s = in.Get<double>();
-  s.steps = in.Get<std::int64_t>();
-  for (double* v : {&s.wall_s, &s.cpu_s, &s.max_energy_ratio}) *v = in.Get<double>();
+  EnsembleMemberRow score = GetRecord<EnsembleMemberRow>(in, kEnsembleMemberColumns);
   const auto zones = in.Get<std::uint64_t>();
-  // A truncated message throws in DecodeZone before the count is reached.
-  for (std::uint64_t i = 0; i < zones; ++i) s.zones.push_back(DecodeZone(in));
-  return s;
+  // A truncated message throws in GetRecord before the count is reached.
+  for (std::uint64_t i = 0; i < zones; ++i) {
+    score.zones.push_back(GetRecord<EnsembleZoneRow>(in, kEnsembleZoneColumns));
+  }
+  const auto impacts = in.Get<std::uint64_t>();
+  for (std::uint64_t i = 0; i < impacts; ++i) {
+    score.impacts.push_back(GetRecord<EnsembleImpactRow>(in, kEnsembleImpactColumns));
+  }
+  return score;
 }
 
 }  // namespace shockmap

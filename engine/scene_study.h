@@ -35,8 +35,8 @@ class SceneStudy {
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
 
-  // The point's scene, Err on the scored displacement and SRf on the scored zone's first
-  // shock against the reference's histories; a failed reference fails the point.
+  // The point's scene scored against the reference's histories (compare/scene_scoring.h); a
+  // failed reference fails the point.
   Outcome Score(const Point& point, const Reference& reference, std::int64_t reference_id) const;
 
   void EncodeReference(const Reference& reference, ByteWriter& out) const;
@@ -45,8 +45,6 @@ class SceneStudy {
   SceneScoreRow DecodeScore(ByteReader& in) const;
 
  private:
-  SceneScoreRow Measure(const Scene& scene, const struct SceneRun& run) const;
-
   SceneStudySpec spec_;
   StudyHeader header_;
 };

@@ -107,19 +107,13 @@ std::vector<ParameterScatter> ParseDraws(JsonObjectReader& r, const Json& scene,
   return draws;
 }
 
-std::optional<ImpactCounting> ParseImpactCounting(JsonObjectReader& r) {
+// "impact_statistics": the counting of a scene's outputs.impact_statistics, its window inside
+// the study's window_s.
+std::optional<ImpactCounting> ParseStudyImpactCounting(JsonObjectReader& r, double window_s) {
   const Json* v = r.Get("impact_statistics");
   if (v == nullptr) return std::nullopt;
   JsonObjectReader im(*v, r.File(), r.PathOf("impact_statistics"));
-  ImpactCounting counting;
-  counting.rest_duration_s = im.RequiredNumber("rest_duration_s");
-  if (!(counting.rest_duration_s > 0.0) || counting.rest_duration_s > 100.0)
-    im.Fail("rest_duration_s",
-            "value " + Shown(Json(counting.rest_duration_s)) + " must lie in (0, 100] s");
-  counting.force_threshold_n = im.Number("force_threshold_n", 0.0);
-  if (!(counting.force_threshold_n >= 0.0) || counting.force_threshold_n > 1e15)
-    im.Fail("force_threshold_n",
-            "value " + Shown(Json(counting.force_threshold_n)) + " must lie in [0, 1e15] N");
+  const ImpactCounting counting = ParseImpactCounting(im, window_s, "window_s");
   im.Finish();
   return counting;
 }
@@ -283,6 +277,7 @@ Scene SceneOf(const EnsembleStudySpec& spec, const Json& variant) {
   if (spec.impact_counting) {
     outputs.impact_statistics = true;
     outputs.impact_counting = *spec.impact_counting;
+    outputs.impact_table_zones = scene.outputs.impact_table_zones;
   }
   scene.outputs = outputs;
   scene.solver.end_time_s = spec.window_s;
@@ -396,7 +391,7 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   spec.window_s = r.Number("window_s", base.solver.end_time_s);
   if (!(spec.window_s > 0.0) || spec.window_s > 1e4)
     r.Fail("window_s", "value " + Shown(Json(spec.window_s)) + " must lie in (0, 1e4] s");
-  spec.impact_counting = ParseImpactCounting(r);
+  spec.impact_counting = ParseStudyImpactCounting(r, spec.window_s);
   spec.draws = ParseDraws(r, spec.scene, file);
   spec.states = ParseStates(r, spec.scene, file);
   spec.settings = SettingProduct(ParseSettingAxes(r, spec.scene, file));
@@ -478,8 +473,15 @@ Json DrawsJson(const EnsembleStudySpec& spec) {
 namespace {
 Json ImpactCountingJson(const EnsembleStudySpec& spec) {
   if (!spec.impact_counting) return Json();
-  return {{"rest_duration_s", spec.impact_counting->rest_duration_s},
-          {"force_threshold_n", spec.impact_counting->force_threshold_n}};
+  const ImpactCounting& c = *spec.impact_counting;
+  Json counting = {{"rest_duration_s", c.rest_duration_s},
+                   {"force_threshold_n", c.force_threshold_n}};
+  // Only where they differ from the defaults, so that studies stored before they existed keep
+  // their key.
+  if (c.convention != ImpactConvention::kShockmap) counting["convention"] = ToString(c.convention);
+  if (c.window_start_s != 0.0 || c.window_end_s != spec.window_s)
+    counting["window_s"] = {c.window_start_s, c.window_end_s};
+  return counting;
 }
 }  // namespace
 

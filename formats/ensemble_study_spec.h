@@ -50,7 +50,8 @@ struct EnsembleStudySpec {
   int members = 0;
   double window_s = 0.0;  // Every member's end time.
   // Impact statistics of every zone (docs/physics.md §6), when the file asks for them
-  // ("impact_statistics": {"rest_duration_s", "force_threshold_n"?}).
+  // ("impact_statistics": {"rest_duration_s", "force_threshold_n"?, "convention"?,
+  // "window_s"?}, as a scene's outputs.impact_statistics).
   std::optional<ImpactCounting> impact_counting;
   std::vector<ParameterScatter> draws;
   // Without "clearance_states" in the file, one state named "scene": the scene's own gaps.
@@ -71,7 +72,8 @@ EnsembleStudySpec ParseEnsembleStudySpec(const nlohmann::json& json, const std::
 
 // The member's scene: the setting, the drawn parameters and the state's gap laws with the
 // member's gap seeds applied; the end time at the window; only the largest force per zone
-// recorded, and the impact statistics when the study asks for them. Throws InputError.
+// recorded, and the impact statistics when the study asks for them (with the impacts of the
+// zones the scene's outputs.impact_statistics.impact_table lists). Throws InputError.
 Scene MemberScene(const EnsembleStudySpec& spec, const EnsembleMember& member);
 // The state's nominal scene at the refined setting: every draw at its centre, every gap at its
 // law's mean. Throws InputError.

@@ -220,6 +220,70 @@ std::vector<double> Heights(const Json& v, const std::string& file, const std::s
   return h;
 }
 
+// A zone's laws as a file gives them, in zones[] or bundle.wire: stiffness_n_per_m (the linear
+// penalty) or power_law, damping_n_s_per_m, and friction (docs/physics.md §7).
+struct ZoneLaws {
+  double stiffness_n_per_m = 0.0, damping_n_s_per_m = 0.0;
+  std::optional<ScenePowerLaw> power_law;
+  std::optional<FrictionLaw> friction;
+
+  void ApplyTo(SceneZone& z) const {
+    z.stiffness_n_per_m = stiffness_n_per_m;
+    z.damping_n_s_per_m = damping_n_s_per_m;
+    z.power_law = power_law;
+    z.friction = friction;
+  }
+};
+
+ScenePowerLaw ParsePowerLaw(JsonObjectReader& p) {
+  ScenePowerLaw law;
+  law.coefficient = Positive(p, "coefficient_n_per_m_exponent", 1e20);
+  law.exponent = InRange(p, "exponent", law.exponent, 1.0, 3.0);
+  law.bound_penetration_m = Positive(p, "bound_penetration_m", 1.0);
+  return law;
+}
+
+FrictionLaw ParseFriction(JsonObjectReader& f) {
+  FrictionLaw law;
+  law.coefficient = Positive(f, "coefficient", 10.0);
+  law.static_coefficient = InRange(f, "static_coefficient", law.coefficient, law.coefficient, 10.0);
+  law.tangential_stiffness_n_per_m = Positive(f, "tangential_stiffness_n_per_m");
+  law.tangential_damping_n_s_per_m = InRange(f, "tangential_damping_n_s_per_m", 0.0, 0.0, 1e9);
+  return law;
+}
+
+// The laws of the zones `r` describes. Friction needs the tangential motion of a scene bending
+// in both planes.
+ZoneLaws ParseZoneLaws(JsonObjectReader& r, BendingPlanes planes) {
+  ZoneLaws laws;
+  if (const Json* power = r.Get("power_law")) {
+    if (r.Has("stiffness_n_per_m")) {
+      r.Fail("power_law", "give stiffness_n_per_m (the linear law) or power_law, not both");
+    }
+    JsonObjectReader p(*power, r.File(), r.PathOf("power_law"));
+    laws.power_law = ParsePowerLaw(p);
+    p.Finish();
+    const ScenePowerLaw& law = *laws.power_law;
+    // The stiffness the stability bound takes: the tangent one at the bound penetration.
+    laws.stiffness_n_per_m =
+        NormalLaw{law.coefficient, 0.0, law.exponent}.TangentStiffness(law.bound_penetration_m);
+  } else {
+    laws.stiffness_n_per_m = Positive(r, "stiffness_n_per_m");
+  }
+  laws.damping_n_s_per_m = InRange(r, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  if (const Json* friction = r.Get("friction")) {
+    if (planes == BendingPlanes::kPlanar) {
+      r.Fail("friction",
+             "a planar scene has no tangential motion at its zones: friction needs "
+             "\"bending\": \"both\"");
+    }
+    JsonObjectReader f(*friction, r.File(), r.PathOf("friction"));
+    laws.friction = ParseFriction(f);
+    f.Finish();
+  }
+  return laws;
+}
+
 // Pin positions in the cross-section and the lattice cell of each.
 struct Lattice {
   bool row = true;
@@ -268,26 +332,25 @@ const Json& RequiredObject(JsonObjectReader& r, const std::string& key) {
 struct BundleParts {
   SceneBeam pin, wrapper;
   std::vector<double> heights;
-  double stiffness_n_per_m = 0.0, damping_n_s_per_m = 0.0;
+  ZoneLaws laws;
   const Json* pin_gap = nullptr;
   const Json* wrapper_gap = nullptr;  // nullptr: the first pin gap.
   std::string heights_path, pin_gap_path, wrapper_gap_path;
 };
 
-void ParseWire(JsonObjectReader& wire, BundleParts& p) {
+void ParseWire(JsonObjectReader& wire, BendingPlanes planes, BundleParts& p) {
   const Json* heights = wire.Get("heights_m");
   if (heights == nullptr) wire.Fail("heights_m", "required");
   p.heights_path = wire.PathOf("heights_m");
   p.heights = Heights(*heights, wire.File(), p.heights_path);
-  p.stiffness_n_per_m = Positive(wire, "stiffness_n_per_m");
-  p.damping_n_s_per_m = InRange(wire, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  p.laws = ParseZoneLaws(wire, planes);
   p.pin_gap = wire.Get("gap_m");
   if (p.pin_gap == nullptr) wire.Fail("gap_m", "required");
   p.pin_gap_path = wire.PathOf("gap_m");
   wire.Finish();
 }
 
-BundleParts ParseBundleParts(JsonObjectReader& r) {
+BundleParts ParseBundleParts(JsonObjectReader& r, BendingPlanes planes) {
   BundleParts p;
   JsonObjectReader pin(RequiredObject(r, "pin"), r.File(), r.PathOf("pin"));
   p.pin = ParseBeamProperties(pin);
@@ -298,7 +361,7 @@ BundleParts ParseBundleParts(JsonObjectReader& r) {
   p.wrapper_gap_path = wrap.PathOf("gap_m");
   wrap.Finish();
   JsonObjectReader wire(RequiredObject(r, "wire"), r.File(), r.PathOf("wire"));
-  ParseWire(wire, p);
+  ParseWire(wire, planes, p);
   return p;
 }
 
@@ -361,8 +424,7 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
         z.beam_a = a;
         z.height_m = h;
         z.normal_y = ny, z.normal_z = nz;
-        z.stiffness_n_per_m = p.stiffness_n_per_m;
-        z.damping_n_s_per_m = p.damping_n_s_per_m;
+        p.laws.ApplyTo(z);
         z.y_m = l.positions[a - wrapper - 1].first + 0.5 * l.pitch_m * ny;
         z.z_m = l.positions[a - wrapper - 1].second + 0.5 * l.pitch_m * nz;
         z.beam_b = it != index.end() ? it->second : wrapper;
@@ -398,7 +460,7 @@ void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   JsonObjectReader r(v, file, "bundle");
   const Lattice lattice = ParseLattice(r);
   if (!lattice.row) scene.planes = BendingPlanes::kBoth;
-  const BundleParts parts = ParseBundleParts(r);
+  const BundleParts parts = ParseBundleParts(r, scene.planes);
   r.Finish();
   CheckBundle(lattice, parts, file);
   const int wrapper = static_cast<int>(scene.beams.size());
@@ -542,8 +604,7 @@ SceneZone ParseZone(JsonObjectReader& z, const Scene& scene,
       b ? std::pair{0.5 * (a.y_m + b->y_m), 0.5 * (a.z_m + b->z_m)} : std::pair{a.y_m, a.z_m},
       false);
   zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
-  zone.stiffness_n_per_m = Positive(z, "stiffness_n_per_m");
-  zone.damping_n_s_per_m = InRange(z, "damping_n_s_per_m", 0.0, 0.0, 1e9);
+  ParseZoneLaws(z, scene.planes).ApplyTo(zone);
   return zone;
 }
 
@@ -684,20 +745,35 @@ ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene,
   return p;
 }
 
-// outputs.contact_forces as a list of zone names: only their histories, each zone once.
-void ParseContactForceZones(const Json& list, JsonObjectReader& o, Scene& scene) {
-  scene.outputs.contact_forces = true;
+// A list of zone names at `path` (each zone once) as zone indices.
+std::vector<int> ZoneIndices(const Json& list, const std::string& file, const std::string& path,
+                             const Scene& scene) {
+  if (!list.is_array()) FailAt(file, path, "expected a list of zone names, got " + Shown(list));
+  std::vector<int> zones;
   std::unordered_set<std::string> listed;
   for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string at = o.PathOf("contact_forces") + "[" + std::to_string(i) + "]";
-    if (!list[i].is_string()) FailAt(o.File(), at, "expected a zone name, got " + Shown(list[i]));
+    const std::string at = path + "[" + std::to_string(i) + "]";
+    if (!list[i].is_string()) FailAt(file, at, "expected a zone name, got " + Shown(list[i]));
     const std::string name = list[i].get<std::string>();
     const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
                                    [&](const SceneZone& z) { return z.name == name; });
-    if (zone == scene.zones.end()) FailAt(o.File(), at, "no zone named \"" + name + "\"");
+    if (zone == scene.zones.end()) FailAt(file, at, "no zone named \"" + name + "\"");
     if (!listed.insert(name).second)
-      FailAt(o.File(), at, "zone \"" + name + "\" is listed twice; list each zone once");
-    scene.outputs.contact_force_zones.push_back(static_cast<int>(zone - scene.zones.begin()));
+      FailAt(file, at, "zone \"" + name + "\" is listed twice; list each zone once");
+    zones.push_back(static_cast<int>(zone - scene.zones.begin()));
+  }
+  return zones;
+}
+
+// outputs.impact_statistics (docs/physics.md §6): the counting, its convention and window, and
+// the zones whose impacts are listed one by one.
+void ParseImpactStatistics(JsonObjectReader& im, Scene& scene) {
+  scene.outputs.impact_statistics = true;
+  scene.outputs.impact_counting =
+      ParseImpactCounting(im, scene.solver.end_time_s, "solver.end_time_s");
+  if (const Json* listed = im.Get("impact_table")) {
+    scene.outputs.impact_table_zones =
+        ZoneIndices(*listed, im.File(), im.PathOf("impact_table"), scene);
   }
 }
 
@@ -713,7 +789,9 @@ void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
     return v != nullptr && v->get<bool>();
   };
   if (const Json* v = o.Get("contact_forces"); v != nullptr && v->is_array()) {
-    ParseContactForceZones(*v, o, scene);
+    scene.outputs.contact_forces = true;
+    scene.outputs.contact_force_zones =
+        ZoneIndices(*v, o.File(), o.PathOf("contact_forces"), scene);
   } else if (v != nullptr && !v->is_boolean()) {
     o.Fail("contact_forces", "expected true, false or a list of zone names, got " + Shown(*v));
   } else {
@@ -729,10 +807,7 @@ void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
   }
   if (const Json* impacts = o.Get("impact_statistics")) {
     JsonObjectReader im(*impacts, path, o.PathOf("impact_statistics"));
-    scene.outputs.impact_statistics = true;
-    scene.outputs.impact_counting.rest_duration_s = Positive(im, "rest_duration_s", 100.0);
-    scene.outputs.impact_counting.force_threshold_n =
-        InRange(im, "force_threshold_n", 0.0, 0.0, 1e15);
+    ParseImpactStatistics(im, scene);
     im.Finish();
   }
   scene.outputs.record_stride = o.Integer("record_stride", 1);
@@ -741,7 +816,51 @@ void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
   o.Finish();
 }
 
+// wear: Archard's law over a life (docs/physics.md §6.3), for scenes whose zones slide.
+void ParseWear(const Json& wear, const std::string& path, Scene& scene) {
+  JsonObjectReader w(wear, path, "wear");
+  WearLaw law;
+  law.coefficient_m2_per_n = Positive(w, "coefficient_m2_per_n", 1.0);
+  law.life_s = Positive(w, "life_s", 1e10);
+  w.Finish();
+  if (scene.planes == BendingPlanes::kPlanar) {
+    FailAt(path, "wear",
+           "a planar scene has no sliding at its zones: wear needs \"bending\": \"both\"");
+  }
+  if (!scene.outputs.impact_statistics) {
+    FailAt(path, "wear",
+           "wear needs outputs.impact_statistics, whose wear work rate it extends over life_s");
+  }
+  scene.wear = law;
+}
+
 }  // namespace
+
+ImpactCounting ParseImpactCounting(JsonObjectReader& im, double end_s,
+                                   const std::string& end_name) {
+  ImpactCounting c;
+  c.rest_duration_s = im.RequiredNumber("rest_duration_s");
+  if (c.rest_duration_s < 0.0 || c.rest_duration_s > 100.0) {
+    im.Fail("rest_duration_s", "value " + Shown(Json(c.rest_duration_s)) +
+                                   " must lie in [0, 100] s (0: every "
+                                   "contact is an impact)");
+  }
+  c.force_threshold_n = InRange(im, "force_threshold_n", 0.0, 0.0, 1e15);
+  const std::string convention = im.String("convention", "shockmap");
+  if (convention != "shockmap" && convention != "code_aster") {
+    im.Fail("convention",
+            "\"" + convention + "\" is not a convention: use \"shockmap\" or \"code_aster\"");
+  }
+  c.convention =
+      convention == "code_aster" ? ImpactConvention::kCodeAster : ImpactConvention::kShockmap;
+  std::tie(c.window_start_s, c.window_end_s) = Vector2(im, "window_s", {0.0, end_s}, false);
+  if (!(c.window_start_s >= 0.0 && c.window_start_s < c.window_end_s && c.window_end_s <= end_s)) {
+    im.Fail("window_s", "[" + Shown(Json(c.window_start_s)) + ", " + Shown(Json(c.window_end_s)) +
+                            "] s must lie inside the run, 0 <= start < end <= " + end_name + " = " +
+                            Shown(Json(end_s)));
+  }
+  return c;
+}
 
 Scene LoadScene(const std::string& path, const SceneFileAccess& access) {
   return ParseScene(ReadJsonFile(path), path, access);
@@ -757,6 +876,7 @@ Scene ParseScene(const nlohmann::json& json, const std::string& path,
   if (const Json* effects = r.Get("effects")) ParseEffects(*effects, path, access, scene);
   ParseSolver(r, scene);
   if (const Json* outputs = r.Get("outputs")) ParseOutputs(*outputs, path, scene);
+  if (const Json* wear = r.Get("wear")) ParseWear(*wear, path, scene);
   r.Finish();
   return scene;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/scene.h"
+#include "formats/json_reader.h"
 
 namespace shockmap {
 
@@ -27,5 +28,12 @@ Scene LoadScene(const std::string& path, const SceneFileAccess& access = {});
 // The same for a scene already read; `path` names it in messages and locates its CSV files.
 Scene ParseScene(const nlohmann::json& json, const std::string& path,
                  const SceneFileAccess& access = {});
+
+// The counting of an impact_statistics object (docs/physics.md §6), in a scene's outputs or an
+// ensemble study file: rest_duration_s in [0, 100] s (required), force_threshold_n in [0, 1e15]
+// N, convention "shockmap" (the default) or "code_aster", window_s [start, end] inside the run
+// [0, end_s] (the whole run by default); `end_name` names end_s in a refusal. Other keys are
+// the caller's. Throws InputError naming the key, the value and what is allowed.
+ImpactCounting ParseImpactCounting(JsonObjectReader& im, double end_s, const std::string& end_name);
 
 }  // namespace shockmap

@@ -1,6 +1,9 @@
 #include "formats/scene_outputs.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
+#include <tuple>
 
 #include "formats/comparison_json.h"
 #include "formats/output_file.h"
@@ -12,6 +15,17 @@ using Json = nlohmann::json;
 
 std::string BeamName(const Scene& scene, int beam) {
   return beam >= 0 ? scene.beams[beam].name : std::string("stop");
+}
+
+// How a zone's wear work rate was measured: at every step from its two sides' tangential speed
+// (no friction), or only while it slides (friction).
+const char* WearBasis(const ImpactStatistics& s) {
+  return s.sliding_only ? "sliding_only" : "tangential_speed";
+}
+
+// Archard's volume over the life, null where the wear work rate is unavailable.
+Json WearVolumeJson(const WearLaw& law, const ImpactStatistics& s) {
+  return s.wear_available ? Json(ArchardWearVolume(law, s.wear_work_rate_w)) : Json(nullptr);
 }
 
 Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
@@ -41,25 +55,50 @@ Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
                       {"first", shocks.empty() ? Json(nullptr) : ShockToJson(shocks.front())}};
   }
   if (!run.impact_statistics.empty()) {
-    zone["impact_statistics"] = ImpactStatisticsToJson(run.impact_statistics[i]);
+    Json statistics = ImpactStatisticsToJson(run.impact_statistics[i]);
+    if (scene.wear)
+      statistics["wear_volume_m3"] = WearVolumeJson(*scene.wear, run.impact_statistics[i]);
+    zone["impact_statistics"] = std::move(statistics);
   }
   return zone;
 }
 
-// The columns of impact_statistics.csv after the zone's name, in ImpactStatistics' order; an
-// unavailable wear work rate is an empty field.
+// The columns of impact_statistics.csv after the zone's name: those of the first version, then
+// those added with the conventions, friction and wear (docs/scenes.md). An unavailable wear
+// work rate, friction power or wear volume is an empty field.
 constexpr const char* kImpactColumns =
     "impacts,impacts_per_s,rebounds_per_impact,mean_impact_duration_s,"
     "longest_impact_duration_s,contact_time_fraction,mean_force_n,mean_force_in_contact_n,"
-    "rms_force_n,max_force_n,impulse_n_s,wear_work_rate_w,contacts,truncated";
+    "rms_force_n,max_force_n,impulse_n_s,wear_work_rate_w,contacts,truncated,convention,"
+    "window_start_s,window_end_s,mean_contact_duration_s,rms_force_in_contact_n,wear_basis,"
+    "friction_power_w,wear_volume_m3";
 
-void WriteImpactRow(std::ostream& out, const ImpactStatistics& s) {
+void WriteImpactRow(std::ostream& out, const ImpactStatistics& s,
+                    const std::optional<WearLaw>& wear) {
   out << s.impacts << ',' << s.impacts_per_s << ',' << s.rebounds_per_impact << ','
       << s.mean_impact_duration_s << ',' << s.longest_impact_duration_s << ','
       << s.contact_time_fraction << ',' << s.mean_force_n << ',' << s.mean_force_in_contact_n << ','
       << s.rms_force_n << ',' << s.max_force_n << ',' << s.impulse_n_s << ',';
   if (s.wear_available) out << s.wear_work_rate_w;
-  out << ',' << s.contacts << ',' << (s.truncated ? 1 : 0) << '\n';
+  out << ',' << s.contacts << ',' << (s.truncated ? 1 : 0) << ',' << ToString(s.convention) << ','
+      << s.window_start_s << ',' << s.window_end_s << ',' << s.mean_contact_duration_s << ','
+      << s.rms_force_in_contact_n << ',' << WearBasis(s) << ',';
+  if (s.wear_available && s.sliding_only) out << s.friction_power_w;
+  out << ',';
+  if (s.wear_available && wear) out << ArchardWearVolume(*wear, s.wear_work_rate_w);
+  out << '\n';
+}
+
+// The columns of impacts.csv after the zone's name and the impact's number (from 1).
+constexpr const char* kImpactRecordColumns =
+    "start_s,duration_s,peak_force_n,peak_time_s,impulse_n_s,impact_speed_m_s,contacts,rebounds,"
+    "truncated";
+
+void WriteImpactRecord(std::ostream& out, const ImpactRecord& r) {
+  out << r.start_s << ',' << r.duration_s << ',' << r.peak_force_n << ',' << r.peak_time_s << ','
+      << r.impulse_n_s << ',';
+  if (std::isfinite(r.impact_speed_m_s)) out << r.impact_speed_m_s;
+  out << ',' << r.contacts << ',' << r.contacts - 1 << ',' << (r.truncated ? 1 : 0) << '\n';
 }
 
 template <typename Row>
@@ -75,7 +114,9 @@ void WriteCsv(const std::filesystem::path& file, const std::string& header, std:
 }  // namespace
 
 Json ImpactStatisticsToJson(const ImpactStatistics& s) {
-  return {{"impacts", s.impacts},
+  return {{"convention", ToString(s.convention)},
+          {"window_s", {s.window_start_s, s.window_end_s}},
+          {"impacts", s.impacts},
           {"impacts_per_s", s.impacts_per_s},
           {"rebounds_per_impact", s.rebounds_per_impact},
           {"mean_impact_duration_s", s.mean_impact_duration_s},
@@ -84,12 +125,18 @@ Json ImpactStatisticsToJson(const ImpactStatistics& s) {
           {"mean_force_n", s.mean_force_n},
           {"mean_force_in_contact_n", s.mean_force_in_contact_n},
           {"rms_force_n", s.rms_force_n},
+          {"rms_force_in_contact_n", s.rms_force_in_contact_n},
           {"max_force_n", s.max_force_n},
           {"impulse_n_s", s.impulse_n_s},
+          {"mean_contact_duration_s", s.mean_contact_duration_s},
           {"wear_available", s.wear_available},
           {"wear_work_rate_w", s.wear_available ? Json(s.wear_work_rate_w) : Json(nullptr)},
+          {"wear_basis", WearBasis(s)},
+          {"friction_power_w",
+           s.wear_available && s.sliding_only ? Json(s.friction_power_w) : Json(nullptr)},
           {"contacts", s.contacts},
-          {"truncated", s.truncated}};
+          {"truncated", s.truncated},
+          {"impacts_listed", s.records.size()}};
 }
 
 Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
@@ -111,6 +158,20 @@ Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
                {"build_wall_s", run.build_wall_s},
                {"wall_s", s.wall_s},
                {"cpu_s", s.cpu_s}};
+  if (scene.wear) {
+    json["wear"] = {{"coefficient_m2_per_n", scene.wear->coefficient_m2_per_n},
+                    {"life_s", scene.wear->life_s}};
+  }
+  if (run.reached_bound) {
+    const ReachedBound& b = *run.reached_bound;
+    const bool closed = b.deepest_zone >= 0;
+    json["power_law_bound"] = {
+        {"exceeded", b.exceeded},
+        {"dt_sharp_at_reached_penetrations_s", b.dt_sharp_reached_s},
+        {"deepest_zone", closed ? Json(scene.zones[b.deepest_zone].name) : Json(nullptr)},
+        {"largest_penetration_m", closed ? Json(b.largest_penetration_m) : Json(nullptr)},
+        {"bound_penetration_m", closed ? Json(b.bound_penetration_m) : Json(nullptr)}};
+  }
   if (!run.max_contact_force_n.empty()) {
     const auto largest =
         std::max_element(run.max_contact_force_n.begin(), run.max_contact_force_n.end());
@@ -204,7 +265,23 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
         dir / "impact_statistics.csv", std::string("zone,") + kImpactColumns, scene.zones.size(),
         [&](std::ostream& out, std::size_t i) {
           out << CsvField(scene.zones[i].name) << ',';
-          WriteImpactRow(out, run.impact_statistics[i]);
+          WriteImpactRow(out, run.impact_statistics[i], scene.wear);
+        },
+        written);
+  }
+  if (!run.impact_statistics.empty() && !scene.outputs.impact_table_zones.empty()) {
+    std::vector<std::tuple<int, int, const ImpactRecord*>> rows;
+    for (int z : scene.outputs.impact_table_zones) {
+      const auto& records = run.impact_statistics[static_cast<std::size_t>(z)].records;
+      for (std::size_t k = 0; k < records.size(); ++k)
+        rows.emplace_back(z, static_cast<int>(k) + 1, &records[k]);
+    }
+    WriteCsv(
+        dir / "impacts.csv", std::string("zone,impact,") + kImpactRecordColumns, rows.size(),
+        [&](std::ostream& out, std::size_t i) {
+          const auto& [zone, number, record] = rows[i];
+          out << CsvField(scene.zones[static_cast<std::size_t>(zone)].name) << ',' << number << ',';
+          WriteImpactRecord(out, *record);
         },
         written);
   }

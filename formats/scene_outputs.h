@@ -15,15 +15,17 @@ namespace shockmap {
 // is null where it is unavailable (wear_available false).
 nlohmann::json ImpactStatisticsToJson(const ImpactStatistics& statistics);
 
-// Status, time step and bounds, model size, timings, and per zone the maximum force, shock
-// statistics and impact statistics when they were requested.
+// Status, time step and bounds, model size, timings, the wear law and the power laws' bound at
+// the penetrations reached when the scene has them, and per zone the maximum force, shock
+// statistics and impact statistics (with the wear volume) when they were requested.
 nlohmann::json SceneRunToJson(const Scene& scene, const SceneRun& run);
 
 // Writes into `dir` (created): summary.json always; displacements.csv (t_s, then each observed
 // point's displacement and velocity), contact_forces.csv (t_s, one column per zone),
 // energies.csv, max_contact_force.csv (one row per zone with its location), shocks.csv (one
-// row per shock) and impact_statistics.csv (one row per zone) when requested. Returns the files
-// written. Throws InputError naming a file that cannot be written.
+// row per shock), impact_statistics.csv (one row per zone, with its wear volume when the scene
+// states a wear law) and impacts.csv (one row per impact of the zones listed) when requested.
+// Returns the files written. Throws InputError naming a file that cannot be written.
 std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const SceneRun& run,
                                                      const std::filesystem::path& dir);
 

@@ -73,10 +73,7 @@ SceneScoring ParseScoring(JsonObjectReader& r, const std::string& file, const Sc
   if (!(sc.window_s > 0.0) || sc.window_s > 1e4) s.Fail("window_s", "must lie in (0, 1e4] s");
   sc.rest_duration_s = s.RequiredNumber("rest_duration_s");
   if (!(sc.rest_duration_s > 0.0)) s.Fail("rest_duration_s", "must be > 0");
-  sc.err_max = s.Number("err_max", sc.err_max);
-  sc.srf_min = s.Number("srf_min", sc.srf_min);
-  if (sc.err_max <= 0 || sc.err_max > 1) s.Fail("err_max", "must lie in (0, 1]");
-  if (sc.srf_min < 0 || sc.srf_min > 1) s.Fail("srf_min", "must lie in [0, 1]");
+  ReadThresholds(s, sc.thresholds);
   s.Finish();
   return sc;
 }

@@ -3,12 +3,14 @@
 // (by path, e.g. "solver.r_ftrunc" or "bundle.wire.stiffness_n_per_m"), the settings of the
 // reference each point is scored against (the same scene, refined), and the scoring.
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "core/scene.h"
 #include "formats/scene_file.h"
+#include "validation/scores.h"
 
 namespace shockmap {
 
@@ -20,7 +22,8 @@ struct SceneScoring {
   std::string zone;            // Name of one of its zones: SRf of its first shock.
   double window_s = 0.0;       // Every run's end time (default: the scene's).
   double rest_duration_s = 0;  // Shock grouping (required).
-  double err_max = 0.10, srf_min = 0.80;
+  // Validity thresholds by score name, read as each score's key (err_max, srf_min, ...).
+  std::map<std::string, double, std::less<>> thresholds = DefaultThresholds();
 };
 
 struct SceneStudySpec {

@@ -37,6 +37,22 @@ StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file) 
   return StudyFileKindFromString(kind->get<std::string>(), file);
 }
 
+std::map<std::string, double, std::less<>> StudyThresholds(const nlohmann::json& study,
+                                                           const std::string& file) {
+  std::map<std::string, double, std::less<>> thresholds = DefaultThresholds();
+  const StudyFileKind kind = StudyKindOf(study, file);
+  const auto scoring = study.find("scoring");
+  if (kind == StudyFileKind::kSceneEnsemble || scoring == study.end()) return thresholds;
+  JsonObjectReader s(*scoring, file, "scoring");
+  if (kind == StudyFileKind::kSceneSweep) {
+    ReadThresholds(s, thresholds);
+  } else if (const nlohmann::json* given = s.Get("thresholds")) {
+    JsonObjectReader t(*given, file, s.PathOf("thresholds"));
+    ReadThresholds(t, thresholds);
+  }
+  return thresholds;
+}
+
 StudyFile ParseStudyFile(const nlohmann::json& json, const std::string& file,
                          const SceneFileAccess& access) {
   switch (StudyKindOf(json, file)) {

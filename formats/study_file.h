@@ -11,6 +11,7 @@
 // Files written before the field existed are still read: without "kind", a file naming a
 // "scene" is a scene sweep, any other a study of the paper's problem.
 
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -33,6 +34,13 @@ StudyFileKind StudyFileKindFromString(std::string_view text, const std::string& 
 StudyFileKind StudyKindOf(const nlohmann::json& study, const std::string& file);
 
 using StudyFile = std::variant<StudySpec, SceneStudySpec, EnsembleStudySpec>;
+
+// The thresholds a study file gives its scores over the registry's defaults (validation/
+// scores.h): "scoring.thresholds" of the paper's problem, "scoring" of a scene sweep (keys
+// err_max, srf_min, ...); the defaults for an ensemble, whose members are not scored. Throws
+// InputError as the kind's reader does for a value outside a score's range.
+std::map<std::string, double, std::less<>> StudyThresholds(const nlohmann::json& study,
+                                                           const std::string& file);
 
 // Reads, dispatches and parses a study file; the whole file, and every point's scene, is
 // checked before anything runs. Throws InputError naming the file, the key path, the value and

@@ -316,8 +316,7 @@ void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
   }
   if (const Json* th = r.Get("thresholds")) {
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));
-    s.err_max = in_range(t, "err_max", t.Number("err_max", s.err_max), {0.0, true, 1.0});
-    s.srf_min = in_range(t, "srf_min", t.Number("srf_min", s.srf_min), {0.0, false, 1.0});
+    ReadThresholds(t, s.thresholds);
     t.Finish();
   }
   r.Finish();
@@ -337,6 +336,17 @@ Json ProblemJson(const CantileverImpact& p) {
 }
 
 }  // namespace
+
+void ReadThresholds(JsonObjectReader& r, std::map<std::string, double, std::less<>>& thresholds) {
+  for (const ScoreDefinition& score : Scores()) {
+    const std::string key = score.ThresholdKey();
+    if (r.Get(key) == nullptr) continue;
+    const double v = r.Number(key, 0.0);
+    const Range range{score.threshold_low, false, score.threshold_high};
+    if (!range.Contains(v)) r.Fail(key, "value " + Shown(Json(v)) + " must be " + range.Allowed());
+    thresholds[std::string(score.name)] = v;
+  }
+}
 
 std::vector<double> ModeEntryTruncations(int first_mode, int last_mode) {
   const std::vector<double> b = CharacteristicRoots(0.0, 0.0, last_mode);

@@ -3,6 +3,7 @@
 // (R_k, R_ftrunc, dt) points to compare, parsed strictly into plain structs.
 
 #include <cstddef>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "compare/comparison.h"
 #include "core/cantilever_impact.h"
 #include "formats/json_reader.h"
+#include "validation/scores.h"
 
 namespace shockmap {
 
@@ -47,9 +49,9 @@ struct ScoringSpec {
   double rest_duration_t1 = ComparisonOptions{}.rest_duration_t1;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
   ReferencePolicy reference;
-  // Validity thresholds the criteria are derived with (paper §2.4: SRf > 0.8 is acceptable).
-  double err_max = 0.10;
-  double srf_min = 0.80;
+  // Validity thresholds by score name (validation/scores.h), read from "thresholds" as each
+  // score's key (err_max, srf_min, ...).
+  std::map<std::string, double, std::less<>> thresholds = DefaultThresholds();
 };
 
 // One point of the grid: everything that varies between points.
@@ -72,6 +74,10 @@ struct StudySpec {
   std::vector<StudyPoint> points;  // Union of the grids and the listed points, without repeats.
   std::string spec_json;           // The file's JSON, compact, as stored with the study.
 };
+
+// Reads each score's threshold that `r` holds under the score's key (err_max, srf_min, ...)
+// into `thresholds`, by score name. Throws InputError for a value outside the score's range.
+void ReadThresholds(JsonObjectReader& r, std::map<std::string, double, std::less<>>& thresholds);
 
 // The name and description every study file begins with (a name of 1 to 200 characters
 // without control characters), and its "kind", which when given must be `kind`.

@@ -6,7 +6,7 @@
 // one stored blob or text cell through SQLite, as SQLite's own dbfuzz does, so that mutations
 // reach the checks of stored rows and not only the page parser. The corpus must be at the
 // current schema version (readers refuse an older file, so every input would stop at the
-// schema check): a new migration is applied to it too, e.g. with the sqlite3 shell.
+// schema check): a new migration is applied to it too, by scripts/migrate-fuzz-corpus.
 
 #include <sqlite3.h>
 #include <unistd.h>
@@ -32,7 +32,7 @@
 #include "formats/scene_study_spec.h"
 #include "formats/study_file.h"
 #include "formats/study_spec.h"
-#include "views/advice.h"
+#include "validation/advice.h"
 #include "views/cost_front.h"
 #include "views/ensemble_sizing.h"
 #include "views/scored_points.h"
@@ -59,6 +59,7 @@ void ReadViews(const std::string& db) {
   }
   Tolerating([&] { StudyProgress(db); });
   Tolerating([&] { StudyOrigins(db); });
+  Tolerating([&] { StudyProgressBreakdowns(db); });
 }
 
 // criteria, map, cost, advise, report and export of a study of the paper's problem.
@@ -68,9 +69,9 @@ void ReadCanonical(const std::string& db, const std::string& study, const nlohma
   const auto implicit = LoadScoredPoints(db, study, "implicit-full");
   const ValidityCriteria criteria = DeriveCriteria(points, CriteriaOptions{});
   Tolerating([&] { BuildCostTables(points, implicit, std::nullopt); });
-  Tolerating([&] { Advise(parsed, criteria, points, 1000.0); });
+  Tolerating([&] { Advise(parsed.problem, parsed.scoring.window_s, criteria, points, 1000.0); });
   Tolerating([&] { LoadReportTables(db, study); });
-  Tolerating([&] { StudyResultRows(db, study, false); });
+  Tolerating([&] { StudyResultRows(db, study, kCanonicalPoints); });
   for (const ScoredPoint& p : points) {
     Tolerating([&] {
       for (const std::int64_t id : ReferenceIdsAt(db, study, p.r_k)) {

@@ -13,7 +13,7 @@
 #include "compare/comparison.h"
 #include "engine/study_run.h"
 #include "formats/study_file.h"
-#include "views/advice.h"
+#include "views/advice_summary.h"
 #include "views/scored_points.h"
 
 namespace shockmap {
@@ -59,8 +59,7 @@ class QuickStudyAdvice : public ::testing::Test {
     p.r_k = a.r_k;
     p.r_ftrunc = a.r_ftrunc;
     p.status = r.status;
-    p.err = r.err;
-    p.srf = r.srf;
+    p.scores = r.scores;
     return p;
   }
 
@@ -81,26 +80,27 @@ TEST_F(QuickStudyAdvice, PassesTheThresholdsAtEveryStudiedRkAndEveryMidpoint) {
   ASSERT_EQ(asked.size(), 21u);  // 11 studied R_k and the 10 midpoints.
   const CriteriaOptions thresholds;
   for (double r_k : asked) {
-    const Advice a = Advise(spec_, criteria_, points_, r_k);
+    const Advice a = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, r_k);
     const ScoredPoint computed = Compute(a);
     EXPECT_TRUE(thresholds.Passes(computed))
         << "R_k " << r_k << ": R_ftrunc " << a.r_ftrunc << ", dt/dt_sharp " << a.dt_ratio
-        << " gives " << ToString(computed.status) << ", Err " << computed.err.value_or(NAN)
-        << ", SRf " << computed.srf.value_or(NAN) << "\n"
+        << " gives " << ToString(computed.status) << ", Err "
+        << computed.scores["err"].value_or(NAN) << ", SRf " << computed.scores["srf"].value_or(NAN)
+        << "\n"
         << AdviceSummary(a);
   }
 }
 
 TEST_F(QuickStudyAdvice, AtAStudiedRkIsItsBoundaryAndBetweenTwoTheSaferSide) {
   for (const RkBoundary& b : criteria_.boundary) {
-    const Advice a = Advise(spec_, criteria_, points_, b.r_k);
+    const Advice a = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, b.r_k);
     EXPECT_DOUBLE_EQ(a.r_ftrunc, *b.r_ftrunc_min) << b.r_k;
     EXPECT_DOUBLE_EQ(a.dt_ratio, *b.dt_ratio_max) << b.r_k;
     EXPECT_TRUE(a.warnings.empty()) << b.r_k;
   }
   // Below the knee R_k = 100 needs 21.5 where 31.6 needs 10: R_k = 90 takes 100's truncation
   // (the old advice, 10, gave Err 0.135) and the finer of the two steps, with a warning.
-  const Advice a = Advise(spec_, criteria_, points_, 90.0);
+  const Advice a = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, 90.0);
   const auto& below = criteria_.boundary[3];
   const auto& above = criteria_.boundary[4];
   ASSERT_NEAR(below.r_k, 31.6227766, 1e-6);
@@ -109,7 +109,8 @@ TEST_F(QuickStudyAdvice, AtAStudiedRkIsItsBoundaryAndBetweenTwoTheSaferSide) {
   // 0.1 is the finest studied step: nothing finer to step down to.
   EXPECT_DOUBLE_EQ(a.dt_ratio, std::min(*below.dt_ratio_max, *above.dt_ratio_max));
   // Where both sides pass at 0.9 dt_sharp, between them the advice steps down to 0.5.
-  const Advice high = Advise(spec_, criteria_, points_, std::sqrt(31622.7766 * 1e5));
+  const Advice high = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_,
+                             std::sqrt(31622.7766 * 1e5));
   EXPECT_NEAR(high.dt_ratio, 0.5, 1e-9);
   EXPECT_GT(a.r_ftrunc, 10.0);
   ASSERT_EQ(a.warnings.size(), 1u);
@@ -122,12 +123,12 @@ TEST_F(QuickStudyAdvice, AtAStudiedRkIsItsBoundaryAndBetweenTwoTheSaferSide) {
 }
 
 TEST_F(QuickStudyAdvice, OutsideTheStudiedRangeWarns) {
-  const Advice beyond = Advise(spec_, criteria_, points_, 1e7);
+  const Advice beyond = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, 1e7);
   ASSERT_EQ(beyond.warnings.size(), 1u);
   EXPECT_NE(beyond.warnings[0].find("outside the studied range"), std::string::npos);
   // Never less than the largest studied R_k needed.
   EXPECT_GE(beyond.r_ftrunc, *criteria_.boundary.back().r_ftrunc_min);
-  const Advice below = Advise(spec_, criteria_, points_, 0.1);
+  const Advice below = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, 0.1);
   ASSERT_EQ(below.warnings.size(), 1u);
   EXPECT_DOUBLE_EQ(below.r_ftrunc, *criteria_.boundary.front().r_ftrunc_min);
 }

@@ -29,7 +29,11 @@ CanonicalStudy::Outcome ScoredOutcome() {
   s.err = 0.25;
   s.n_modes = 12;
   s.steps = 123456789012;
-  s.first_shock = ShockColumns{1e-3, 2e-2, 150.0, 1e-4, 3};
+  s.first_shock_start_s = 1e-3;
+  s.first_shock_impulse_n_s = 2e-2;
+  s.first_shock_peak_n = 150.0;
+  s.first_shock_duration_s = 1e-4;
+  s.first_shock_rebounds = 3;
   s.shocks_json = R"([{"rebounds":3}])";
   s.srf_definition = "reference_window";
   return {RunStatus::kOk, "message", s};
@@ -50,9 +54,9 @@ TEST(ByteCodec, CanonicalOutcomeComesBackFieldForField) {
   EXPECT_FALSE(got.score->srf.has_value());
   EXPECT_EQ(got.score->n_modes, 12);
   EXPECT_EQ(got.score->steps, 123456789012);
-  ASSERT_TRUE(got.score->first_shock.has_value());
-  EXPECT_EQ(got.score->first_shock->rebounds, 3);
-  EXPECT_EQ(got.score->first_shock->peak_n, 150.0);
+  EXPECT_EQ(got.score->first_shock_rebounds, 3);
+  EXPECT_EQ(got.score->first_shock_peak_n, 150.0);
+  EXPECT_EQ(got.score->first_shock_duration_s, 1e-4);
   EXPECT_EQ(got.score->shocks_json, sent.score->shocks_json);
   EXPECT_EQ(got.score->srf_definition, "reference_window");
 }
@@ -100,7 +104,7 @@ TEST(ByteCodec, SceneOutcomeComesBackFieldForField) {
   EXPECT_EQ(got.score->first_shock_impulse_n_s, 0.03);
 }
 
-TEST(ByteCodec, EnsembleOutcomeComesBackZoneForZone) {
+TEST(ByteCodec, EnsembleOutcomeComesBackZoneForZoneAndImpactForImpact) {
   const EnsembleStudy ensemble(
       std::get<EnsembleStudySpec>(ReadStudyFile(Source("studies/bundle_hex_ensemble.json"))));
   EnsembleMemberRow s;
@@ -111,6 +115,15 @@ TEST(ByteCodec, EnsembleOutcomeComesBackZoneForZone) {
   s.zones[1].max_force_n = 0.0;
   s.zones[1].impacts = 3;
   s.zones[1].wear_work_rate_w = 0.25;
+  s.zones[1].wear_volume_m3 = 7.5e-14;
+  s.impacts.resize(2);
+  s.impacts[0].zone = 1;
+  s.impacts[0].impact = 1;
+  s.impacts[0].impulse_n_s = 0.125;
+  s.impacts[1].zone = 1;
+  s.impacts[1].impact = 2;
+  s.impacts[1].impact_speed_m_s = 0.5;
+  s.impacts[1].rebounds = 4;
   ByteWriter out;
   EncodeOutcome(ensemble, {RunStatus::kOk, "", s}, out);
   ByteReader in(out.Bytes());
@@ -125,6 +138,14 @@ TEST(ByteCodec, EnsembleOutcomeComesBackZoneForZone) {
   EXPECT_EQ(got.score->zones[1].impacts, 3);
   EXPECT_EQ(got.score->zones[1].wear_work_rate_w, 0.25);
   EXPECT_FALSE(got.score->zones[1].rms_force_n.has_value());
+  EXPECT_EQ(got.score->zones[1].wear_volume_m3, 7.5e-14);
+  EXPECT_FALSE(got.score->zones[1].friction_power_w.has_value());
+  ASSERT_EQ(got.score->impacts.size(), 2u);
+  EXPECT_EQ(got.score->impacts[0].impulse_n_s, 0.125);
+  EXPECT_FALSE(got.score->impacts[0].impact_speed_m_s.has_value());
+  EXPECT_EQ(got.score->impacts[1].impact, 2);
+  EXPECT_EQ(got.score->impacts[1].impact_speed_m_s, 0.5);
+  EXPECT_EQ(got.score->impacts[1].rebounds, 4);
 }
 
 TEST(ByteCodec, TruncatedOrOverlongMessagesAreRefused) {

@@ -609,7 +609,7 @@ TEST(ComputeStabilityBounds, ContactStiffensByKPhiSquared) {
   Eigen::VectorXd omega(1);
   omega << 300.0;
   const double k = 2.5e6, phi = 0.177;
-  const PointContact contact{Eigen::VectorXd::Constant(1, phi), 0.0, k, 1e3};
+  const PointContact contact{Eigen::VectorXd::Constant(1, phi), 0.0, {k, 1e3}};
   const StabilityBounds b = ComputeStabilityBounds(omega, 100.0, {contact});
   const double expected = std::sqrt(300.0 * 300.0 + k * phi * phi);
   EXPECT_NEAR(b.omega_max_rad_s, expected, 1e-14 * expected);
@@ -622,7 +622,7 @@ TEST(ComputeStabilityBounds, TwoModesOneContactMatchClosedForm) {
   Eigen::VectorXd omega(2);
   omega << 100.0, 700.0;
   const double k = 4e5, a = 0.3, b = -0.8;
-  const PointContact contact{Eigen::Vector2d(a, b), 0.0, k, 0.0};
+  const PointContact contact{Eigen::Vector2d(a, b), 0.0, {k}};
   const double p = omega[0] * omega[0] + k * a * a, q = omega[1] * omega[1] + k * b * b;
   const double r = k * a * b;
   const double lambda = 0.5 * (p + q) + std::sqrt(0.25 * (p - q) * (p - q) + r * r);
@@ -644,7 +644,7 @@ TEST(TimeStepRequest, ResolvesAgainstTheChosenBound) {
 // 6. Penalty law.
 
 TEST(PenaltyContact, ForceAndEnergyMatchTheLaw) {
-  const PointContact c{Eigen::VectorXd(), 1e-3, 2e6, 0.0};
+  const PointContact c{Eigen::VectorXd(), 1e-3, {2e6}};
   EXPECT_EQ(PenaltyForce(c, 2e-3, -5.0), 0.0);  // Above the gap.
   EXPECT_EQ(PenaltyForce(c, 1e-3, -5.0), 0.0);  // Touching: no force yet.
   EXPECT_DOUBLE_EQ(PenaltyForce(c, 0.0, 0.0), 2e6 * 1e-3);
@@ -659,7 +659,7 @@ TEST(PenaltyContact, ForceAndEnergyMatchTheLaw) {
 }
 
 TEST(PenaltyContact, DampingAddsWhileApproachingAndIsClampedAtZero) {
-  const PointContact c{Eigen::VectorXd(), 0.0, 1e6, 200.0};
+  const PointContact c{Eigen::VectorXd(), 0.0, {1e6, 200.0}};
   const double u = -1e-3;                                      // Spring part 1000 N.
   EXPECT_DOUBLE_EQ(PenaltyForce(c, u, -2.0), 1000.0 + 400.0);  // Approaching: more push.
   EXPECT_DOUBLE_EQ(PenaltyForce(c, u, 3.0), 1000.0 - 600.0);   // Separating: less.
@@ -692,7 +692,7 @@ TEST_P(FullFeContactStepTest, SatisfiesTheDiscreteEquation) {
   const ModalBasis modes = ComputeLowestModes(fe, 2);
   const Eigen::VectorXd tip = fe.DeflectionRow(beam.length_m);
   const double alpha = 3.0;
-  const PointContact contact{tip, 0.0, 3000 * beam.TipBendingStiffness(), c.contact_damping};
+  const PointContact contact{tip, 0.0, {3000 * beam.TipBendingStiffness(), c.contact_damping}};
   FullFeContactSystem system(fe.mass, fe.stiffness, alpha, {contact});
   const Eigen::VectorXd x0 = c.tip_m / tip.dot(modes.shapes.col(0)) * modes.shapes.col(0);
   const Eigen::VectorXd v0 = c.tip_speed_m_s / tip.dot(modes.shapes.col(1)) * modes.shapes.col(1);
@@ -979,12 +979,12 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
     z.a_y = 0, z.a_z = 3, z.phi_a = phi;
     if (with_b) z.b_y = 6, z.b_z = 9, z.phi_b = phi;
     z.normal_y = ny, z.normal_z = nz;
-    z.gap_m = 1e-3, z.stiffness_n_per_m = 2e5;
+    z.gap_m = 1e-3, z.law.normal.stiffness = 2e5;
     return z;
   };
   std::vector<ZoneTerm> zones = {zone(low, true, 0.6, 0.8), zone(high, true, 1.0, 0.0),
                                  zone(low, false, 0.0, -1.0)};
-  zones[0].damping_n_s_per_m = 40.0;
+  zones[0].law.normal.damping_n_s_per_m = 40.0;
   zones[0].gap_m = zones[1].gap_m = -0.01;  // Preloaded: closed at any state below.
   ContactStations stations(zones);
   Eigen::VectorXd x(12), v(12);
@@ -993,8 +993,8 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
     v[i] = 0.2 * std::cos(0.5 + 1.7 * i);
   }
   Eigen::VectorXd a = Eigen::VectorXd::Zero(12), expected_a = a, stiffness = a, expected_k = a;
-  stations.AddForces(x, v, a);
-  stations.AddClosedStiffness(x, stiffness);
+  stations.AddForces(0.0, x, v, a);
+  stations.AddClosedStiffness(x, stations.BoundStiffnesses(), stiffness);
   int closed = 0;
   for (std::size_t i = 0; i < zones.size(); ++i) {
     const ZoneTerm& z = zones[i];
@@ -1007,11 +1007,13 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
     }
     const double d = r.dot(x) - z.gap_m;
     const double f =
-        d > 0 ? std::max(0.0, z.stiffness_n_per_m * d + z.damping_n_s_per_m * r.dot(v)) : 0.0;
+        d > 0
+            ? std::max(0.0, z.law.normal.stiffness * d + z.law.normal.damping_n_s_per_m * r.dot(v))
+            : 0.0;
     closed += d > 0 ? 1 : 0;
-    EXPECT_NEAR(stations.Forces()[i], f, 1e-12 * z.stiffness_n_per_m) << "zone " << i;
+    EXPECT_NEAR(stations.Forces()[i], f, 1e-12 * z.law.normal.stiffness) << "zone " << i;
     expected_a -= f * r;
-    expected_k += z.stiffness_n_per_m * r * r.dot(x);
+    expected_k += z.law.normal.stiffness * r * r.dot(x);
     // u_a - u_b and v_a - v_b at the zone's height, per direction.
     Eigen::VectorXd ry = r, rz = r;
     for (int m = 0; m < 3; ++m) {

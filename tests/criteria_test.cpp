@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
@@ -89,7 +91,7 @@ TEST_F(QuickStudyCriteria, CorruptedScoreIsCaughtAndNamed) {
   const std::string copy = db_ + ".corrupt.db";
   std::filesystem::copy_file(db_, copy, std::filesystem::copy_options::overwrite_existing);
   // The most truncated, finest-step point at the stiffest R_k meets every criterion.
-  const QueryResult target = RunReadOnlyQuery(
+  const Table target = RunReadOnlyQuery(
       copy,
       "SELECT point_id FROM results WHERE status = 'ok' ORDER BY r_k DESC, r_ftrunc DESC, "
       "dt_requested_s / dt_sharp_s ASC LIMIT 1");
@@ -107,6 +109,48 @@ TEST_F(QuickStudyCriteria, CorruptedScoreIsCaughtAndNamed) {
   std::filesystem::remove(copy);
 }
 
+// The points the derived criteria count as passing, summed over the studied R_k.
+int Passing(const nlohmann::json& criteria) {
+  int passing = 0;
+  for (const auto& b : criteria.at("boundary")) passing += b.at("n_passing").get<int>();
+  return passing;
+}
+
+// A study file's thresholds judge its criteria (a score without a default threshold, PFr, among
+// them), and a flag replaces the study's threshold of its score.
+TEST_F(QuickStudyCriteria, TheStudyFilesThresholdsJudgeUnlessAFlagIsGiven) {
+  const std::string copy = db_ + ".thresholds.db", spec = db_ + ".strict.json";
+  std::filesystem::copy_file(db_, copy, std::filesystem::copy_options::overwrite_existing);
+  std::ifstream quick(Source("studies/quick.json"));
+  nlohmann::json strict = nlohmann::json::parse(quick);
+  strict["name"] = "quick_strict";
+  strict["scoring"]["thresholds"] = {{"err_max", 0.05}, {"pfr_min", 0.9}};
+  std::ofstream(spec) << strict.dump();
+  const auto run = RunShockmap("study run " + spec + " --db " + copy + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto derive = [&](const std::string& args, const std::string& out) {
+    const auto o = RunShockmap("criteria derive " + args + " --db " + copy + " --out " + out);
+    EXPECT_EQ(o.exit_code, 0) << o.output;
+    std::ifstream in(out);
+    return std::make_pair(o.output, nlohmann::json::parse(in));
+  };
+  const auto [own, own_json] = derive("quick_strict", copy + ".own.json");
+  EXPECT_NE(own.find("Err <= 0.05, SRf >= 0.8, PFr >= 0.9"), std::string::npos) << own;
+  EXPECT_EQ(own_json.at("thresholds"),
+            nlohmann::json({{"err_max", 0.05}, {"srf_min", 0.8}, {"pfr_min", 0.9}}));
+  const auto [flagged, flagged_json] =
+      derive("quick_strict --err-max 0.2 --pfr-min 0.5", copy + ".flagged.json");
+  EXPECT_NE(flagged.find("Err <= 0.2, SRf >= 0.8, PFr >= 0.5"), std::string::npos) << flagged;
+  const auto [plain, plain_json] = derive("quick", copy + ".plain.json");
+  EXPECT_NE(plain.find("Err <= 0.1, SRf >= 0.8;"), std::string::npos) << plain;
+  // The same scores judged more strictly pass fewer points.
+  EXPECT_LT(Passing(own_json), Passing(plain_json));
+  for (const std::string& f : {copy, spec, copy + ".own.json", copy + ".flagged.json",
+                               copy + ".plain.json", copy + "-wal", copy + "-shm"}) {
+    std::filesystem::remove(f);
+  }
+}
+
 TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
   // Synthetic study: a point passes exactly when R_ftrunc >= 2 R_k^0.5; truncations on a fine
   // logarithmic grid, so the fitted exponent must come back close to 0.5.
@@ -117,8 +161,19 @@ TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
     for (int j = 0; j <= 40; ++j) {
       const double r_ftrunc = std::pow(10.0, 0.1 * j);
       const bool pass = r_ftrunc >= 2.0 * std::sqrt(r_k);
-      points.push_back({++id, r_k, r_ftrunc, RunStatus::kOk, pass ? 0.01 : 0.5, pass ? 0.99 : 0.5,
-                        1e-5, 1e-4, 1e-4, 1e-3, 10, 1000});
+      ScoredPoint p;
+      p.point_id = ++id;
+      p.r_k = r_k;
+      p.r_ftrunc = r_ftrunc;
+      p.status = RunStatus::kOk;
+      p.scores.Set("err", pass ? 0.01 : 0.5);
+      p.scores.Set("srf", pass ? 0.99 : 0.5);
+      p.dt_s = 1e-5;
+      p.dt_sharp_s = p.dt_paper_s = 1e-4;
+      p.wall_s = 1e-3;
+      p.cpu_s = 10;
+      p.n_modes = 1000;
+      points.push_back(p);
     }
   }
   const ValidityCriteria c = DeriveCriteria(points, {});

@@ -53,7 +53,7 @@ std::vector<std::vector<std::string>> CsvRows(const std::string& text) {
 bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 TEST_F(DataExport, QueryPrintsValuesThatReadBackBitForBitAndMatchInWhere) {
-  const QueryResult stored = RunReadOnlyQuery(
+  const Table stored = RunReadOnlyQuery(
       Path("s.db"), "SELECT point_id, r_k, r_ftrunc, err FROM results ORDER BY point_id");
   ASSERT_EQ(stored.rows.size(), 4u);
   for (const std::string format : {"csv", "table"}) {
@@ -113,7 +113,7 @@ TEST_F(DataExport, AReferenceIsWrittenAsStoredAndAPointIsComputedAgainAsStored) 
   }
   EXPECT_GT(*std::max_element(stored->force_n.begin(), stored->force_n.end()), 0.0);
 
-  const QueryResult point = RunReadOnlyQuery(
+  const Table point = RunReadOnlyQuery(
       Path("s.db"),
       "SELECT point_id, err, srf FROM results WHERE r_k > 3000 AND r_ftrunc > 300 LIMIT 1");
   ASSERT_EQ(point.rows.size(), 1u);
@@ -144,7 +144,7 @@ TEST_F(DataExport, SceneStudyParametersAreColumnsOfSceneParams) {
       {"scoring", {{"displacement", "tip"}, {"zone", "tip_spring"}, {"rest_duration_s", 0.0052}}}};
   WriteText(Path("scene.json"), study.dump());
   ASSERT_EQ(RunShockmap("study run " + Path("scene.json") + Db() + " --quiet").exit_code, 0);
-  const QueryResult r = RunReadOnlyQuery(
+  const Table r = RunReadOnlyQuery(
       Path("s.db"),
       "SELECT \"params_solver.r_ftrunc\", \"params_solver.dt.factor\", err, "
       "json_extract(parameters_json, '$.\"solver.r_ftrunc\"') FROM scene_params ORDER BY 1");
@@ -175,7 +175,7 @@ TEST_F(DataExport, AMigratedDatabaseHasItsSceneParametersAsColumnsAtOnce) {
                         " --quiet")
                 .exit_code,
             0);
-  const QueryResult r =
+  const Table r =
       RunReadOnlyQuery(Path("v2.db"),
                        "SELECT \"params_solver.r_ftrunc\", json_extract(parameters_json, "
                        "'$.\"solver.r_ftrunc\"') FROM scene_params ORDER BY 1");

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "compare/scene_run.h"
+#include "core/code_aster_impact_counter.h"
 #include "core/impact_statistics.h"
 #include "core/input_error.h"
 #include "core/scene_model.h"
@@ -61,7 +63,7 @@ TEST_P(OneModeBounce, MatchesItsClosedForms) {
   zone.a_y = 0;
   zone.phi_a = {bounce.phi};
   zone.gap_m = bounce.gap;
-  zone.stiffness_n_per_m = bounce.k;
+  zone.law.normal.stiffness = bounce.k;
   SceneModalSystem system(Eigen::VectorXd::Constant(1, bounce.omega1), std::nullopt, {zone}, {});
   TransientOptions options;
   options.end_time_s = cycles * bounce.CycleS();
@@ -203,7 +205,7 @@ TEST(ImpactStatisticsInRun, WearWorkRateOfABeamSlidingAcrossItsStop) {
   zone.a_y = 0;
   zone.a_z = 1;
   zone.phi_a = {phi};
-  zone.stiffness_n_per_m = 3e6;
+  zone.law.normal.stiffness = 3e6;
   SceneModalSystem system(Eigen::Vector2d(omega1, 1.3 * omega1), std::nullopt, {zone}, {});
   TransientOptions options;
   options.end_time_s = 0.5;
@@ -301,6 +303,132 @@ TEST(ImpactStatisticsInRun, SceneFileKey) {
       refusal({{"rest_duration_s", 0.005}, {"force_threshold_n", -1.0}}).find("force_threshold_n"),
       std::string::npos);
   EXPECT_NE(refusal({{"rest_duration_s", 0.005}, {"seuil", 1.0}}).find("seuil"), std::string::npos);
+}
+
+// code_aster's convention on a scripted force (1 ms samples, t_i = i ms), threshold 5 N, rest
+// 2.5 ms (looking 3 samples ahead), window [2, 35] ms (samples 2 to 35, 34 of them):
+//   i:  0  1  2  3  4  5  6  7  8  9 10 11 12 13 14 15-18 19 20 21 22 23-32 33 34 35 36 37 38-40
+//   F:  8  8  0 10 20  4  0 12  0  0  0  0  6 30  5   0    7  0  0  7   0   15  0  0  0 11  0
+// Samples 0 and 1 are in contact before the window: nothing. Contacts end (at their first sample
+// at or below 5 N) at 5, 8, 14, 20, 23 and 34: 6 in the window. Impacts: [3, 8] (its gap 5-6
+// is 2 samples: a rebound; the gap from 8 is longer than 3: it ends at 8), [12, 14], [19, 23]
+// (gap 20-21: a rebound); the one from 33 gets a rebound at 37 (gap 34-36, read past the
+// window) and does not end in it: uncounted, the statistics truncated. So 3 impacts of 5, 2 and
+// 4 ms (11 ms), rebounds per impact int(6 / 3) = 2, impacts per second int(3 / 0.034) = 88, time
+// in impacts int(100 x 11 / 34) = 32 %. Samples above 5 N in the window: 10, 20, 12, 6, 30, 7, 7,
+// 15 (the 4 and the 5 are not): sum 107, squares 1903. Each impact's peak is its last sample of
+// largest force (19 and 22 both 7: 22 ms).
+std::vector<double> ScriptedForce() {
+  std::vector<double> f(41, 0.0);
+  for (const auto& [i, value] : std::vector<std::pair<int, double>>{{0, 8},
+                                                                    {1, 8},
+                                                                    {3, 10},
+                                                                    {4, 20},
+                                                                    {5, 4},
+                                                                    {7, 12},
+                                                                    {12, 6},
+                                                                    {13, 30},
+                                                                    {14, 5},
+                                                                    {19, 7},
+                                                                    {22, 7},
+                                                                    {33, 15},
+                                                                    {37, 11}}) {
+    f[i] = value;
+  }
+  return f;
+}
+
+ImpactStatistics CountCodeAster(double rest_s, bool stick_at_13) {
+  ImpactCounting counting{5.0, rest_s, ImpactConvention::kCodeAster, 2e-3, 35e-3};
+  CodeAsterImpactCounter counter(counting, 1e-3, false, true);
+  const std::vector<double> force = ScriptedForce();
+  for (std::size_t i = 0; i < force.size(); ++i) {
+    ZoneSample sample{force[i], 1.0};  // Sliding at 1 m/s throughout.
+    sample.sticks = stick_at_13 && i == 13;
+    sample.penetration_rate_m_s = 0.1 * static_cast<double>(i);
+    counter.Add(sample);
+  }
+  return counter.Finish();
+}
+
+TEST(CodeAsterConvention, CountsAScriptedForceByHand) {
+  const ImpactStatistics s = CountCodeAster(2.5e-3, false);
+  EXPECT_EQ(s.convention, ImpactConvention::kCodeAster);
+  EXPECT_DOUBLE_EQ(s.window_start_s, 2e-3);
+  EXPECT_DOUBLE_EQ(s.window_end_s, 35e-3);
+  EXPECT_EQ(s.impacts, 3);
+  EXPECT_EQ(s.contacts, 6);
+  EXPECT_EQ(s.rebounds_per_impact, 2.0);
+  EXPECT_EQ(s.impacts_per_s, 88.0);
+  EXPECT_NEAR(s.mean_impact_duration_s, 11e-3 / 3, 1e-15);
+  EXPECT_NEAR(s.longest_impact_duration_s, 5e-3, 1e-15);
+  EXPECT_EQ(s.contact_time_fraction, 0.32);
+  // Contacts of 2, 1, 2, 1, 1 and 1 ms.
+  EXPECT_NEAR(s.mean_contact_duration_s, 8e-3 / 6, 1e-15);
+  EXPECT_NEAR(s.mean_force_n, 107.0 / 34, 1e-12);
+  EXPECT_NEAR(s.mean_force_in_contact_n, 107.0 / 8, 1e-12);
+  EXPECT_NEAR(s.rms_force_n, std::sqrt(1903.0 / 34), 1e-12);
+  EXPECT_NEAR(s.rms_force_in_contact_n, std::sqrt(1903.0 / 8), 1e-12);
+  EXPECT_EQ(s.max_force_n, 30.0);
+  EXPECT_NEAR(s.impulse_n_s, 0.107, 1e-15);
+  EXPECT_TRUE(s.truncated);
+  // The wear work rate: trapezoids of F x 1 m/s over the window's 33 steps, every sample
+  // inside it weighing one step (its end samples are 0): 116 N (the 4 and the 5 included).
+  ASSERT_TRUE(s.wear_available);
+  EXPECT_NEAR(s.wear_work_rate_w, 116.0 / 33, 1e-12);
+  // Per impact: start, duration, peak and its time, impulse (sum of F dt above the threshold),
+  // the penetration rate at its first sample, contacts.
+  ASSERT_EQ(s.records.size(), 3u);
+  const std::vector<std::array<double, 7>> expected = {{3e-3, 5e-3, 20, 4e-3, 0.042, 0.3, 2},
+                                                       {12e-3, 2e-3, 30, 13e-3, 0.036, 1.2, 1},
+                                                       {19e-3, 4e-3, 7, 22e-3, 0.014, 1.9, 2}};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const ImpactRecord& r = s.records[k];
+    EXPECT_NEAR(r.start_s, expected[k][0], 1e-15) << k;
+    EXPECT_NEAR(r.duration_s, expected[k][1], 1e-15) << k;
+    EXPECT_EQ(r.peak_force_n, expected[k][2]) << k;
+    EXPECT_NEAR(r.peak_time_s, expected[k][3], 1e-15) << k;
+    EXPECT_NEAR(r.impulse_n_s, expected[k][4], 1e-15) << k;
+    EXPECT_NEAR(r.impact_speed_m_s, expected[k][5], 1e-12) << k;
+    EXPECT_EQ(r.contacts, expected[k][6]) << k;
+  }
+}
+
+// A rest duration of 0 (code_aster's default) looks one sample ahead, which ends an impact at
+// every gap: the 6 contacts ending in the window are 6 impacts (the one from 33 ends at 34), and
+// code_aster's integer rebounds per impact is int(6 / 6) = 1. A sample that sticks takes its
+// pair out of the wear work rate: the pair (13, 14), (30 + 5) / 2 N.
+TEST(CodeAsterConvention, RestZeroAndAStickingSample) {
+  const ImpactStatistics s = CountCodeAster(0.0, true);
+  EXPECT_EQ(s.impacts, 6);
+  EXPECT_EQ(s.contacts, 6);
+  EXPECT_EQ(s.rebounds_per_impact, 1.0);
+  EXPECT_EQ(s.impacts_per_s, 176.0);  // int(6 / 0.034).
+  // Impacts of 2, 1, 2, 1, 1, 1 ms: int(100 x 8 / 34) = 23 %.
+  EXPECT_EQ(s.contact_time_fraction, 0.23);
+  EXPECT_NEAR(s.wear_work_rate_w, (116.0 - 17.5) / 33, 1e-12);
+  EXPECT_FALSE(s.records.back().truncated);
+}
+
+// The same force in shockmap's convention differs point by point (docs/physics.md §6.2): its
+// contacts end where the force's line crosses the threshold, so the gap 20-21 runs from 19.14 to
+// 21.86 ms (pieces 7 -> 0 and 0 -> 7, each from the step's middle), 2.71 ms: longer than the rest,
+// a separate impact; the one from 33 started in the window and counts. Its rebounds per impact
+// are (contacts - impacts) / impacts, its rates real-valued, and the threshold's samples enter
+// the force's integrals.
+TEST(CodeAsterConvention, DiffersFromShockmapsOnTheSameForce) {
+  ImpactCounting counting{5.0, 2.5e-3};
+  counting.window_start_s = 2e-3;
+  ImpactAccumulator accumulator(counting, 0.0, 1.0);
+  const std::vector<double> force = ScriptedForce();
+  for (std::size_t i = 3; i <= 35; ++i) accumulator.Add(force[i], 1.0, 1e-3);
+  const ImpactStatistics shockmap = accumulator.Finish(33e-3);
+  const ImpactStatistics aster = CountCodeAster(2.5e-3, false);
+  EXPECT_EQ(shockmap.impacts, 5);
+  EXPECT_EQ(shockmap.contacts, 6);
+  EXPECT_NE(shockmap.rebounds_per_impact, aster.rebounds_per_impact);
+  EXPECT_NE(shockmap.impacts_per_s, std::floor(shockmap.impacts_per_s));
+  EXPECT_NE(shockmap.mean_force_n, aster.mean_force_n);
 }
 
 TEST(ImpactCounting, RefusesNegativeOrNonFiniteSettings) {

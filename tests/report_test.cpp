@@ -90,7 +90,7 @@ void CheckMapCells(const Place& at) {
       "<a href=\"(points/point_(\\d+)\\.html)\"><rect class=\"cell\"[^>]* data-rk=\"([^\"]+)\" "
       "data-rftrunc=\"([^\"]+)\" data-dt=\"[^\"]+\" data-dt-ratio=\"([^\"]+)\" "
       "data-err=\"([^\"]+)\" "
-      "data-srf=\"([^\"]+)\" data-status=\"([^\"]+)\"");
+      "data-srf=\"([^\"]+)\" (?:data-[a-z_]+=\"[^\"]+\" )*data-status=\"([^\"]+)\"");
   int checked = 0;
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), cell); it != std::sregex_iterator();
        ++it, ++checked) {
@@ -358,9 +358,9 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {
   EXPECT_EQ(HtmlEscaped("<script>alert('x') & \"y\"</script>"),
             "&lt;script&gt;alert(&#39;x&#39;) &amp; &quot;y&quot;&lt;/script&gt;");
-  QueryResult r;
+  Table r;
   r.columns = {"name<", "value"};
-  r.rows = {{std::string("<b>study</b>"), 1.5e-3}, {std::string("a&b"), QueryCell()}};
+  r.rows = {{std::string("<b>study</b>"), 1.5e-3}, {std::string("a&b"), TableCell()}};
   const std::string table = SortableTable(r, "t\"1", "caption <i>");
   EXPECT_EQ(table.find("<b>"), std::string::npos) << table;
   EXPECT_EQ(table.find("<i>"), std::string::npos) << table;
@@ -384,9 +384,10 @@ TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
   CriteriaOptions th;
   ScoredPoint p;
   p.status = RunStatus::kOk;
-  p.err = 0.01, p.srf = 0.95;
+  p.scores.Set("err", 0.01);
+  p.scores.Set("srf", 0.95);
   EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "passes");
-  p.err = 0.5;
+  p.scores.Set("err", 0.5);
   EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "fails thresholds");
   for (RunStatus s : kAllRunStatuses) {
     if (s == RunStatus::kOk) continue;

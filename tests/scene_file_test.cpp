@@ -109,6 +109,142 @@ TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
   }
 }
 
+// The contact laws, the statistics' convention and window, the impact table and the wear law
+// reach the scene as written (docs/scenes.md).
+TEST_F(SceneFiles, ContactLawKeysReachTheScene) {
+  const Scene scene = LoadScene(Variant([](Json& s) {
+    s["bending"] = "both";
+    s["zones"][0]["friction"] = {{"coefficient", 0.2},
+                                 {"static_coefficient", 0.25},
+                                 {"tangential_stiffness_n_per_m", 3e8},
+                                 {"tangential_damping_n_s_per_m", 10.0}};
+    Json hertz = s["zones"][0];
+    hertz["name"] = "hertz";
+    hertz.erase("stiffness_n_per_m");
+    hertz.erase("friction");
+    hertz["height_m"] = 0.5;
+    hertz["power_law"] = {{"coefficient_n_per_m_exponent", 4e10}, {"bound_penetration_m", 1e-5}};
+    s["zones"].push_back(hertz);
+    s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0},
+                                         {"convention", "code_aster"},
+                                         {"window_s", {0.01, 0.05}},
+                                         {"impact_table", {"hertz"}}};
+    s["wear"] = {{"coefficient_m2_per_n", 2e-15}, {"life_s", 3.6e6}};
+  }));
+  ASSERT_EQ(scene.zones.size(), 2u);
+  ASSERT_TRUE(scene.zones[0].friction);
+  EXPECT_EQ(scene.zones[0].friction->coefficient, 0.2);
+  EXPECT_EQ(scene.zones[0].friction->static_coefficient, 0.25);
+  EXPECT_EQ(scene.zones[0].friction->tangential_stiffness_n_per_m, 3e8);
+  EXPECT_EQ(scene.zones[0].friction->tangential_damping_n_s_per_m, 10.0);
+  ASSERT_TRUE(scene.zones[1].power_law);
+  EXPECT_EQ(scene.zones[1].power_law->exponent, 1.5);
+  // Its stiffness for the bound: 1.5 k d_b^0.5.
+  EXPECT_NEAR(scene.zones[1].stiffness_n_per_m, 1.5 * 4e10 * std::sqrt(1e-5), 1e-3);
+  EXPECT_EQ(scene.zones[1].Law().normal.exponent, 1.5);
+  const ImpactCounting& c = scene.outputs.impact_counting;
+  EXPECT_EQ(c.convention, ImpactConvention::kCodeAster);
+  EXPECT_EQ(c.rest_duration_s, 0.0);
+  EXPECT_EQ(c.window_start_s, 0.01);
+  EXPECT_EQ(c.window_end_s, 0.05);
+  EXPECT_EQ(scene.outputs.impact_table_zones, std::vector<int>{1});
+  ASSERT_TRUE(scene.wear);
+  EXPECT_EQ(scene.wear->coefficient_m2_per_n, 2e-15);
+  EXPECT_EQ(scene.wear->life_s, 3.6e6);
+}
+
+// Each mistake in the new keys names the file, the key's path, the value and what is allowed.
+TEST_F(SceneFiles, ContactLawMistakesAreNamedByTheirJsonPath) {
+  auto both = [](Json& s) { s["bending"] = "both"; };
+  const Json friction = {{"coefficient", 0.3}, {"tangential_stiffness_n_per_m", 1e8}};
+  const std::vector<std::pair<std::function<void(Json&)>, std::vector<std::string>>> cases = {
+      {[&](Json& s) { s["zones"][0]["friction"] = friction; },
+       {"zones[0].friction", "planar", "\"bending\": \"both\""}},
+      {[&](Json& s) {
+         both(s);
+         s["zones"][0]["friction"] = {{"coefficient", -0.1}};
+       },
+       {"zones[0].friction.coefficient", "-0.1", "> 0 and <= 10"}},
+      {[&](Json& s) {
+         both(s);
+         s["zones"][0]["friction"] = {{"coefficient", 0.3},
+                                      {"static_coefficient", 0.2},
+                                      {"tangential_stiffness_n_per_m", 1e8}};
+       },
+       {"zones[0].friction.static_coefficient", "0.2", "[0.3, 10.0]"}},
+      {[&](Json& s) {
+         both(s);
+         s["zones"][0]["friction"] = {{"coefficient", 0.3}};
+       },
+       {"zones[0].friction.tangential_stiffness_n_per_m", "missing"}},
+      {[&](Json& s) {
+         both(s);
+         s["zones"][0]["friction"] = {{"coefficient", 0.3},
+                                      {"tangential_stiffness_n_per_m", 1e8},
+                                      {"tangential_damping", 5.0}};
+       },
+       {"zones[0].friction.tangential_damping", "unknown"}},
+      {[](Json& s) {
+         s["zones"][0]["power_law"] = {{"coefficient_n_per_m_exponent", 1e10},
+                                       {"bound_penetration_m", 1e-5}};
+       },
+       {"zones[0].power_law", "not both"}},
+      {[](Json& s) {
+         s["zones"][0].erase("stiffness_n_per_m");
+         s["zones"][0]["power_law"] = {{"coefficient_n_per_m_exponent", 1e10},
+                                       {"exponent", 0.5},
+                                       {"bound_penetration_m", 1e-5}};
+       },
+       {"zones[0].power_law.exponent", "0.5", "[1.0, 3.0]"}},
+      {[](Json& s) {
+         s["zones"][0].erase("stiffness_n_per_m");
+         s["zones"][0]["power_law"] = {{"coefficient_n_per_m_exponent", 1e10}};
+       },
+       {"zones[0].power_law.bound_penetration_m", "missing"}},
+      {[](Json& s) {
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", -1}};
+       },
+       {"outputs.impact_statistics.rest_duration_s", "-1", "[0, 100]"}},
+      {[](Json& s) {
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0}, {"convention", "aster"}};
+       },
+       {"outputs.impact_statistics.convention", "aster", "\"code_aster\""}},
+      {[](Json& s) {
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0}, {"window_s", {0.01, 0.5}}};
+       },
+       {"outputs.impact_statistics.window_s", "0.5", "solver.end_time_s = 0.06"}},
+      {[](Json& s) {
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0}, {"window_s", {0.02, 0.01}}};
+       },
+       {"outputs.impact_statistics.window_s", "start < end"}},
+      {[](Json& s) {
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0}, {"impact_table", {"ghost"}}};
+       },
+       {"outputs.impact_statistics.impact_table[0]", "ghost"}},
+      {[](Json& s) {
+         s["wear"] = {{"coefficient_m2_per_n", 1e-15}, {"life_s", 10}};
+       },
+       {"wear", "planar"}},
+      {[&](Json& s) {
+         both(s);
+         s["wear"] = {{"coefficient_m2_per_n", 1e-15}, {"life_s", 10}};
+       },
+       {"wear", "outputs.impact_statistics"}},
+      {[&](Json& s) {
+         both(s);
+         s["outputs"]["impact_statistics"] = {{"rest_duration_s", 0}};
+         s["wear"] = {{"coefficient_m2_per_n", 0}, {"life_s", 10}};
+       },
+       {"wear.coefficient_m2_per_n", "> 0"}},
+  };
+  for (const auto& [change, expected] : cases) {
+    const std::string message = Refusal(Variant(change));
+    ASSERT_FALSE(message.empty()) << expected[0] << " was accepted";
+    EXPECT_NE(message.find("variant.json"), std::string::npos) << message;
+    for (const auto& part : expected) EXPECT_NE(message.find(part), std::string::npos) << message;
+  }
+}
+
 TEST_F(SceneFiles, BaseMotionCsvErrorsNameTheLine) {
   auto with_csv = [&](const std::string& rows) {
     WriteText(Path("shock.csv"), rows);
@@ -295,6 +431,44 @@ TEST_F(SceneFiles, ImpactStatisticsAgreeWithTheShocksOfTheHistory) {
   EXPECT_TRUE(std::filesystem::exists(Path("impacts") + "/impact_statistics.csv"));
 }
 
+// The rubbing bundle (scenes/bundle_hex_7_friction.json) over 0.05 s: its zones' wear work rate
+// counts the sliding only, each worn volume is K x rate x life, the friction power is at most
+// mu_s (0.35) times the wear work rate (|F_t| <= mu_s N), and the listed zones' impacts are in
+// impacts.csv.
+TEST_F(SceneFiles, RubbingBundleWritesItsWearAndItsImpacts) {
+  const std::string path = Variant([](Json& s) {
+    std::ifstream in(kScenes + "bundle_hex_7_friction.json");
+    s = Json::parse(in);
+    s["solver"]["end_time_s"] = 0.05;
+    s["outputs"].erase("displacements");
+    s["outputs"].erase("energies");
+    s["outputs"]["impact_statistics"]["window_s"] = {0.0, 0.05};
+  });
+  const auto r = RunShockmap("simulate --json --quiet " + path + " --out " + Path("rubbing"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Json summary = Json::parse(r.output);
+  const double k = summary["wear"]["coefficient_m2_per_n"], life = summary["wear"]["life_s"];
+  int worn = 0;
+  for (const Json& zone : summary["zone_results"]) {
+    const Json& s = zone["impact_statistics"];
+    EXPECT_EQ(s["convention"], "code_aster");
+    EXPECT_EQ(s["wear_basis"], "sliding_only");
+    const double rate = s["wear_work_rate_w"];
+    EXPECT_NEAR(s["wear_volume_m3"].get<double>(), k * rate * life, 1e-12 * k * rate * life);
+    if (rate > 0.0) {
+      ++worn;
+      EXPECT_GT(s["friction_power_w"].get<double>(), 0.0) << zone["name"];
+      EXPECT_LE(s["friction_power_w"].get<double>(), 0.35 * rate) << zone["name"];
+    }
+  }
+  EXPECT_GT(worn, 10);
+  const std::string impacts = testing::ReadBytes(Path("rubbing") + "/impacts.csv");
+  EXPECT_EQ(impacts.rfind("zone,impact,start_s,duration_s,peak_force_n,peak_time_s,", 0), 0u);
+  EXPECT_NE(impacts.find("\nduct-pad,1,"), std::string::npos) << impacts;
+  const std::string csv = testing::ReadBytes(Path("rubbing") + "/impact_statistics.csv");
+  EXPECT_NE(csv.find(",wear_basis,friction_power_w,wear_volume_m3\n"), std::string::npos);
+}
+
 TEST_F(SceneFiles, SimulateRefusesBadInputWithExitCode2) {
   WriteText(Path("empty.json"), "");
   WriteText(Path("truncated.json"), "{\"name\": \"x\", \"beams\": [");
@@ -310,12 +484,20 @@ TEST_F(SceneFiles, SimulateRefusesBadInputWithExitCode2) {
     scene["outputs"] = {{"contact_forces", true}};
     WriteText(histories, scene.dump());
   }
+  const std::string rubbing_planar = Path("rubbing_planar.json");
+  {
+    std::ifstream in(kScenes + "cantilever_spring.json");
+    Json scene = Json::parse(in);
+    scene["zones"][0]["friction"] = {{"coefficient", 0.3}, {"tangential_stiffness_n_per_m", 1e8}};
+    WriteText(rubbing_planar, scene.dump());
+  }
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"simulate " + histories, "record_stride"},
       {"simulate " + Path("missing.json"), "missing.json"},
       {"simulate " + Path("empty.json"), "empty.json"},
       {"simulate " + Path("truncated.json"), "truncated.json"},
       {"simulate " + stride, "solver.dt"},
+      {"simulate " + rubbing_planar, "zones[0].friction"},
       {"simulate " + kScenes + "cantilever_spring.json --out /proc/shockmap", "/proc/shockmap"},
   };
   for (const auto& [args, named] : cases) {

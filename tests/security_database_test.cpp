@@ -231,7 +231,7 @@ TEST_F(DatabaseCorruption, CorruptStoredShocksAreADatabaseErrorNotAnInternalOne)
 TEST_F(DatabaseCorruption, StoredReboundsOutOfRangeAreADatabaseError) {
   Canonical();
   const std::string pristine = ReadBytes(db());
-  for (const std::string& rebounds : {"2147483647", "1e300", "-1", "2.5"}) {
+  for (const std::string rebounds : {"2147483647", "1e300", "-1", "2.5"}) {
     WriteText(db(), pristine);
     Edit("UPDATE reference_runs SET shocks_json = json_set(shocks_json, '$[0].rebounds', " +
          rebounds + ") WHERE reference_id = 1");

@@ -43,7 +43,7 @@ constexpr const char* kSmallStudy = R"({
 })";
 
 std::map<std::string, std::string> Outcomes(const std::string& db) {
-  const QueryResult r = RunReadOnlyQuery(
+  const Table r = RunReadOnlyQuery(
       db,
       "SELECT p.point_key, p.status || ' ' || quote(s.err) || ' ' || quote(s.srf) || ' ' || "
       "quote(s.steps) FROM points p LEFT JOIN scores s USING (point_id)");

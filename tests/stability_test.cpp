@@ -52,7 +52,7 @@ TEST_P(ClosedContactStabilityTest, SharpBoundIsTheExactLimit) {
   const ZoneTerm& contact = modal.Zones().at(0);
   const Eigen::Map<const Eigen::VectorXd> row(contact.phi_a.data(), modal.Size());
   Eigen::MatrixXd k = modal.OmegaSquared().asDiagonal();
-  k += contact.stiffness_n_per_m * row * row.transpose();
+  k += contact.law.normal.stiffness * row * row.transpose();
   // Integrate in the eigenbasis of the closed-contact stiffness: decoupled oscillators.
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(k);
   const Eigen::VectorXd omega = eig.eigenvalues().cwiseSqrt();

@@ -5,6 +5,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -31,7 +32,7 @@ class StudyProcess : public testing::TempDirTest {};
 
 // point_key -> the columns that must not depend on interruptions.
 std::map<std::string, std::string> Outcomes(const std::string& db) {
-  const QueryResult r = RunReadOnlyQuery(
+  const Table r = RunReadOnlyQuery(
       db,
       "SELECT p.point_key, p.status || ' ' || quote(s.err) || ' ' || quote(s.srf) || ' ' || "
       "quote(s.steps) || ' ' || quote(s.dt_used_s) || ' ' || quote(s.n_dofs) "
@@ -283,6 +284,83 @@ TEST_F(StudyProcess, LockedDatabaseWaitsThenFailsClearlyAndLosesNothing) {
   const auto resumed = RunShockmap("study run " + spec + " --db " + db + " --quiet");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
   EXPECT_NE(resumed.output.find("2 computed now"), std::string::npos) << resumed.output;
+}
+
+// `study status` lists every kind of study a database holds, from the registry of the kinds'
+// tables (db/point_tables.h): a study of the paper's problem, a scene sweep and an ensemble, each
+// with its points by status, and the ensemble's members also by clearance state and setting.
+TEST_F(StudyProcess, StatusListsStudiesOfEveryKindAndEnsembleMembersByStateAndSetting) {
+  const std::string source = SHOCKMAP_SOURCE_DIR;
+  const std::string canonical = Path("canonical.json"), sweep = Path("sweep.json"),
+                    ensemble = Path("ensemble.json"), db = Path("kinds.db");
+  WriteText(
+      canonical,
+      nlohmann::json{
+          {"name", "tiny_canonical"},
+          {"scoring",
+           {{"window_s", 0.02}, {"reference", {{"r_fref_min", 300}, {"r_fref_per_sqrt_rk", 3}}}}},
+          {"grids",
+           {{{"rk", 10}, {"rftrunc", {10, 100}}, {"dt", {{"rule", "sharp"}, {"factor", 0.1}}}}}}}
+          .dump());
+  WriteText(sweep, nlohmann::json{{"kind", "scene_sweep"},
+                                  {"name", "tiny_sweep"},
+                                  {"scene", source + "/scenes/cantilever_spring.json"},
+                                  {"sweep", {{"solver.r_ftrunc", {10, 30}}}},
+                                  {"reference", {{"solver.r_ftrunc", 100}}},
+                                  {"scoring",
+                                   {{"displacement", "tip"},
+                                    {"zone", "tip_spring"},
+                                    {"window_s", 0.02},
+                                    {"rest_duration_s", 0.005}}}}
+                       .dump());
+  // Two states, two settings, one member each, of the planar bundle over 0.01 s.
+  WriteText(ensemble,
+            nlohmann::json{
+                {"kind", "scene_ensemble"},
+                {"name", "tiny_ensemble"},
+                {"scene", source + "/scenes/bundle_row.json"},
+                {"members", 1},
+                {"seed", 3},
+                {"window_s", 0.01},
+                {"settings", {{"solver.r_ftrunc", {30, 100}}}},
+                {"refined", {{"solver.r_ftrunc", 100}}},
+                {"draws",
+                 {{"effects.base_motion.half_sine.amplitude_m_s2", {{"normal", {{"std", 9.81}}}}}}},
+                {"clearance_states",
+                 {{{"name", "new"}, {"pin_gap_m", {{"mean", 5e-5}, {"std", 5e-6}}}},
+                  {{"name", "worn"}, {"pin_gap_m", {{"mean", 1e-5}, {"std", 3e-5}}}}}}}
+                .dump());
+  for (const std::string& spec : {canonical, sweep, ensemble}) {
+    const auto run = RunShockmap("study run " + spec + " --db " + db + " --jobs 2 --quiet");
+    ASSERT_EQ(run.exit_code, 0) << spec << ": " << run.output;
+  }
+  const auto status = RunShockmap("study status --db " + db);
+  ASSERT_EQ(status.exit_code, 0) << status.output;
+  const std::string& out = status.output;
+  for (const char* study : {"tiny_canonical", "tiny_sweep", "tiny_ensemble"}) {
+    EXPECT_NE(out.find(study), std::string::npos) << study << " missing from:\n" << out;
+  }
+  EXPECT_NE(out.find("ensemble_members by state and setting_json:"), std::string::npos) << out;
+  std::vector<std::string> lines;
+  for (std::size_t at = 0, end; at < out.size(); at = end + 1) {
+    end = std::min(out.find('\n', at), out.size());
+    lines.push_back(out.substr(at, end - at));
+  }
+  // One line per state and setting, with its one member computed.
+  for (const char* state : {" new ", " worn "}) {
+    for (const char* setting : {R"({"solver.r_ftrunc":30})", R"({"solver.r_ftrunc":100})"}) {
+      const auto line = std::ranges::find_if(lines, [&](const std::string& l) {
+        return l.starts_with("tiny_ensemble ") && l.find(state) != std::string::npos &&
+               l.find(setting) != std::string::npos;
+      });
+      EXPECT_NE(line, lines.end()) << state << setting << " missing from:\n" << out;
+    }
+  }
+  // A study named alone shows its own breakdown only.
+  const auto one = RunShockmap("study status tiny_canonical --db " + db);
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_EQ(one.output.find("tiny_ensemble"), std::string::npos) << one.output;
+  EXPECT_EQ(one.output.find("ensemble_members by"), std::string::npos) << one.output;
 }
 
 }  // namespace

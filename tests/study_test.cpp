@@ -179,7 +179,7 @@ class StudyDatabaseRuns : public ::testing::Test {
                                       rftrunc + "}]}"),
                           name + ".json");
   }
-  QueryResult Rows() const {
+  Table Rows() const {
     return RunReadOnlyQuery(options_.database_path,
                             "SELECT point_id, status, err, srf, steps, updated_utc FROM results "
                             "ORDER BY point_id");
@@ -193,7 +193,7 @@ TEST_F(StudyDatabaseRuns, SecondRunComputesNothing) {
   const StudyRunSummary first = RunStudy(Spec("s", "[10, 300]"), options_);
   EXPECT_EQ(first.points_computed, 4u);
   EXPECT_EQ(first.references_computed, 2);
-  const QueryResult before = Rows();
+  const Table before = Rows();
   const StudyRunSummary second = RunStudy(Spec("s", "[10, 300]"), options_);
   EXPECT_EQ(second.points_computed, 0u);
   EXPECT_EQ(second.references_computed, 0);
@@ -202,13 +202,13 @@ TEST_F(StudyDatabaseRuns, SecondRunComputesNothing) {
 
 TEST_F(StudyDatabaseRuns, AddedAxisValueComputesOnlyTheNewPoints) {
   RunStudy(Spec("s", "[10, 300]"), options_);
-  const QueryResult before = Rows();
+  const Table before = Rows();
   const StudyRunSummary more = RunStudy(Spec("s", "[10, 100, 300]"), options_);
   EXPECT_EQ(more.points_in_study, 6u);
   EXPECT_EQ(more.points_computed, 2u);  // R_ftrunc = 100 at both R_k
   EXPECT_EQ(more.references_computed, 0);
   EXPECT_EQ(more.references_reused, 2);
-  const QueryResult after = Rows();
+  const Table after = Rows();
   ASSERT_EQ(after.rows.size(), 6u);
   for (const auto& row : before.rows) {
     EXPECT_NE(std::find(after.rows.begin(), after.rows.end(), row), after.rows.end());
@@ -230,7 +230,7 @@ TEST_F(StudyDatabaseRuns, EveryScoreRecordsItsSrfDefinition) {
                "grids": [{"rk": [100, 3000], "rftrunc": [10]}]})"),
                           "contact.json"),
            options_);
-  const QueryResult rows = RunReadOnlyQuery(
+  const Table rows = RunReadOnlyQuery(
       options_.database_path,
       "SELECT study, srf_definition, count(*) FROM results GROUP BY study ORDER BY study");
   ASSERT_EQ(rows.rows.size(), 2u);
@@ -238,7 +238,7 @@ TEST_F(StudyDatabaseRuns, EveryScoreRecordsItsSrfDefinition) {
   EXPECT_EQ(std::get<std::string>(rows.rows[1][1]), "first_shock");
   // At R_k = 3000, R_ftrunc = 10 the first contact's impulse is far from the first shock's
   // (0.62 against 0.84 on the Fig. 4 grid): the definition reaches the score.
-  const QueryResult srf =
+  const Table srf =
       RunReadOnlyQuery(options_.database_path,
                        "SELECT srf FROM results WHERE r_k = 3000 AND r_ftrunc = 10 ORDER BY study");
   ASSERT_EQ(srf.rows.size(), 2u);
@@ -263,7 +263,7 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
   const std::int64_t study = db.UpsertStudy("statuses", "{}");
   std::vector<NewPoint> points;
   for (RunStatus status : kAllRunStatuses) points.push_back({ToString(status), "ref", {}});
-  for (auto& p : points) p.parameters = ParameterValues(PointParameters{});
+  for (auto& p : points) p.parameters = CellsOf(PointParameters{}, kPointParameterColumns);
   db.AddPoints(kCanonicalPoints, study, points);
   const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
   const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
@@ -272,8 +272,8 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
     StorePointOutcome(db, kCanonicalPoints, p.point_id, run, PointOrigin{"host", 0}, p.point_key,
                       "", [](Connection&) {});
   }
-  const QueryResult r = RunReadOnlyQuery(options_.database_path,
-                                         "SELECT point_key, status FROM points ORDER BY point_id");
+  const Table r = RunReadOnlyQuery(options_.database_path,
+                                   "SELECT point_key, status FROM points ORDER BY point_id");
   ASSERT_EQ(r.rows.size(), kAllRunStatuses.size());
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const auto read = RunStatusFromString(std::get<std::string>(r.rows[i][1]));

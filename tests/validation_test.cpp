@@ -21,6 +21,7 @@
 #include "core/uniform_signal.h"
 #include "validation/impulse_ratio.h"
 #include "validation/psd.h"
+#include "validation/scores.h"
 #include "validation/shock_segmentation.h"
 #include "validation/spectral_error.h"
 
@@ -744,6 +745,111 @@ TEST(FirstShockImpulseRatioTest, ForceScaledByAQuarterGivesAQuarter) {
                                                              SegmentShocks(force, options, 0.03));
   ASSERT_TRUE(ratio.has_value());
   EXPECT_NEAR(*ratio, 0.25, 1e-12);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The registry of scores (validation/scores.h)
+
+// Two runs of one problem: displacements and contact forces differing in amplitude and timing.
+struct TwoRuns {
+  UniformSignal displacement = GenericDisplacement();
+  UniformSignal reference_displacement = Sample(0.0, 1.1e-5, 45000, [](double t) {
+    return 2e-3 + 0.9e-3 * std::exp(-3.0 * t) * std::cos(2.0 * kPi * 19.5 * t);
+  });
+  UniformSignal force =
+      HalfSineForce({{0.0101234, 1.0e-3, 800.0}, {0.013, 0.6e-3, 300.0}}, 1e-5, 0.03);
+  UniformSignal reference_force = HalfSineForce({{0.0102, 1.2e-3, 600.0}}, 1e-5, 0.03);
+  ShockSegmentationOptions segmentation = OptionsWithRest(2e-3);
+  std::vector<Shock> shocks = SegmentShocks(force, segmentation, 0.03);
+  std::vector<Shock> reference_shocks = SegmentShocks(reference_force, segmentation, 0.03);
+
+  ScoringInput Input(SrfDefinition definition) const {
+    return {.displacement = displacement,
+            .reference_displacement = reference_displacement,
+            .psd = PsdOptions{},
+            .end_s = 0.3,
+            .force = force,
+            .shocks = shocks,
+            .reference_force = reference_force,
+            .reference_shocks = reference_shocks,
+            .srf_definition = definition,
+            .segmentation = segmentation};
+  }
+};
+
+TEST(ScoreRegistryTest, ErrAndSrfAreEquations8And9UnderEachReading) {
+  const TwoRuns runs;
+  for (const SrfDefinition d : {SrfDefinition::kFirstShock, SrfDefinition::kFirstContact,
+                                SrfDefinition::kReferenceWindow}) {
+    const ScoreValues scores = ComputeScores(runs.Input(d));
+    EXPECT_EQ(scores["err"], SpectralError(runs.displacement, runs.reference_displacement, 0.0, 0.3,
+                                           PsdOptions{}));
+    EXPECT_EQ(scores["srf"], DefinedImpulseRatio(d, runs.force, runs.shocks, runs.reference_force,
+                                                 runs.reference_shocks, runs.segmentation, 0.3))
+        << ToString(d);
+    EXPECT_GT(*scores["err"], 0.0);
+    EXPECT_LT(*scores["srf"], 1.0);
+  }
+  EXPECT_FALSE(ComputeScores(runs.Input(SrfDefinition::kFirstShock))["no_such_score"]);
+}
+
+TEST(ScoreRegistryTest, ThresholdsJudgeInTheScoresDirection) {
+  const ScoreDefinition& err = *FindScore("err");
+  const ScoreDefinition& srf = *FindScore("srf");
+  EXPECT_EQ(err.ThresholdKey(), "err_max");
+  EXPECT_EQ(srf.ThresholdKey(), "srf_min");
+  EXPECT_TRUE(err.Meets(0.1, 0.1));
+  EXPECT_FALSE(err.Meets(0.11, 0.1));
+  EXPECT_TRUE(srf.Meets(0.8, 0.8));
+  EXPECT_FALSE(srf.Meets(0.79, 0.8));
+  EXPECT_EQ(FindScore("none"), nullptr);
+  // The paper's thresholds judge by default; a score without a default does not.
+  const auto defaults = DefaultThresholds();
+  EXPECT_EQ(defaults.at("err"), 0.10);
+  EXPECT_EQ(defaults.at("srf"), 0.80);
+  for (const ScoreDefinition& score : Scores()) {
+    EXPECT_EQ(defaults.contains(score.name), score.default_threshold.has_value()) << score.name;
+  }
+}
+
+// PFr: min / max of the first shocks' peak forces, whatever the later shocks and the impulses.
+TEST(ScoreRegistryTest, PfrIsTheRatioOfTheFirstShocksPeakForces) {
+  const TwoRuns runs;
+  ASSERT_EQ(runs.shocks.size(), 1u);  // Both pulses within the rest duration: one shock.
+  ASSERT_EQ(runs.reference_shocks.size(), 1u);
+  const ScoreValues scores = ComputeScores(runs.Input(SrfDefinition::kFirstShock));
+  ASSERT_TRUE(scores["pfr"].has_value());
+  EXPECT_NEAR(*scores["pfr"], 600.0 / 800.0, 1e-4);  // The half-sines' peaks, as sampled.
+  EXPECT_EQ(*scores["pfr"], runs.reference_shocks[0].peak_force_n / runs.shocks[0].peak_force_n);
+  const ScoreDefinition& pfr = *FindScore("pfr");
+  EXPECT_EQ(pfr.ThresholdKey(), "pfr_min");
+  EXPECT_FALSE(pfr.default_threshold.has_value());
+  // Nothing to compare without a shock on either side; 0 when one side has none.
+  const std::vector<Shock> none;
+  const UniformSignal quiet{0.0, 1e-5, std::vector<double>(3001, 0.0)};
+  EXPECT_EQ(pfr.compute(ScoringInput{.displacement = runs.displacement,
+                                     .reference_displacement = runs.reference_displacement,
+                                     .force = quiet,
+                                     .shocks = none,
+                                     .reference_force = quiet,
+                                     .reference_shocks = none}),
+            std::nullopt);
+  EXPECT_EQ(pfr.compute(ScoringInput{.displacement = runs.displacement,
+                                     .reference_displacement = runs.reference_displacement,
+                                     .force = quiet,
+                                     .shocks = none,
+                                     .reference_force = runs.reference_force,
+                                     .reference_shocks = runs.reference_shocks}),
+            std::optional<double>(0.0));
+}
+
+TEST(ScoreRegistryTest, ScoreValuesHoldAValueOrNone) {
+  ScoreValues values;
+  EXPECT_FALSE(values["err"].has_value());
+  values.Set("err", 0.25);
+  EXPECT_EQ(values["err"], std::optional<double>(0.25));
+  values.Set("err", std::nullopt);
+  EXPECT_FALSE(values["err"].has_value());
 }
 
 }  // namespace

@@ -13,13 +13,52 @@
 namespace shockmap {
 
 bool CriteriaOptions::IsValid(std::string* error) const {
-  return RequireInRange("err_max", err_max, 1e-9, 1.0, error) &&
-         RequireInRange("srf_min", srf_min, 0.0, 1.0, error) &&
-         RequireInRange("confidence", confidence, 0.5, 0.9999, error);
+  for (const auto& [name, threshold] : thresholds) {
+    const ScoreDefinition* score = FindScore(name);
+    if (score == nullptr) {
+      if (error != nullptr) *error = "no score named \"" + name + "\" (validation/scores.h)";
+      return false;
+    }
+    if (!RequireInRange(score->ThresholdKey().c_str(), threshold, score->threshold_low,
+                        score->threshold_high, error)) {
+      return false;
+    }
+  }
+  return RequireInRange("confidence", confidence, 0.5, 0.9999, error);
 }
 
 bool CriteriaOptions::Passes(const ScoredPoint& p) const {
-  return p.status == RunStatus::kOk && p.err && *p.err <= err_max && (!p.srf || *p.srf >= srf_min);
+  if (p.status != RunStatus::kOk) return false;
+  for (const auto& [name, threshold] : thresholds) {
+    const std::optional<double> value = p.scores[name];
+    const ScoreDefinition* score = FindScore(name);
+    if (value ? !score->Meets(*value, threshold) : score->required) return false;
+  }
+  return true;
+}
+
+std::string CriteriaOptions::Judged(const ScoredPoint& p) const {
+  std::ostringstream judged;
+  for (const ScoreDefinition& score : Scores()) {
+    const auto threshold = thresholds.find(score.name);
+    if (threshold == thresholds.end()) continue;
+    judged << (judged.tellp() > 0 ? ", " : "") << score.label << " = "
+           << p.scores[score.name].value_or(NAN) << " ("
+           << (score.better == Better::kSmaller ? "max " : "min ") << threshold->second << ")";
+  }
+  return judged.str();
+}
+
+std::string ThresholdsText(const CriteriaOptions& options, bool with_sources) {
+  std::ostringstream text;
+  for (const ScoreDefinition& score : Scores()) {
+    const auto threshold = options.thresholds.find(score.name);
+    if (threshold == options.thresholds.end()) continue;
+    text << (text.tellp() > 0 ? ", " : "") << score.label
+         << (score.better == Better::kSmaller ? " <= " : " >= ") << threshold->second;
+    if (with_sources) text << " (" << score.source << ")";
+  }
+  return text.str();
 }
 
 std::optional<double> ValidityCriteria::RequiredRFtrunc(double r_k) const {
@@ -175,8 +214,7 @@ std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
     if (p.status != RunStatus::kOk) {
       why << "ended " << ToString(p.status);
     } else {
-      why << "Err = " << p.err.value_or(NAN) << " (max " << criteria.options.err_max
-          << "), SRf = " << (p.srf ? *p.srf : NAN) << " (min " << criteria.options.srf_min << ")";
+      why << criteria.options.Judged(p);
     }
     found.push_back({p, why.str()});
   }

@@ -4,11 +4,13 @@
 // truncation boundary R_ftrunc > C R_k^p above its knee, and the stability boundary in dt.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/run_status.h"
+#include "validation/scores.h"
 
 namespace shockmap {
 
@@ -18,8 +20,8 @@ struct ScoredPoint {
   double r_k = 0.0;
   double r_ftrunc = 0.0;
   RunStatus status = RunStatus::kFailed;
-  std::optional<double> err, srf;
-  double dt_s = 0.0;  // As asked: the used step is shortened to land on the window's end.
+  ScoreValues scores;  // By score name (validation/scores.h).
+  double dt_s = 0.0;   // As asked: the used step is shortened to land on the window's end.
   double dt_sharp_s = 0.0;
   double dt_paper_s = 0.0;
   double wall_s = 0.0;
@@ -33,12 +35,18 @@ struct ScoredPoint {
 };
 
 struct CriteriaOptions {
-  double err_max = 0.10;  // The paper's Fig. 3b: Err ~ 3 % is a match; 10 % is the limit used.
-  double srf_min = 0.80;  // The paper (§2.4): SRf > 0.8 is an acceptable contact force.
+  // The threshold of each score that judges, by score name (validation/scores.h): by default
+  // Err <= 0.10 and SRf >= 0.80.
+  std::map<std::string, double, std::less<>> thresholds = DefaultThresholds();
   double confidence = 0.95;
 
+  // Each threshold within its score's range, and the confidence in [0.5, 0.9999].
   bool IsValid(std::string* error) const;
+  // Ended ok and meets every threshold: a score without a value fails when it is required,
+  // passes otherwise (validation/scores.h).
   bool Passes(const ScoredPoint& p) const;
+  // "Err = 0.12 (max 0.1), SRf = 0.9 (min 0.8)": the point's value of each thresholded score.
+  std::string Judged(const ScoredPoint& p) const;
 };
 
 // The boundary at one R_k. A truncation passes when it and every larger studied truncation
@@ -83,6 +91,10 @@ struct ValidityCriteria {
   // studied truncation below it; nullopt without a fit or a boundary.
   std::optional<double> RequiredRFtrunc(double r_k) const;
 };
+
+// "Err <= 0.1, SRf >= 0.8", each threshold in registry order; with its source when asked:
+// "Err <= 0.1 (paper eq. 8), ...".
+std::string ThresholdsText(const CriteriaOptions& options, bool with_sources);
 
 // Diverged or unstable: the run lost stability (its time step is past the bound).
 bool LostStability(RunStatus status);

@@ -11,10 +11,10 @@ std::filesystem::path PlotComparison(const ComparisonResult& result,
                                      const ComparisonOptions& options,
                                      const std::filesystem::path& dir) {
   const auto png = dir / "fig3.png";
-  const std::string scores =
-      result.err ? fmt::format("Err = {:.1f} %, SRf = {}", 100.0 * *result.err,
-                               result.srf ? fmt::format("{:.3f}", *result.srf) : "n/a")
-                 : ToString(result.status);
+  const std::optional<double> err = result.scores["err"], srf = result.scores["srf"];
+  const std::string scores = err ? fmt::format("Err = {:.1f} %, SRf = {}", 100.0 * *err,
+                                               srf ? fmt::format("{:.3f}", *srf) : "n/a")
+                                 : ToString(result.status);
   const std::string script = fmt::format(
       R"(set terminal pngcairo size 1200,900 font "DejaVu Sans,11"
 set output {png}

@@ -37,13 +37,14 @@ struct ZoneExtent {
   std::set<double> heights_m;
 };
 
-// Columns: y (mm), z (mm), height (m), force (N), 1 between two beams / 0 against a stop; the
-// largest forces last, to be drawn on top.
+// Columns: y (mm), z (mm), height (m), the quantity (a force in N, a wear volume in m^3), 1
+// between two beams / 0 against a stop; the largest values last, to be drawn on top.
 ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n,
-                      const std::filesystem::path& zones_file) {
+                      const MapQuantity& quantity, const std::filesystem::path& zones_file) {
   AtomicFile out(zones_file);
   std::ostream& zones = out.Stream();
-  zones << "# y_mm z_mm height_m max_force_n between_beams\n";
+  zones << "# value: " << quantity.name << " (" << quantity.unit << ")\n"
+        << "# y_mm z_mm height_m value between_beams\n";
   ZoneExtent e;
   for (std::size_t i : ByForce(max_force_n)) {
     const SceneZone& z = scene.zones[i];
@@ -163,21 +164,22 @@ plot {beams} using 1:2 with points pt 6 ps 1.2 lc rgb '#d9d9d9' notitle, \
 }
 
 // The stops on their own axis: largest force against height, each labelled with its value.
-std::string StopPlot(const ZoneExtent& e, const std::string& zones) {
+std::string StopPlot(const ZoneExtent& e, const std::string& zones, const MapQuantity& quantity) {
   return fmt::format(
       R"(set title 'against a stop' font ',12'
 set size noratio
-set xlabel 'largest force (N)'
+set xlabel {xlabel} noenhanced
 set ylabel 'height (m)'
 set xrange [0:{x1}]
 set yrange [0:{top}]
 unset key
 unset colorbox
 plot {zones} using ($5 == 0 && $4 > 0 ? $4 : 1/0):3 with points pt 5 ps 1.6 lc rgb '#000000' notitle, \
-     '' using ($5 == 0 && $4 > 0 ? $4 : 1/0):3:(sprintf('%.4g N', $4)) with labels right offset -1,0 font ',10' notitle
+     '' using ($5 == 0 && $4 > 0 ? $4 : 1/0):3:(sprintf('%.4g {unit}', $4)) with labels right offset -1,0 font ',10' notitle
 )",
-      fmt::arg("zones", zones), fmt::arg("x1", 1.15 * e.largest_stop),
-      fmt::arg("top", 1.05 * e.top));
+      fmt::arg("xlabel", GnuplotQuoted(quantity.name + " (" + quantity.unit + ")")),
+      fmt::arg("unit", quantity.unit), fmt::arg("zones", zones),
+      fmt::arg("x1", 1.15 * e.largest_stop), fmt::arg("top", 1.05 * e.top));
 }
 
 // The panels' grid: rows and columns.
@@ -185,14 +187,14 @@ struct Layout {
   int rows = 1, columns = 1;
 };
 
-// `quantity` names what the forces are, in the title and on the colour bar.
+// `quantity` names what the values are, in the title and on the colour bar.
 std::string MapScript(const Scene& scene, const std::vector<double>& max_force_n,
-                      const std::string& quantity, const ZoneExtent& e,
+                      const MapQuantity& quantity, const ZoneExtent& e,
                       const std::filesystem::path& file, Layout layout, const std::string& panels) {
   const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
   const SceneZone& strongest = scene.zones[static_cast<std::size_t>(largest - max_force_n.begin())];
-  const std::string title = fmt::format("{}: {} per zone (largest {:.4g} N at {})", scene.name,
-                                        quantity, *largest, strongest.name);
+  const std::string title = fmt::format("{}: {} per zone (largest {:.4g} {} at {})", scene.name,
+                                        quantity.name, *largest, quantity.unit, strongest.name);
   return fmt::format(
       R"(set terminal {terminal}
 set output {out}
@@ -208,20 +210,20 @@ set multiplot layout {rows},{columns} title {title} font ',13' noenhanced
       fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("cb", e.largest_between > 0.0 ? e.largest_between : 1.0),
       fmt::arg("rows", layout.rows), fmt::arg("columns", layout.columns),
-      fmt::arg("cblabel", GnuplotQuoted(quantity + " between beams (N)")),
+      fmt::arg("cblabel", GnuplotQuoted(quantity.name + " between beams (" + quantity.unit + ")")),
       fmt::arg("title", GnuplotQuoted(title)), fmt::arg("panels", panels));
 }
 
 }  // namespace
 
 void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_force_n,
-                         const std::filesystem::path& file, const std::string& quantity) {
+                         const std::filesystem::path& file, const MapQuantity& quantity) {
   assert(max_force_n.size() == scene.zones.size());
   if (scene.zones.empty()) throw InputError(scene.name + ": the scene has no contact zone to map");
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto zones_file = std::filesystem::path(file).replace_extension(".zones.dat");
   const auto beams_file = std::filesystem::path(file).replace_extension(".beams.dat");
-  const ZoneExtent extent = WriteZones(scene, max_force_n, zones_file);
+  const ZoneExtent extent = WriteZones(scene, max_force_n, quantity, zones_file);
   const bool both = scene.planes == BendingPlanes::kBoth;
   const SectionBox box = both ? WriteBeams(scene, beams_file) : SectionBox{};
   const std::string zones = GnuplotFileName(zones_file);
@@ -236,7 +238,7 @@ void DrawContactForceMap(const Scene& scene, const std::vector<double>& max_forc
   } else {
     panels = ProfilePlot(extent, zones), count = 1;
   }
-  if (extent.stop) panels += StopPlot(extent, zones), ++count;
+  if (extent.stop) panels += StopPlot(extent, zones, quantity), ++count;
   const int columns = both ? std::min(count, 4) : count;
   const int rows = (count + columns - 1) / columns;
   RunGnuplot(MapScript(scene, max_force_n, quantity, extent, file, {rows, columns}, panels),

@@ -20,7 +20,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
   std::map<double, CostTable> by_rk;
   auto add = [&](const std::vector<ScoredPoint>& points, const char* scheme) {
     for (const auto& p : points) {
-      if (p.status != RunStatus::kOk || !p.err) continue;
+      if (p.status != RunStatus::kOk || !p.scores["err"]) continue;
       CostTable& t = by_rk[p.r_k];
       t.r_k = p.r_k;
       t.rows.push_back({p, scheme, thresholds.Passes(p), false});
@@ -45,16 +45,17 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
     std::ranges::sort(t.rows, {}, [](const CostRow& r) { return r.point.cpu_s; });
     double best_err = INFINITY;
     for (auto& row : t.rows) {
-      if (row.passes && *row.point.err < best_err) {
+      if (row.passes && *row.point.scores["err"] < best_err) {
         row.pareto = true;
-        best_err = *row.point.err;
+        best_err = *row.point.scores["err"];
       }
     }
     std::vector<double> ratios;
     for (const auto& imp : t.rows) {
       if (imp.scheme != "implicit-full") continue;
       for (const auto& exp : t.rows) {  // Fastest first: the first match is the cheapest.
-        if (exp.scheme == "explicit-modal" && *exp.point.err <= *imp.point.err) {
+        if (exp.scheme == "explicit-modal" &&
+            *exp.point.scores["err"] <= *imp.point.scores["err"]) {
           ratios.push_back(imp.point.cpu_s / exp.point.cpu_s);
           break;
         }
@@ -90,8 +91,8 @@ std::string CostSummary(const std::vector<CostTable>& tables) {
     for (const auto& r : t.rows) {
       s += fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>13.4g} {:>8.4f} {:>7} {:>6} {}\n",
                        r.scheme, r.point.r_ftrunc, r.point.DtRatio(), r.point.cpu_s,
-                       static_cast<double>(r.point.steps) * r.point.n_modes, *r.point.err,
-                       r.point.srf ? fmt::format("{:.4f}", *r.point.srf) : "-",
+                       static_cast<double>(r.point.steps) * r.point.n_modes, *r.point.scores["err"],
+                       r.point.scores["srf"] ? fmt::format("{:.4f}", *r.point.scores["srf"]) : "-",
                        r.passes ? "yes" : "no", r.pareto ? "*" : "");
     }
   }
@@ -108,9 +109,10 @@ void DrawCost(const std::string& study, const CostTable& table, const std::files
     std::ostream& data = data_out.Stream();
     data << "# cpu_s err srf implicit pareto r_ftrunc dt_ratio\n";
     for (const auto& r : table.rows) {
-      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.cpu_s, *r.point.err,
-                          r.point.srf.value_or(NAN), r.scheme == "implicit-full" ? 1 : 0,
-                          r.pareto ? 1 : 0, r.point.r_ftrunc, r.point.DtRatio());
+      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.cpu_s,
+                          *r.point.scores["err"], r.point.scores["srf"].value_or(NAN),
+                          r.scheme == "implicit-full" ? 1 : 0, r.pareto ? 1 : 0, r.point.r_ftrunc,
+                          r.point.DtRatio());
     }
     data_out.Commit();
   }

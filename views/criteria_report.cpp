@@ -50,7 +50,7 @@ double Checked(JsonObjectReader& r, const std::string& key, double v, const Allo
 
 // Refuses, naming the file and the key, options outside CriteriaOptions::IsValid's ranges, which
 // every use of them (DeriveCriteria, Passes, the views) assumes. `options` were read from
-// "thresholds" (err_max, srf_min) and "fit" (confidence).
+// "thresholds" (each score's key: err_max, srf_min, ...) and "fit" (confidence).
 void CheckOptions(const CriteriaOptions& options, const std::string& file) {
   std::string error;  // "<name> = <value>: must be in [<lo>, <hi>]"
   if (options.IsValid(&error)) return;
@@ -74,6 +74,15 @@ std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key
 }
 
 std::string Num(std::optional<double> v) { return v ? fmt::format("{:.4g}", *v) : "-"; }
+
+// {"err_max": 0.1, "srf_min": 0.8}: each threshold by its key.
+Json ThresholdsJson(const CriteriaOptions& options) {
+  Json thresholds = Json::object();
+  for (const auto& [name, threshold] : options.thresholds) {
+    thresholds[FindScore(name)->ThresholdKey()] = threshold;
+  }
+  return thresholds;
+}
 
 bool WithinFactor(double a, double b, double factor) {
   return a > 0 && b > 0 && std::max(a / b, b / a) <= factor * (1 + 1e-12);
@@ -111,7 +120,7 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
   }
   return {{"study", study},
           {"scheme", "explicit-modal"},
-          {"thresholds", {{"err_max", c.options.err_max}, {"srf_min", c.options.srf_min}}},
+          {"thresholds", ThresholdsJson(c.options)},
           {"r_ftrunc_smallest_studied", c.r_ftrunc_smallest_studied},
           {"boundary", boundary},
           {"fit", fit},
@@ -134,8 +143,14 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     const Json* th = r.Get("thresholds");
     if (th == nullptr) r.Fail("thresholds", "required object is missing");
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));
-    c.options.err_max = t.RequiredNumber("err_max");
-    c.options.srf_min = t.RequiredNumber("srf_min");
+    c.options.thresholds.clear();
+    for (const ScoreDefinition& score : Scores()) {
+      const std::string key = score.ThresholdKey();
+      // A score judging by default was judged by every criteria file; another only when given.
+      if (score.default_threshold || t.Get(key) != nullptr) {
+        c.options.thresholds[std::string(score.name)] = t.RequiredNumber(key);
+      }
+    }
     t.Finish();
   }
   c.r_ftrunc_smallest_studied = RequiredIn(r, "r_ftrunc_smallest_studied", kRftrunc);
@@ -239,10 +254,9 @@ std::string StabilityLine(const ValidityCriteria& c, const std::vector<ScoredPoi
 
 std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
                             const std::vector<ScoredPoint>& points) {
-  std::string s =
-      fmt::format("criteria of study {} (explicit-modal; Err <= {:g}, SRf >= {:g}; {} stored)\n",
-                  study, c.options.err_max, c.options.srf_min,
-                  Counted(static_cast<long long>(points.size()), "point"));
+  std::string s = fmt::format("criteria of study {} (explicit-modal; {}; {} stored)\n", study,
+                              ThresholdsText(c.options, false),
+                              Counted(static_cast<long long>(points.size()), "point"));
   s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
                    "dt/dt_sharp max", "passing");
   for (const auto& b : c.boundary) {

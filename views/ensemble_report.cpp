@@ -1,6 +1,6 @@
 // The report's sections for an ensemble study (declared in views/html_report.h): the sizing
 // statistics of `shockmap sizing` (docs/ensembles.md, "Sizing") as sortable tables, the
-// settings' agreement, the impact statistics and the sizing pictures.
+// settings' agreement, the impact statistics, the wear sizing and the sizing pictures.
 
 #include <fmt/format.h>
 
@@ -57,8 +57,8 @@ std::string Agreement(const EnsembleSizing& s) {
 }
 
 // The means over members of every zone's impact statistics; no rows when none were streamed.
-QueryResult ImpactTable(const EnsembleSizing& s) {
-  QueryResult t;
+Table ImpactTable(const EnsembleSizing& s) {
+  Table t;
   t.columns = {"state",
                "setting",
                "zone",
@@ -79,14 +79,14 @@ QueryResult ImpactTable(const EnsembleSizing& s) {
                         static_cast<std::int64_t>(z.members), m.impacts_per_s,
                         m.rebounds_per_impact, m.mean_impact_duration_s, m.contact_time_fraction,
                         m.mean_force_n, m.rms_force_n, m.impulse_n_s,
-                        m.wear_work_rate_w ? QueryCell(*m.wear_work_rate_w) : QueryCell()});
+                        m.wear_work_rate_w ? TableCell(*m.wear_work_rate_w) : TableCell()});
     }
   }
   return t;
 }
 
 std::string Impacts(const EnsembleSizing& s) {
-  const QueryResult table = ImpactTable(s);
+  const Table table = ImpactTable(s);
   if (table.rows.empty()) {
     return "<p>No member streamed impact statistics (the study file has no "
            "<code>impact_statistics</code>).</p>\n";
@@ -95,6 +95,23 @@ std::string Impacts(const EnsembleSizing& s) {
          "the wear work rate where the scene bends in both planes.</p>\n" +
          Scrolling(SortableTable(table, "impacts-table",
                                  "Mean impact statistics per clearance state, setting and zone"));
+}
+
+std::string Wear(const EnsembleSizing& s) {
+  const Table table = WearTable(s);
+  if (table.rows.empty()) {
+    return "<p>No member has a wear volume (the scene has no <code>wear</code> law, or its "
+           "zones do not slide: it bends in one plane, or the study file has no "
+           "<code>impact_statistics</code>).</p>\n";
+  }
+  return fmt::format(
+             "<p>Archard's wear volume of each zone over the scene's wear life (docs/physics.md "
+             "§6.3): P{0:g} over the members with its {1:g} % order-statistic interval, Wilks' "
+             "upper tolerance limit (the design value) and the mean, beside the P{0:g} of the "
+             "largest force: the numbers of <code>shockmap sizing --wear</code>.</p>\n",
+             100 * s.options.quantile, 100 * s.options.confidence) +
+         Scrolling(SortableTable(table, "wear-table",
+                                 "Wear volume per clearance state, setting and zone"));
 }
 
 std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
@@ -122,6 +139,7 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
                                "Every zone per clearance state and setting"))},
       {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
       {"impacts", "Impact statistics", Impacts(sizing)},
+      {"wear-sizing", "Wear sizing", Wear(sizing)},
       {"sizing-pictures", "Sizing pictures", Pictures(ctx, sizing, stored, scene)},
       {"provenance", "Provenance",
        SortableTable(tables.provenance, "provenance-table", "Runs of the study")},

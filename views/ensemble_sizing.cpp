@@ -139,6 +139,18 @@ std::optional<MeanImpacts> MeanOf(const std::vector<const StoredMember*>& member
   return sum;
 }
 
+// The wear volumes' sizing, when every member has one at the zone.
+std::optional<WearSizing> WearOf(const std::vector<const StoredMember*>& members, int zone,
+                                 const SizingOptions& options) {
+  std::vector<double> volumes;
+  for (const StoredMember* m : members) {
+    const std::optional<double>& v = m->zones[zone].wear_volume_m3;
+    if (!v) return std::nullopt;
+    volumes.push_back(*v);
+  }
+  return SizeWear(volumes, options);
+}
+
 std::optional<double> NominalForce(const StoredEnsemble& stored, const std::string& state,
                                    int zone) {
   for (const EnsembleReferenceRow& r : stored.references) {
@@ -170,6 +182,7 @@ GroupSizing SizeGroup(GroupSizing g, const std::vector<const StoredMember*>& mem
     z.name = names[zone];
     z.nominal_n = NominalForce(stored, g.state, zone);
     z.impacts = MeanOf(members, zone);
+    z.wear = WearOf(members, zone, options);
     g.zones.push_back(std::move(z));
   }
   return g;
@@ -233,6 +246,16 @@ ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& opti
   z.bootstrap = BootstrapQuantileInterval(forces, options.quantile, options.confidence,
                                           options.bootstrap_resamples, options.bootstrap_seed);
   return z;
+}
+
+WearSizing SizeWear(const std::vector<double>& volumes, const SizingOptions& options) {
+  WearSizing w;
+  w.sizing = EstimateQuantile(volumes, options.quantile, options.confidence);
+  w.wilks_order =
+      WilksHighestOrder(static_cast<int>(volumes.size()), options.quantile, options.confidence);
+  w.wilks = WilksUpperLimit(volumes, options.quantile, options.confidence);
+  for (const double v : volumes) w.mean_m3 += v / static_cast<double>(volumes.size());
+  return w;
 }
 
 StoredEnsemble CurrentMembers(StoredEnsemble stored) {

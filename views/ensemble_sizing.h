@@ -2,7 +2,8 @@
 // Sizing statistics of an ensemble study (docs/ensembles.md, "Sizing"): for every clearance
 // state and numerical setting, per zone and for the hottest zone, the quantiles of the members'
 // largest force with their order-statistic intervals, Wilks' upper tolerance limit, a bootstrap
-// cross-check, the mean impact statistics; each setting judged against the refined one.
+// cross-check, the mean impact statistics, the sizing statistics of the wear volume; each
+// setting judged against the refined one.
 
 #include <cstdint>
 #include <optional>
@@ -36,6 +37,16 @@ struct MeanImpacts {
   std::optional<double> wear_work_rate_w;  // Where the scene bends in both planes.
 };
 
+// The sizing statistics of a zone's wear volume over the members (docs/ensembles.md, "Wear
+// sizing"): the sizing quantile with its order-statistic interval, Wilks' limit (the design
+// value) and the mean.
+struct WearSizing {
+  QuantileInterval sizing;  // At SizingOptions::quantile.
+  int wilks_order = 0;      // 0: too few members for order 1.
+  std::optional<ToleranceLimit> wilks;
+  double mean_m3 = 0.0;
+};
+
 struct ZoneSizing {
   int zone = 0;
   std::string name;
@@ -46,6 +57,7 @@ struct ZoneSizing {
   Interval bootstrap;                  // Of the sizing quantile.
   std::optional<double> nominal_n;     // The state's nominal run.
   std::optional<MeanImpacts> impacts;  // Over the members.
+  std::optional<WearSizing> wear;      // When every member has the zone's wear volume.
 };
 
 // One clearance state at one numerical setting.
@@ -84,6 +96,10 @@ EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& stu
 // The sizing statistics of one zone over `forces` (the members' largest forces, in member
 // order). Precondition: forces is not empty.
 ZoneSizing SizeZone(const std::vector<double>& forces, const SizingOptions& options);
+
+// The sizing statistics of one zone's wear volumes (in member order). Precondition: volumes
+// is not empty.
+WearSizing SizeWear(const std::vector<double>& volumes, const SizingOptions& options);
 
 // Whether two zones' sizing intervals agree within the tolerance (see SizingOptions); nullopt
 // when either interval is unbounded.

@@ -83,7 +83,8 @@ std::pair<std::string, std::string> WriteCurves(
   for (const auto& [key, curve] : curves) {
     data << "# " << curve.title << "\n# r_k err srf status\n";
     for (const auto& [r_k, p] : curve.by_rk) {
-      data << fmt::format("{} {} {} {}\n", r_k, Value(p->err), Value(p->srf), ToString(p->status));
+      data << fmt::format("{} {} {} {}\n", r_k, Value(p->scores["err"]), Value(p->scores["srf"]),
+                          ToString(p->status));
     }
     data << "\n\n";
     const bool is_implicit = key.first == "implicit";
@@ -136,7 +137,8 @@ unset multiplot
       fmt::arg("x0", range.first / 2), fmt::arg("x1", range.second * 2),
       fmt::arg("title", GnuplotQuoted(study + ": the paper's Fig. 4 (finest time step per point)")),
       fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
-      fmt::arg("err_max", thresholds.err_max), fmt::arg("srf_min", thresholds.srf_min),
+      fmt::arg("err_max", thresholds.thresholds.at("err")),
+      fmt::arg("srf_min", thresholds.thresholds.at("srf")),
       fmt::arg("unconverged", UnconvergedMarks(UnconvergedRk(curves))),
       fmt::arg("unconverged_key", UnconvergedKey(UnconvergedRk(curves))));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);

@@ -25,7 +25,7 @@ namespace {
 constexpr double kFig3RK = 3000.0;
 
 // The index of the results view's point_id column.
-std::size_t PointIdColumn(const QueryResult& results) {
+std::size_t PointIdColumn(const Table& results) {
   return static_cast<std::size_t>(std::ranges::find(results.columns, "point_id") -
                                   results.columns.begin());
 }
@@ -41,7 +41,7 @@ std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
   const MapGrid by_rft = BuildMapGrid(points, MapAxis::kRFtrunc);
   const MapGrid by_dt = BuildMapGrid(points, MapAxis::kDt);
   return fmt::format(
-      "<p>Hover a cell for its R_k, R_ftrunc, dt, Err, SRf and status; click it to open the "
+      "<p>Hover a cell for its R_k, R_ftrunc, dt, scores and status; click it to open the "
       "point: its stored values, its Fig. 3 and the <code>compare</code> command that "
       "recomputes it.</p>\n<h3>Outcome over R_k and R_ftrunc, {}</h3>\n{}"
       "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}",
@@ -54,13 +54,13 @@ std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
 std::string MapFigures(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
                        const ValidityCriteria& criteria) {
   std::string figures;
-  for (auto metric : {MapMetric::kErr, MapMetric::kSrf, MapMetric::kStatus, MapMetric::kCost}) {
-    const auto png = ctx.dir / ("map_" + ToString(metric) + ".png");
+  for (const std::string& metric : MapMetrics()) {
+    const auto png = ctx.dir / ("map_" + metric + ".png");
     DrawValidityMap(ctx.study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
-    figures += Figure(png, "Validity map: " + ToString(metric) + " over R_k and R_ftrunc", ctx.dir);
+    figures += Figure(png, "Validity map: " + metric + " over R_k and R_ftrunc", ctx.dir);
   }
   const auto dt_png = ctx.dir / "map_status_dt.png";
-  DrawValidityMap(ctx.study, points, criteria, {MapMetric::kStatus, MapAxis::kDt, {}}, dt_png);
+  DrawValidityMap(ctx.study, points, criteria, {"status", MapAxis::kDt, {}}, dt_png);
   return figures +
          Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation", ctx.dir);
 }
@@ -79,13 +79,15 @@ std::string CostSection(const ReportContext& ctx, const std::vector<ScoredPoint>
 }
 
 // The points table (a chosen set of the results view's columns), each row linking its page.
-std::string PointsTable(const QueryResult& results) {
-  static const std::vector<std::string> kShown = {
-      "point_id", "r_k", "r_ftrunc", "scheme",  "dt_rule", "dt_factor", "dt_used_s",
-      "status",   "err", "srf",      "n_modes", "steps",   "wall_s",    "message"};
-  QueryResult shown;
+std::string PointsTable(const Table& results) {
+  std::vector<std::string> shown_columns = {"point_id", "r_k",       "r_ftrunc",  "scheme",
+                                            "dt_rule",  "dt_factor", "dt_used_s", "status"};
+  for (const ScoreDefinition& score : Scores()) shown_columns.emplace_back(score.name);
+  for (const char* name : {"n_modes", "steps", "wall_s", "message"})
+    shown_columns.emplace_back(name);
+  Table shown;
   std::vector<std::size_t> columns;
-  for (const std::string& name : kShown) {
+  for (const std::string& name : shown_columns) {
     const auto it = std::ranges::find(results.columns, name);
     if (it != results.columns.end()) {
       columns.push_back(static_cast<std::size_t>(it - results.columns.begin()));
@@ -106,7 +108,7 @@ std::string PointsTable(const QueryResult& results) {
 }
 
 // Writes points/point_ID.html for every row of `results`.
-void WritePointPages(const ReportContext& ctx, const StudySpec& spec, const QueryResult& results,
+void WritePointPages(const ReportContext& ctx, const StudySpec& spec, const Table& results,
                      const std::map<std::int64_t, PointFigure>& figures) {
   const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
   CreateOutputDirectory(ctx.dir / "points");
@@ -126,9 +128,11 @@ void WritePointPages(const ReportContext& ctx, const StudySpec& spec, const Quer
 
 // The facts of the header every kind shares.
 std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext& ctx,
-                                                             const QueryResult& provenance) {
+                                                             const Table& provenance) {
   std::set<std::string> versions;
-  for (const auto& row : provenance.rows) versions.insert(CellText(row[1]));
+  for (std::size_t i = 0; i < provenance.rows.size(); ++i) {
+    versions.insert(CellText(NamedRow(provenance, i)["code_version"]));
+  }
   std::string computed;
   for (const std::string& v : versions) computed += (computed.empty() ? "" : ", ") + v;
   std::vector<std::pair<std::string, std::string>> facts = {
@@ -139,11 +143,9 @@ std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext
                                       ctx.writer.build_type)},
       {"points computed by", computed.empty() ? "no run yet" : computed},
       {"database", ctx.database_path}};
-  // An ensemble's members are not scored: Err and SRf thresholds judge nothing there.
+  // An ensemble's members are not scored: the scores' thresholds judge nothing there.
   if (ctx.kind != ToString(StudyFileKind::kSceneEnsemble)) {
-    facts.emplace_back("thresholds",
-                       fmt::format("Err <= {:g} (paper eq. 8), SRf >= {:g} (paper eq. 9)",
-                                   ctx.thresholds.err_max, ctx.thresholds.srf_min));
+    facts.emplace_back("thresholds", ThresholdsText(ctx.thresholds, true));
   }
   return facts;
 }
@@ -184,7 +186,7 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
   }
   const ValidityCriteria criteria = DeriveCriteria(explicit_points, ctx.thresholds);
   const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
-  const QueryResult results = StudyResultRows(ctx.database_path, ctx.study, false);
+  const Table results = StudyResultRows(ctx.database_path, ctx.study, kCanonicalPoints);
   WritePointPages(ctx, spec, results, figures);
   const auto fig4_png = ctx.dir / "fig4.png";
   DrawFig4(ctx.study, explicit_points, implicit_points, ctx.thresholds, fig4_png);

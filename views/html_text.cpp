@@ -58,7 +58,7 @@ std::string Base64(std::string_view bytes) {
   return out;
 }
 
-std::string CellText(const QueryCell& cell) {
+std::string CellText(const TableCell& cell) {
   if (const auto* d = std::get_if<double>(&cell)) return fmt::format("{:.6g}", *d);
   if (const auto* i = std::get_if<std::int64_t>(&cell)) return std::to_string(*i);
   if (const auto* s = std::get_if<std::string>(&cell)) return *s;
@@ -67,7 +67,7 @@ std::string CellText(const QueryCell& cell) {
 
 namespace {
 
-bool IsNumberColumn(const QueryResult& r, std::size_t column) {
+bool IsNumberColumn(const Table& r, std::size_t column) {
   bool any = false;
   for (const auto& row : r.rows) {
     if (std::holds_alternative<std::string>(row[column])) return false;
@@ -76,7 +76,7 @@ bool IsNumberColumn(const QueryResult& r, std::size_t column) {
   return any;
 }
 
-std::string Cell(const QueryCell& cell) {
+std::string Cell(const TableCell& cell) {
   if (const auto* d = std::get_if<double>(&cell)) {
     // The shortest text that reads back as the stored double, to sort and to copy.
     const std::string full = fmt::format("{}", *d);
@@ -89,8 +89,8 @@ std::string Cell(const QueryCell& cell) {
 
 }  // namespace
 
-std::string SortableTable(const QueryResult& result, const std::string& id,
-                          const std::string& caption, const std::vector<std::string>& row_links) {
+std::string SortableTable(const Table& result, const std::string& id, const std::string& caption,
+                          const std::vector<std::string>& row_links) {
   std::string html = fmt::format("<table class=\"sortable\" id=\"{}\"><caption>{}</caption>\n",
                                  HtmlEscaped(id), HtmlEscaped(caption));
   html += "<thead><tr>";

@@ -23,14 +23,13 @@ std::string Base64(std::string_view bytes);
 
 // A cell as the report's tables show it: integers and text as they are, reals with 6
 // significant digits (the full value in the cell's data-sort and title), NULL empty.
-std::string CellText(const QueryCell& cell);
+std::string CellText(const TableCell& cell);
 
 // A <table class="sortable"> of `result` with a <caption>: a click on a header sorts by that
 // column (the page's vendored tablesort), numerically where every value of the column is a
 // number. `id` names the table in the page. With `row_links` (one per row), each row's first
 // cell links to its entry.
-std::string SortableTable(const QueryResult& result, const std::string& id,
-                          const std::string& caption,
+std::string SortableTable(const Table& result, const std::string& id, const std::string& caption,
                           const std::vector<std::string>& row_links = {});
 
 // A file of the report linked for download: the path relative to the page.

@@ -43,23 +43,27 @@ std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th
   const ScoredPoint& p = *c.point;
   const OutcomeCategory& category = OutcomeCategories()[OutcomeCategoryOf(p, th)];
   const std::string status = ToString(p.status);
+  std::string scores, data;
+  for (const ScoreDefinition& score : Scores()) {
+    scores += fmt::format("{} = {}, ", score.label, Scored(p.scores[score.name]));
+    data += fmt::format("data-{}=\"{}\" ", score.name, Scored(p.scores[score.name]));
+  }
   const std::string tip = fmt::format(
-      "R_k = {:.6g}, R_ftrunc = {:.6g}, dt = {:.4g} s ({:.3g} dt_sharp), Err = {}, SRf = {}, "
-      "status {} ({})",
-      p.r_k, p.r_ftrunc, p.dt_s, p.DtRatio(), Scored(p.err), Scored(p.srf), status, category.label);
+      "R_k = {:.6g}, R_ftrunc = {:.6g}, dt = {:.4g} s ({:.3g} dt_sharp), {}status {} ({})", p.r_k,
+      p.r_ftrunc, p.dt_s, p.DtRatio(), scores, status, category.label);
   return fmt::format(
       "<a href=\"{href}\"><rect class=\"cell\" x=\"{x:.2f}\" y=\"{y:.2f}\" width=\"{w:.2f}\" "
       "height=\"{h:.2f}\" fill=\"{fill}\" data-point-id=\"{id}\" data-rk=\"{rk:.6g}\" "
       "data-rftrunc=\"{rft:.6g}\" data-dt=\"{dt:.4g}\" data-dt-ratio=\"{ratio:.3g}\" "
-      "data-err=\"{err}\" data-srf=\"{srf}\" data-status=\"{status}\" data-outcome=\"{outcome}\">"
+      "{scores}data-status=\"{status}\" data-outcome=\"{outcome}\">"
       "<title>{tip}</title></rect></a>\n",
       fmt::arg("href", PointPagePath(p.point_id).generic_string()), fmt::arg("x", f.X(c.x_low)),
       fmt::arg("y", f.Y(c.y_high)), fmt::arg("w", f.X(c.x_high) - f.X(c.x_low)),
       fmt::arg("h", f.Y(c.y_low) - f.Y(c.y_high)), fmt::arg("fill", category.colour),
       fmt::arg("id", p.point_id), fmt::arg("rk", p.r_k), fmt::arg("rft", p.r_ftrunc),
-      fmt::arg("dt", p.dt_s), fmt::arg("ratio", p.DtRatio()), fmt::arg("err", Scored(p.err)),
-      fmt::arg("srf", Scored(p.srf)), fmt::arg("status", HtmlEscaped(status)),
-      fmt::arg("outcome", HtmlEscaped(category.label)), fmt::arg("tip", HtmlEscaped(tip)));
+      fmt::arg("dt", p.dt_s), fmt::arg("ratio", p.DtRatio()), fmt::arg("scores", data),
+      fmt::arg("status", HtmlEscaped(status)), fmt::arg("outcome", HtmlEscaped(category.label)),
+      fmt::arg("tip", HtmlEscaped(tip)));
 }
 
 std::string Axes(const MapGrid& grid, const Frame& f, const std::string& ylabel) {

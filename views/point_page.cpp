@@ -48,7 +48,7 @@ std::string DtFlags(const TimeStepRequest& dt) {
 }
 
 std::string StoredValues(const PointPageInput& in) {
-  QueryResult values;
+  Table values;
   values.columns = {"column", "value"};
   for (std::size_t i = 0; i < in.columns->size(); ++i) {
     values.rows.push_back({(*in.columns)[i], (*in.row)[i]});
@@ -62,14 +62,17 @@ std::string FigureSection(const PointPageInput& in, const std::string& command) 
            "this one, run (from the report's folder):</p><pre>" +
            HtmlEscaped(command) + "</pre>\n";
   }
-  auto scored = [](const std::optional<double>& v) {
-    return v ? fmt::format("{:.4f}", *v) : std::string("not scored");
-  };
+  std::string scores;
+  for (const ScoreDefinition& score : Scores()) {
+    const std::optional<double> v = in.figure->scores[score.name];
+    scores += fmt::format("{}{} = {}", scores.empty() ? "" : ", ", score.label,
+                          v ? fmt::format("{:.4f}", *v) : std::string("not scored"));
+  }
   const auto dir = in.figure->png.parent_path();
   return EmbeddedFigure(in.figure->png,
-                        fmt::format("Tip displacement and contact force against the stored "
-                                    "reference, recomputed: Err = {}, SRf = {}",
-                                    scored(in.figure->err), scored(in.figure->srf)),
+                        "Tip displacement and contact force against the stored reference, "
+                        "recomputed: " +
+                            scores,
                         {{"image", dir.filename() / "fig3.png"},
                          {"numerical history (CSV)", dir.filename() / "numerical.csv"},
                          {"reference history (CSV)", dir.filename() / "reference.csv"},
@@ -84,12 +87,15 @@ std::map<std::int64_t, StoredStudyPoint> StudyPointsById(const std::string& data
   std::map<std::string, const StudyPoint*> by_key;
   for (const StudyPoint& p : spec.points) by_key[PointKey(p)] = &p;
   std::map<std::int64_t, StoredStudyPoint> points;
-  for (const auto& row : PointKeys(database_path, study).rows) {
-    const std::int64_t id = std::get<std::int64_t>(row[0]);  // point_id: INTEGER PRIMARY KEY.
+  const Table keys = PointKeys(database_path, study);
+  for (std::size_t i = 0; i < keys.rows.size(); ++i) {
+    const NamedRow row(keys, i);
+    const std::int64_t id = std::get<std::int64_t>(row["point_id"]);  // INTEGER PRIMARY KEY.
     const std::string what = "point " + std::to_string(id);
-    const auto found = by_key.find(StoredText(row[1], database_path, what, "point_key"));
+    const auto found = by_key.find(StoredText(row["point_key"], database_path, what, "point_key"));
     if (found == by_key.end()) continue;
-    points[id] = {*found->second, StoredText(row[2], database_path, what, "reference_key")};
+    points[id] = {*found->second,
+                  StoredText(row["reference_key"], database_path, what, "reference_key")};
   }
   return points;
 }

@@ -12,6 +12,7 @@
 
 #include "db/read_only_query.h"
 #include "formats/study_spec.h"
+#include "validation/scores.h"
 
 namespace shockmap {
 
@@ -19,7 +20,7 @@ namespace shockmap {
 // script beside it) and the scores of that recomputation.
 struct PointFigure {
   std::filesystem::path png;
-  std::optional<double> err, srf;
+  ScoreValues scores;
 };
 
 // A stored point of a canonical study with its point in the stored study file.
@@ -42,7 +43,7 @@ struct PointPageInput {
   std::string study;
   std::int64_t point_id = 0;
   const std::vector<std::string>* columns = nullptr;  // The `results` view's columns.
-  const std::vector<QueryCell>* row = nullptr;        // And the point's row.
+  const std::vector<TableCell>* row = nullptr;        // And the point's row.
   std::optional<StudyPoint> point;  // Its point in the stored study file (none: not found).
   const StudySpec* spec = nullptr;
   std::optional<PointFigure> figure;

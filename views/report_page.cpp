@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "validation/scores.h"
 #include "views/html_text.h"
 #include "views/vendored_scripts.h"
 
@@ -37,39 +38,49 @@ svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
 )css";
 
 // After the vendored tablesort: a numeric sort that reads exponents (empty cells sort as
-// -infinity), every sortable table taken, the map's hover box, and the page's load marks.
+// -infinity), every sortable table taken, the map's hover box (with {scores}: one line per
+// score of the registry), and the page's load marks. A format string: its braces are doubled.
 constexpr const char* kScript = R"js(
-Tablesort.extend('real', function () { return false; }, function (a, b) {
+Tablesort.extend('real', function () {{ return false; }}, function (a, b) {{
   var x = a.trim() === '' ? -Infinity : Number(a), y = b.trim() === '' ? -Infinity : Number(b);
   if (x === y || (isNaN(x) && isNaN(y))) return 0;
   return (isNaN(y) ? -Infinity : y) > (isNaN(x) ? -Infinity : x) ? 1 : -1;
-});
+}});
 var sortableTables = 0;
-document.querySelectorAll('table.sortable').forEach(function (t) { new Tablesort(t); ++sortableTables; });
+document.querySelectorAll('table.sortable').forEach(function (t) {{ new Tablesort(t); ++sortableTables; }});
 var info = document.getElementById('cell-info');
-document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {
-  cell.addEventListener('mousemove', function (e) {
+document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {{
+  cell.addEventListener('mousemove', function (e) {{
     var d = cell.dataset;
     info.innerHTML = '';
     [['R_k', d.rk], ['R_ftrunc', d.rftrunc], ['dt', d.dt + ' s (' + d.dtRatio + ' dt_sharp)'],
-     ['Err', d.err], ['SRf', d.srf], ['status', d.status + ' (' + d.outcome + ')']].forEach(function (row) {
+     {scores}['status', d.status + ' (' + d.outcome + ')']].forEach(function (row) {{
       var line = document.createElement('div');
       line.textContent = row[0] + ': ' + row[1];
       info.appendChild(line);
-    });
+    }});
     info.style.left = (e.clientX + 14) + 'px';
     info.style.top = (e.clientY + 14) + 'px';
     info.style.display = 'block';
-  });
-  cell.addEventListener('mouseleave', function () { info.style.display = 'none'; });
-});
-window.addEventListener('load', function () {
+  }});
+  cell.addEventListener('mouseleave', function () {{ info.style.display = 'none'; }});
+}});
+window.addEventListener('load', function () {{
   var images = Array.from(document.images);
-  var loaded = images.filter(function (i) { return i.complete && i.naturalWidth > 0; }).length;
+  var loaded = images.filter(function (i) {{ return i.complete && i.naturalWidth > 0; }}).length;
   document.body.dataset.imagesLoaded = loaded + '/' + images.length;
   document.body.dataset.sortableTables = String(sortableTables);
-});
+}});
 )js";
+
+// The script with one hover line per score: ['Err', d.err], ['SRf', d.srf], ...
+std::string Script() {
+  std::string scores;
+  for (const ScoreDefinition& score : Scores()) {
+    scores += fmt::format("['{}', d.{}], ", score.label, score.name);
+  }
+  return fmt::format(fmt::runtime(kScript), fmt::arg("scores", scores));
+}
 
 std::string Header(const ReportHeader& header) {
   std::string facts;
@@ -114,7 +125,7 @@ std::string ReportPage(const ReportHeader& header, const std::vector<ReportSecti
       fmt::arg("title", HtmlEscaped(header.title)), fmt::arg("style", kStyle),
       fmt::arg("header", Header(header)), fmt::arg("contents", Contents(sections)),
       fmt::arg("body", body), fmt::arg("licences", Licences()),
-      fmt::arg("tablesort", TablesortScript()), fmt::arg("script", kScript));
+      fmt::arg("tablesort", TablesortScript()), fmt::arg("script", Script()));
 }
 
 }  // namespace shockmap

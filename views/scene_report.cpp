@@ -13,15 +13,15 @@
 namespace shockmap {
 namespace {
 
-std::size_t ColumnOf(const QueryResult& r, const std::string& name) {
+std::size_t ColumnOf(const Table& r, const std::string& name) {
   return static_cast<std::size_t>(std::ranges::find(r.columns, name) - r.columns.begin());
 }
 
 // Points by status, counted from the stored rows.
-QueryResult Outcomes(const QueryResult& results) {
+Table Outcomes(const Table& results) {
   std::map<std::string, std::int64_t> counts;
   for (const auto& row : results.rows) ++counts[CellText(row[ColumnOf(results, "status")])];
-  QueryResult out;
+  Table out;
   out.columns = {"status", "points"};
   for (const auto& [status, n] : counts) out.rows.push_back({status, n});
   return out;
@@ -29,42 +29,36 @@ QueryResult Outcomes(const QueryResult& results) {
 
 // The points with each swept parameter as its own column (from parameters_json), then their
 // scores and costs.
-QueryResult PointsWithParameters(const SceneStudySpec& spec, const QueryResult& results) {
-  static const std::vector<std::string> kShown = {"status",
-                                                  "err",
-                                                  "srf",
-                                                  "dt_used_s",
-                                                  "steps",
-                                                  "wall_s",
-                                                  "max_energy_ratio",
-                                                  "largest_force_n",
-                                                  "largest_force_zone",
-                                                  "n_shocks",
-                                                  "first_shock_peak_n",
-                                                  "message"};
+Table PointsWithParameters(const SceneStudySpec& spec, const Table& results) {
+  std::vector<std::string> shown = {"status"};
+  for (const ScoreDefinition& score : Scores()) shown.emplace_back(score.name);
+  for (const char* name : {"dt_used_s", "steps", "wall_s", "max_energy_ratio", "largest_force_n",
+                           "largest_force_zone", "n_shocks", "first_shock_peak_n", "message"}) {
+    shown.emplace_back(name);
+  }
   std::vector<std::string> paths;
   if (!spec.points.empty()) {
     for (const auto& [path, value] : spec.points.front()) paths.push_back(path);
   }
-  QueryResult out;
+  Table out;
   out.columns.push_back("point_id");
   out.columns.insert(out.columns.end(), paths.begin(), paths.end());
-  out.columns.insert(out.columns.end(), kShown.begin(), kShown.end());
+  out.columns.insert(out.columns.end(), shown.begin(), shown.end());
   for (const auto& row : results.rows) {
     auto& cells = out.rows.emplace_back();
     cells.push_back(row[ColumnOf(results, "point_id")]);
     const auto parameters =
         nlohmann::json::parse(CellText(row[ColumnOf(results, "parameters_json")]), nullptr, false);
     for (const std::string& path : paths) {
-      QueryCell value;  // NULL unless the point sets the parameter.
+      TableCell value;  // NULL unless the point sets the parameter.
       if (parameters.is_object() && parameters.contains(path) && parameters[path].is_number()) {
         value = parameters[path].get<double>();
       }
       cells.push_back(value);
     }
-    for (const std::string& name : kShown) {
+    for (const std::string& name : shown) {
       const std::size_t c = ColumnOf(results, name);
-      cells.push_back(c < row.size() ? row[c] : QueryCell());
+      cells.push_back(c < row.size() ? row[c] : TableCell());
     }
   }
   return out;
@@ -85,7 +79,7 @@ std::string ForceMaps(const ReportContext& ctx, const std::vector<SceneForceMap>
 
 std::vector<ReportSection> SceneSections(const ReportContext& ctx, const SceneStudySpec& spec,
                                          const std::vector<SceneForceMap>& maps) {
-  const QueryResult results = StudyResultRows(ctx.database_path, ctx.study, true);
+  const Table results = StudyResultRows(ctx.database_path, ctx.study, kScenePoints);
   if (results.rows.empty()) {
     throw InputError("study \"" + ctx.study + "\" has no stored point to report on");
   }

@@ -8,21 +8,6 @@
 #include "db/study_queries.h"
 
 namespace shockmap {
-namespace {
-
-double Real(const QueryCell& c) {
-  if (const auto* d = std::get_if<double>(&c)) return *d;
-  if (const auto* i = std::get_if<std::int64_t>(&c)) return static_cast<double>(*i);
-  return 0.0;
-}
-
-std::optional<double> OptionalReal(const QueryCell& c) {
-  if (std::holds_alternative<std::monostate>(c)) return std::nullopt;
-  return Real(c);
-}
-
-}  // namespace
-
 std::string ResolveStudyName(const std::string& database_path, const std::string& study) {
   const std::vector<std::string> stored = StudyNames(database_path);
   std::string names;
@@ -43,32 +28,33 @@ std::string ResolveStudyName(const std::string& database_path, const std::string
 
 std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                                           const std::string& study, const std::string& scheme) {
-  const QueryResult r = ScoredPointRows(database_path, study, scheme);
+  const Table r = ScoredPointRows(database_path, study, scheme);
   std::vector<ScoredPoint> points;
-  for (const auto& row : r.rows) {
+  for (std::size_t i = 0; i < r.rows.size(); ++i) {
+    const NamedRow row(r, i);
     ScoredPoint p;
-    p.point_id = std::get<std::int64_t>(row[0]);
-    p.r_k = Real(row[1]);
-    p.r_ftrunc = Real(row[2]);
+    p.point_id = std::get<std::int64_t>(row["point_id"]);
+    p.r_k = NumberIn(row["r_k"]).value_or(0.0);
+    p.r_ftrunc = NumberIn(row["r_ftrunc"]).value_or(0.0);
     const std::string what = "point " + std::to_string(p.point_id);
-    const std::string& status = StoredText(row[3], database_path, what, "status");
+    const std::string& status = StoredText(row["status"], database_path, what, "status");
     const auto parsed = RunStatusFromString(status);
     if (!parsed) {
       throw InputError(database_path + ": point " + std::to_string(p.point_id) +
                        " has the unknown status \"" + status + "\"");
     }
     p.status = *parsed;
-    p.err = OptionalReal(row[4]);
-    p.srf = OptionalReal(row[5]);
-    p.dt_s = Real(row[6]);
-    p.dt_sharp_s = Real(row[7]);
-    p.dt_paper_s = Real(row[8]);
-    p.wall_s = Real(row[9]);
-    p.n_modes = static_cast<int>(
-        StoredCount(row[10], database_path, what, "n_modes", std::numeric_limits<int>::max()));
-    p.steps = StoredCount(row[11], database_path, what, "steps",
+    for (const ScoreDefinition& score : Scores())
+      p.scores.Set(score.name, NumberIn(row[score.name]));
+    p.dt_s = NumberIn(row["dt_requested_s"]).value_or(0.0);
+    p.dt_sharp_s = NumberIn(row["dt_sharp_s"]).value_or(0.0);
+    p.dt_paper_s = NumberIn(row["dt_paper_s"]).value_or(0.0);
+    p.wall_s = NumberIn(row["wall_s"]).value_or(0.0);
+    p.n_modes = static_cast<int>(StoredCount(row["n_modes"], database_path, what, "n_modes",
+                                             std::numeric_limits<int>::max()));
+    p.steps = StoredCount(row["steps"], database_path, what, "steps",
                           std::numeric_limits<std::int64_t>::max());
-    p.cpu_s = Real(row[12]);
+    p.cpu_s = NumberIn(row["cpu_s"]).value_or(0.0);
     points.push_back(p);
   }
   return points;

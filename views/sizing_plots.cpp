@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "formats/output_file.h"
 #include "views/contact_force_map.h"
@@ -210,6 +211,16 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
                                  GnuplotQuoted(title), axis, plot));
 }
 
+// The sizing estimate of each zone's wear volume; nullopt unless every zone has one.
+std::optional<std::vector<double>> WearSizingValues(const GroupSizing& g) {
+  std::vector<double> values;
+  for (const ZoneSizing& z : g.zones) {
+    if (!z.wear) return std::nullopt;
+    values.push_back(z.wear->sizing.estimate);
+  }
+  return values;
+}
+
 }  // namespace
 
 std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
@@ -222,10 +233,19 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
     for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
     const fs::path map = folder / ("map_" + FileNamePart(g->state) + ".png");
     DrawContactForceMap(scene, sizing, map,
-                        fmt::format("{} of {} members, {}", q, g->members, g->state));
+                        {fmt::format("{} of {} members, {}", q, g->members, g->state), "N"});
     pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
                                          "(paper Fig. 5b)",
                                          g->state, q)});
+    if (const auto wear = WearSizingValues(*g)) {
+      const fs::path wear_map = folder / ("wear_map_" + FileNamePart(g->state) + ".png");
+      DrawContactForceMap(
+          scene, *wear, wear_map,
+          {fmt::format("{} wear volume of {} members, {}", q, g->members, g->state), "m^3"});
+      pictures.push_back({wear_map, fmt::format("{}: every zone coloured by the {} of its wear "
+                                                "volume over the scene's wear life",
+                                                g->state, q)});
+    }
     const std::string hottest = g->zones[g->hottest].name;
     const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
     pictures.push_back({Convergence(s, *g, forces, folder),

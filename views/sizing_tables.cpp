@@ -14,12 +14,12 @@ std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 
 // An unbounded side of an interval is an infinite bound (`-inf` or `inf` in every format, as
 // `query` prints infinities), not a missing value.
-QueryCell Bound(double value, bool bounded, double unbounded) {
-  return QueryCell(bounded ? value : unbounded);
+TableCell Bound(double value, bool bounded, double unbounded) {
+  return TableCell(bounded ? value : unbounded);
 }
 
-QueryCell Optional(const std::optional<double>& v) {
-  return v && std::isfinite(*v) ? QueryCell(*v) : QueryCell(std::monostate{});
+TableCell Optional(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? TableCell(*v) : TableCell(std::monostate{});
 }
 
 std::string Shown(const QuantileInterval& q) {
@@ -49,9 +49,9 @@ std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
   return c;
 }
 
-std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
+std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
                            std::optional<bool> agrees, bool compact) {
-  std::vector<QueryCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
+  std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
                                 static_cast<std::int64_t>(z.members), z.name};
   auto interval = [&](const QuantileInterval& q) {
     if (compact) {
@@ -67,7 +67,7 @@ std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
   const std::string q = Percent(s.options.quantile);
   if (q != "50" && q != "95" && q != "99") interval(z.sizing);
   row.push_back(static_cast<std::int64_t>(z.wilks_order));
-  row.push_back(z.wilks ? QueryCell(z.wilks->value) : QueryCell(std::monostate{}));
+  row.push_back(z.wilks ? TableCell(z.wilks->value) : TableCell(std::monostate{}));
   row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, Optional(z.nominal_n)});
   row.push_back(std::string(!agrees ? "-" : *agrees ? "yes" : "no"));
   if (z.impacts) {
@@ -83,8 +83,8 @@ std::vector<QueryCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
 
 }  // namespace
 
-QueryResult HottestZoneTable(const EnsembleSizing& s, bool compact) {
-  QueryResult t;
+Table HottestZoneTable(const EnsembleSizing& s, bool compact) {
+  Table t;
   t.columns = Columns(s, compact);
   for (const GroupSizing& g : s.groups) {
     t.rows.push_back(Row(s, g, g.zones[g.hottest], g.hottest_agrees, compact));
@@ -92,8 +92,8 @@ QueryResult HottestZoneTable(const EnsembleSizing& s, bool compact) {
   return t;
 }
 
-QueryResult ZoneTable(const EnsembleSizing& s) {
-  QueryResult t;
+Table ZoneTable(const EnsembleSizing& s) {
+  Table t;
   t.columns = Columns(s, false);
   t.columns.push_back("hottest");
   const auto refined_of = [&](const GroupSizing& g) -> const GroupSizing* {
@@ -111,6 +111,64 @@ QueryResult ZoneTable(const EnsembleSizing& s) {
       row.push_back(static_cast<std::int64_t>(z.zone == g.hottest));
       t.rows.push_back(std::move(row));
     }
+  }
+  return t;
+}
+
+namespace {
+
+std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
+  const std::string q = "p" + Percent(s.options.quantile);
+  std::vector<std::string> c = {"state", "setting", "members", "zone"};
+  if (compact) {
+    c.push_back("wear_" + q + "_m3 [" + Percent(s.options.confidence) + " %]");
+  } else {
+    for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
+  }
+  c.insert(c.end(), {"wilks_order", "wilks_limit_m3", "mean_wear_volume_m3", "force_" + q + "_n"});
+  return c;
+}
+
+// Precondition: z.wear.
+std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool compact) {
+  const QuantileInterval& w = z.wear->sizing;
+  std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
+                                static_cast<std::int64_t>(z.members), z.name};
+  if (compact) {
+    row.push_back(Shown(w));
+  } else {
+    row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
+                           Bound(w.upper, w.upper_bounded, kInfinity)});
+  }
+  row.push_back(static_cast<std::int64_t>(z.wear->wilks_order));
+  row.push_back(z.wear->wilks ? TableCell(z.wear->wilks->value) : TableCell(std::monostate{}));
+  row.insert(row.end(), {z.wear->mean_m3, z.sizing.estimate});
+  return row;
+}
+
+}  // namespace
+
+Table WearTable(const EnsembleSizing& s) {
+  Table t;
+  t.columns = WearColumns(s, false);
+  for (const GroupSizing& g : s.groups) {
+    for (const ZoneSizing& z : g.zones) {
+      if (z.wear) t.rows.push_back(WearRow(g, z, false));
+    }
+  }
+  return t;
+}
+
+Table MostWornZoneTable(const EnsembleSizing& s) {
+  Table t;
+  t.columns = WearColumns(s, true);
+  for (const GroupSizing& g : s.groups) {
+    const ZoneSizing* most = nullptr;
+    for (const ZoneSizing& z : g.zones) {
+      if (z.wear && (most == nullptr || z.wear->sizing.estimate > most->wear->sizing.estimate))
+        most = &z;
+    }
+    if (most != nullptr) t.rows.push_back(WearRow(g, *most, true));
   }
   return t;
 }

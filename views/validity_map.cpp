@@ -12,48 +12,29 @@
 
 namespace shockmap {
 
-std::string ToString(MapMetric m) {
-  switch (m) {
-    case MapMetric::kErr:
-      return "err";
-    case MapMetric::kSrf:
-      return "srf";
-    case MapMetric::kCost:
-      return "cost";
-    case MapMetric::kStatus:
-      return "status";
-  }
-  return "unknown";
+std::vector<std::string> MapMetrics() {
+  std::vector<std::string> metrics;
+  for (const ScoreDefinition& score : Scores()) metrics.emplace_back(score.name);
+  metrics.emplace_back("status");
+  metrics.emplace_back("cost");
+  return metrics;
 }
 
-std::optional<MapMetric> MapMetricFromString(std::string_view s) {
-  for (auto m : {MapMetric::kErr, MapMetric::kSrf, MapMetric::kCost, MapMetric::kStatus}) {
-    if (ToString(m) == s) return m;
-  }
-  return std::nullopt;
-}
+bool IsMapMetric(std::string_view name) { return std::ranges::count(MapMetrics(), name) > 0; }
 
 namespace {
 
-double CellValue(const ScoredPoint& p, MapMetric metric) {
-  switch (metric) {
-    case MapMetric::kErr:
-      return p.err.value_or(NAN);
-    case MapMetric::kSrf:
-      return p.srf.value_or(NAN);
-    case MapMetric::kCost:
-      return p.cpu_s;
-    case MapMetric::kStatus:
-      return NAN;
-  }
-  return NAN;
+double CellValue(const ScoredPoint& p, const std::string& metric) {
+  if (metric == "cost") return p.cpu_s;
+  if (metric == "status") return NAN;
+  return p.scores[metric].value_or(NAN);
 }
 
 // Index 0, one line per cell: r_k y x_low x_high y_low y_high value category (the index in
 // OutcomeCategories()) valued (1 when value is a number; gnuplot skips a line whose used
 // column reads NaN). Index 1: the smallest passing R_ftrunc of each R_k (the criteria's
 // boundary points).
-void WriteMapData(const MapGrid& grid, const ValidityCriteria& criteria, MapMetric metric,
+void WriteMapData(const MapGrid& grid, const ValidityCriteria& criteria, const std::string& metric,
                   const std::filesystem::path& data_file) {
   AtomicFile file(data_file);
   std::ostream& data = file.Stream();
@@ -77,43 +58,56 @@ struct MetricStyle {
   std::string palette, cb, title;
 };
 
-MetricStyle StyleOf(MapMetric metric, const CriteriaOptions& th) {
-  switch (metric) {
-    case MapMetric::kErr:
-      return {fmt::format(
-                  "set palette defined (0 '#1a9850', {t} '#a6d96a', {t} '#fdae61', 0.6 '#d73027')\n"
-                  "set cbrange [0:0.6]\nset cbtics add ('{t:g}' {t})\n",
-                  fmt::arg("t", th.err_max)),
-              "Err", fmt::format("Err (paper eq. 8), threshold {:g}", th.err_max)};
-    case MapMetric::kSrf:
-      return {fmt::format(
-                  "set palette defined (0.5 '#d73027', {t} '#fdae61', {t} '#a6d96a', 1 '#1a9850')\n"
-                  "set cbrange [0.5:1]\nset cbtics add ('{t:g}' {t})\n",
-                  fmt::arg("t", th.srf_min)),
-              "SRf", fmt::format("SRf (paper eq. 9), threshold {:g}", th.srf_min)};
-    case MapMetric::kCost:
-      return {
-          "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
-          "set format cb '10^{%L}'\n",
-          "CPU time (s)", "CPU time of the numerical run"};
-    case MapMetric::kStatus:
-      return {"unset colorbox\n", "", "outcome"};
+// A score's colours: from bad (red) to good (green) over its map range, split at its threshold
+// when it has one.
+MetricStyle ScoreStyle(const ScoreDefinition& score, const CriteriaOptions& th) {
+  const bool smaller = score.better == Better::kSmaller;
+  const char* low_colour = smaller ? "'#1a9850'" : "'#d73027'";
+  const char* high_colour = smaller ? "'#d73027'" : "'#1a9850'";
+  const auto threshold = th.thresholds.find(score.name);
+  const std::string range = fmt::format("set cbrange [{}:{}]\n", score.map_low, score.map_high);
+  const std::string name = fmt::format("{} ({})", score.label, score.source);
+  if (threshold == th.thresholds.end()) {
+    return {
+        fmt::format("set palette defined ({} {}, {} '#ffffbf', {} {})\n", score.map_low, low_colour,
+                    0.5 * (score.map_low + score.map_high), score.map_high, high_colour) +
+            range,
+        std::string(score.label), name};
   }
-  return {};
+  return {fmt::format("set palette defined ({lo} {lc}, {t} {lt}, {t} {ht}, {hi} {hc})\n",
+                      fmt::arg("lo", score.map_low), fmt::arg("lc", low_colour),
+                      fmt::arg("t", threshold->second),
+                      fmt::arg("lt", smaller ? "'#a6d96a'" : "'#fdae61'"),
+                      fmt::arg("ht", smaller ? "'#fdae61'" : "'#a6d96a'"),
+                      fmt::arg("hi", score.map_high), fmt::arg("hc", high_colour)) +
+              range +
+              fmt::format("set cbtics add ('{t:g}' {t})\n", fmt::arg("t", threshold->second)),
+          std::string(score.label), fmt::format("{}, threshold {:g}", name, threshold->second)};
+}
+
+MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th) {
+  if (metric == "cost") {
+    return {
+        "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
+        "set format cb '10^{%L}'\n",
+        "CPU time (s)", "CPU time of the numerical run"};
+  }
+  if (metric == "status") return {"unset colorbox\n", "", "outcome"};
+  return ScoreStyle(*FindScore(metric), th);
 }
 
 // The plot clauses of the cells: coloured by the metric's palette, except cells without a
 // value (no score, or the status map), drawn in their category's colour with one legend entry
 // per category present.
-std::string CellClauses(const MapGrid& grid, MapMetric metric, const CriteriaOptions& th,
+std::string CellClauses(const MapGrid& grid, const std::string& metric, const CriteriaOptions& th,
                         const std::string& data) {
   std::vector<bool> present(OutcomeCategories().size(), false);
   for (const MapCell& c : grid.cells) {
-    const bool valued = metric != MapMetric::kStatus && std::isfinite(CellValue(*c.point, metric));
+    const bool valued = metric != "status" && std::isfinite(CellValue(*c.point, metric));
     if (!valued) present[OutcomeCategoryOf(*c.point, th)] = true;
   }
   std::string clauses =
-      metric == MapMetric::kStatus
+      metric == "status"
           ? ""
           : data +
                 " index 0 using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb "
@@ -121,8 +115,7 @@ std::string CellClauses(const MapGrid& grid, MapMetric metric, const CriteriaOpt
   for (std::size_t i = 0; i < present.size(); ++i) {
     if (!present[i]) continue;
     const OutcomeCategory& category = OutcomeCategories()[i];
-    const std::string label =
-        metric == MapMetric::kStatus ? category.label : category.label + " (no score)";
+    const std::string label = metric == "status" ? category.label : category.label + " (no score)";
     clauses += fmt::format(
         "{}{} index 0 using 1:($8 == {} && $9 == 0 ? $2 : 1/0):3:4:5:6 with boxxyerror fs "
         "solid 1.0 border lc rgb '#ffffff' fc rgb '{}' title {}",

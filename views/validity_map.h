@@ -1,6 +1,7 @@
 #pragma once
-// Validity maps: a metric over log R_k by log R_ftrunc (or by dt / dt_sharp), with diverged
-// points marked and the derived boundary and the paper's rules drawn over it (gnuplot).
+// Validity maps: a metric (a score, the cost or the outcome) over log R_k by log R_ftrunc (or by
+// dt / dt_sharp), with diverged points marked and the derived boundary and the paper's rules
+// drawn over it (gnuplot).
 
 #include <filesystem>
 #include <optional>
@@ -13,12 +14,13 @@
 
 namespace shockmap {
 
-enum class MapMetric { kErr, kSrf, kCost, kStatus };
-std::string ToString(MapMetric m);
-std::optional<MapMetric> MapMetricFromString(std::string_view s);
+// What a map's colour may show: each score of the registry (validation/scores.h) by its name,
+// then "status" (the outcome category) and "cost" (the CPU time of the numerical run).
+std::vector<std::string> MapMetrics();
+bool IsMapMetric(std::string_view name);
 
 struct MapOptions {
-  MapMetric metric = MapMetric::kErr;
+  std::string metric = "err";  // One of MapMetrics().
   // kRFtrunc: each (R_k, R_ftrunc) cell shows its finest time step. kDt: dt / dt_sharp
   // against R_k at one truncation (the largest studied unless `r_ftrunc` is set).
   MapAxis y = MapAxis::kRFtrunc;

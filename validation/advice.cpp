@@ -1,4 +1,4 @@
-#include "views/advice.h"
+#include "validation/advice.h"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,6 @@
 
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
-#include "formats/counted.h"
 
 namespace shockmap {
 namespace {
@@ -162,24 +161,22 @@ double MedianSecondsPerModeStep(const std::vector<ScoredPoint>& points) {
   return per_mode_step[per_mode_step.size() / 2];
 }
 
-std::string Optional(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
-
 }  // namespace
 
-Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
+Advice Advise(const CantileverImpact& problem, double window_s, const ValidityCriteria& criteria,
               const std::vector<ScoredPoint>& points, double r_k) {
   Basis basis = Choose(criteria, points, r_k);
   Advice a;
   a.r_k = r_k;
   a.r_ftrunc = basis.r_ftrunc;
   a.dt_ratio = basis.dt_ratio;
-  CantileverImpact problem = spec.problem;
-  problem.r_k = r_k;
-  const ImpactModel model = BuildImpactModel(problem, Scheme::kExplicitModal, a.r_ftrunc);
+  CantileverImpact at_r_k = problem;
+  at_r_k.r_k = r_k;
+  const ImpactModel model = BuildImpactModel(at_r_k, Scheme::kExplicitModal, a.r_ftrunc);
   a.n_modes = model.n_modes;
   a.dt_sharp_s = model.bounds.dt_sharp_s;
   a.dt_s = a.dt_ratio * a.dt_sharp_s;
-  a.window_s = spec.scoring.window_s;
+  a.window_s = window_s;
   a.steps = static_cast<std::int64_t>(std::ceil(a.window_s / a.dt_s));
   a.seconds_per_mode_step = MedianSecondsPerModeStep(points);
   a.expected_cpu_s = a.seconds_per_mode_step * static_cast<double>(a.steps) * a.n_modes;
@@ -188,56 +185,6 @@ Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
   a.basis = std::move(basis.words);
   a.warnings = std::move(basis.warnings);
   return a;
-}
-
-std::string AdviceSummary(const Advice& a) {
-  std::string s = fmt::format(
-      "advice for R_k = {:g}\n"
-      "  R_ftrunc     {:.4g} ({})\n"
-      "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s\n"
-      "  basis        {}\n"
-      "  cost         {} over the {:g} s window, about {:.3g} s at {:.3g} ns per mode per "
-      "step (CPU time, median of the stored runs)\n",
-      a.r_k, a.r_ftrunc, Counted(a.n_modes, "mode"), a.dt_s, a.dt_ratio, a.dt_sharp_s, a.basis,
-      Counted(a.steps, "step"), a.window_s, a.expected_cpu_s, 1e9 * a.seconds_per_mode_step);
-  if (!a.nearest.empty()) {
-    s += fmt::format("  nearest stored points\n  {:>10}  {:>9}  {:>11}  {:<22}  {:>6}  {:>6}\n",
-                     "R_k", "R_ftrunc", "dt/dt_sharp", "status", "Err", "SRf");
-    for (const auto& p : a.nearest) {
-      s +=
-          fmt::format("  {:>10.4g}  {:>9.4g}  {:>11.3g}  {:<22}  {:>6}  {:>6}\n", p.r_k, p.r_ftrunc,
-                      p.DtRatio(), ToString(p.status), Optional(p.err), Optional(p.srf));
-    }
-  }
-  for (const auto& w : a.warnings) s += "  warning      " + w + "\n";
-  return s;
-}
-
-nlohmann::json AdviceToJson(const Advice& a) {
-  nlohmann::json nearest = nlohmann::json::array();
-  for (const auto& p : a.nearest) {
-    nearest.push_back({{"point_id", p.point_id},
-                       {"r_k", p.r_k},
-                       {"r_ftrunc", p.r_ftrunc},
-                       {"dt_ratio", p.DtRatio()},
-                       {"status", ToString(p.status)},
-                       {"err", p.err ? nlohmann::json(*p.err) : nlohmann::json()},
-                       {"srf", p.srf ? nlohmann::json(*p.srf) : nlohmann::json()}});
-  }
-  return {{"r_k", a.r_k},
-          {"r_ftrunc", a.r_ftrunc},
-          {"n_modes", a.n_modes},
-          {"dt_s", a.dt_s},
-          {"dt_ratio", a.dt_ratio},
-          {"dt_sharp_s", a.dt_sharp_s},
-          {"steps", a.steps},
-          {"window_s", a.window_s},
-          {"seconds_per_mode_step", a.seconds_per_mode_step},
-          {"expected_cpu_s", a.expected_cpu_s},
-          {"studied_r_k", a.studied_r_k},
-          {"basis", a.basis},
-          {"nearest", nearest},
-          {"warnings", a.warnings}};
 }
 
 }  // namespace shockmap

@@ -4,7 +4,8 @@
 // ratio against each of its beams, R_k = k_s / K, K the beam's local bending stiffness at the
 // zone's height (the canonical problem's K_bend = 3 EI / L^3 at its tip, the other beam taken
 // as the stop), the truncation each beam needs for its stiffest zone, and the time step the
-// criteria allow.
+// criteria allow (the scene's model built at the advised truncations). Its text is
+// views/scene_advice_summary.h's.
 
 #include <optional>
 #include <string>
@@ -45,6 +46,5 @@ struct SceneAdvice {
 // Throws InputError when the criteria have no fit or no time-step bound, or the scene's beams
 // have rigid-body modes.
 SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria);
-std::string SceneAdviceSummary(const Scene& scene, const SceneAdvice& advice, bool every_zone);
 
 }  // namespace shockmap

@@ -1,14 +1,16 @@
 #pragma once
 // Advice for a new R_k from a study's stored points: the truncation and time step to use, the
-// stored points it rests on, and what it will cost. The advice is conservative: it never asks
-// for less than the studied R_k around the asked one needed (docs/physics.md §4.3).
+// stored points it rests on, and what it will cost (the explicit modal model built at the
+// advised truncation). The advice is conservative: it never asks for less than the studied R_k
+// around the asked one needed (docs/physics.md §4.3). Its text and JSON are
+// views/advice_summary.h's.
 
-#include <nlohmann/json.hpp>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "formats/study_spec.h"
+#include "core/cantilever_impact.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
@@ -33,11 +35,10 @@ struct Advice {
   std::vector<std::string> warnings;  // Outside the studied R_k, or between sparse ones.
 };
 
-// Throws InputError when the studied points give no passing truncation or time step at the
-// R_k the advice would rest on.
-Advice Advise(const StudySpec& spec, const ValidityCriteria& criteria,
+// `problem` and `window_s` are the study's (its r_k is replaced by the asked one). Throws
+// InputError when the studied points give no passing truncation or time step at the R_k the
+// advice would rest on.
+Advice Advise(const CantileverImpact& problem, double window_s, const ValidityCriteria& criteria,
               const std::vector<ScoredPoint>& points, double r_k);
-std::string AdviceSummary(const Advice& advice);
-nlohmann::json AdviceToJson(const Advice& advice);
 
 }  // namespace shockmap

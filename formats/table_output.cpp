@@ -1,4 +1,4 @@
-#include "views/query_output.h"
+#include "formats/table_output.h"
 
 #include <fmt/format.h>
 
@@ -11,20 +11,20 @@
 
 namespace shockmap {
 
-std::string ToString(QueryFormat f) {
+std::string ToString(TableFormat f) {
   switch (f) {
-    case QueryFormat::kTable:
+    case TableFormat::kTable:
       return "table";
-    case QueryFormat::kCsv:
+    case TableFormat::kCsv:
       return "csv";
-    case QueryFormat::kJson:
+    case TableFormat::kJson:
       return "json";
   }
   return "unknown";
 }
 
-std::optional<QueryFormat> QueryFormatFromString(std::string_view s) {
-  for (auto f : {QueryFormat::kTable, QueryFormat::kCsv, QueryFormat::kJson}) {
+std::optional<TableFormat> TableFormatFromString(std::string_view s) {
+  for (auto f : {TableFormat::kTable, TableFormat::kCsv, TableFormat::kJson}) {
     if (ToString(f) == s) return f;
   }
   return std::nullopt;
@@ -32,7 +32,7 @@ std::optional<QueryFormat> QueryFormatFromString(std::string_view s) {
 
 namespace {
 
-std::string Text(const QueryCell& c) {
+std::string Text(const TableCell& c) {
   struct {
     std::string operator()(std::monostate) const { return ""; }
     std::string operator()(std::int64_t v) const { return std::to_string(v); }
@@ -44,7 +44,7 @@ std::string Text(const QueryCell& c) {
   return std::visit(visitor, c);
 }
 
-nlohmann::json Json(const QueryCell& c) {
+nlohmann::json Json(const TableCell& c) {
   struct {
     nlohmann::json operator()(std::monostate) const { return nullptr; }
     nlohmann::json operator()(std::int64_t v) const { return v; }
@@ -66,22 +66,22 @@ std::string Indented(const std::string& text) {
 
 }  // namespace
 
-void QueryWriter::Columns(const std::vector<std::string>& names) {
+void TableWriter::Columns(const std::vector<std::string>& names) {
   columns_ = names;
-  if (format_ == QueryFormat::kCsv) {
+  if (format_ == TableFormat::kCsv) {
     for (std::size_t i = 0; i < names.size(); ++i) out_ << (i ? "," : "") << CsvField(names[i]);
     out_ << '\n';
   }
   for (const auto& name : names) width_.push_back(name.size());
 }
 
-void QueryWriter::Row(const std::vector<QueryCell>& row) {
+void TableWriter::Row(const std::vector<TableCell>& row) {
   const std::size_t n = columns_.size();
-  if (format_ == QueryFormat::kJson) {
+  if (format_ == TableFormat::kJson) {
     nlohmann::json o = nlohmann::json::object();
     for (std::size_t i = 0; i < n; ++i) o[columns_[i]] = Json(row[i]);
     out_ << (rows_ == 0 ? "[\n" : ",\n") << Indented(o.dump(2));
-  } else if (format_ == QueryFormat::kCsv) {
+  } else if (format_ == TableFormat::kCsv) {
     for (std::size_t i = 0; i < n; ++i) out_ << (i ? "," : "") << CsvField(Text(row[i]));
     out_ << '\n';
   } else {
@@ -98,7 +98,7 @@ void QueryWriter::Row(const std::vector<QueryCell>& row) {
   ++rows_;
 }
 
-void QueryWriter::TableLine(const std::vector<std::string>& cells) {
+void TableWriter::TableLine(const std::vector<std::string>& cells) {
   for (std::size_t i = 0; i < cells.size(); ++i) {
     out_ << (i ? "  " : "") << cells[i]
          << std::string(width_[i] - std::min(width_[i], cells[i].size()), ' ');
@@ -106,7 +106,7 @@ void QueryWriter::TableLine(const std::vector<std::string>& cells) {
   out_ << '\n';
 }
 
-void QueryWriter::FlushLookAhead() {
+void TableWriter::FlushLookAhead() {
   TableLine(columns_);
   std::vector<std::string> rule;
   for (std::size_t w : width_) rule.emplace_back(w, '-');
@@ -116,17 +116,17 @@ void QueryWriter::FlushLookAhead() {
   widths_fixed_ = true;
 }
 
-void QueryWriter::Finish() {
-  if (format_ == QueryFormat::kJson) {
+void TableWriter::Finish() {
+  if (format_ == TableFormat::kJson) {
     out_ << (rows_ == 0 ? "[]\n" : "\n]\n");
-  } else if (format_ == QueryFormat::kTable) {
+  } else if (format_ == TableFormat::kTable) {
     if (!widths_fixed_) FlushLookAhead();
     out_ << "(" << rows_ << " row" << (rows_ == 1 ? "" : "s") << ")\n";
   }
 }
 
-void WriteQueryResult(const QueryResult& result, QueryFormat format, std::ostream& out) {
-  QueryWriter writer(format, out);
+void WriteTable(const Table& result, TableFormat format, std::ostream& out) {
+  TableWriter writer(format, out);
   writer.Columns(result.columns);
   for (const auto& row : result.rows) writer.Row(row);
   writer.Finish();

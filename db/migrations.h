@@ -1,0 +1,511 @@
+#pragma once
+// The migrations of the study database, in order: migration i brings PRAGMA user_version from i
+// to i + 1, and the schema's version is their count. Append-only: a migration once released is
+// never edited (a file migrated by it exists somewhere); a change of the schema is a new one at
+// the end, and docs/database.md follows (tests/records_test.cpp checks the tables against the
+// records' column tables, docs/architecture.md "Add a field").
+
+#include <iterator>
+
+namespace shockmap {
+
+inline constexpr const char* kMigrations[] = {
+    R"sql(
+CREATE TABLE studies (
+  study_id    INTEGER PRIMARY KEY,
+  name        TEXT NOT NULL UNIQUE,
+  spec_json   TEXT NOT NULL,
+  created_utc TEXT NOT NULL,
+  updated_utc TEXT NOT NULL
+);
+CREATE TABLE runs (
+  run_id       INTEGER PRIMARY KEY,
+  study_id     INTEGER NOT NULL REFERENCES studies(study_id),
+  code_version TEXT NOT NULL,
+  compiler     TEXT NOT NULL,
+  build_type   TEXT NOT NULL,
+  host         TEXT NOT NULL,
+  pid          INTEGER NOT NULL,
+  jobs         INTEGER NOT NULL,
+  started_utc  TEXT NOT NULL,
+  ended_utc    TEXT,
+  points_done  INTEGER NOT NULL DEFAULT 0
+);
+CREATE TABLE reference_runs (
+  reference_id    INTEGER PRIMARY KEY,
+  reference_key   TEXT NOT NULL UNIQUE,
+  r_k             REAL NOT NULL,
+  r_fref          REAL NOT NULL,
+  r_fref_check    REAL NOT NULL,
+  window_s        REAL NOT NULL,
+  convergence     REAL NOT NULL,
+  n_modes_free    INTEGER NOT NULL,
+  n_modes_contact INTEGER NOT NULL,
+  n_transitions   INTEGER NOT NULL,
+  wall_s          REAL NOT NULL,
+  output_dt_s     REAL NOT NULL,
+  tip_m           BLOB NOT NULL,
+  force_n         BLOB NOT NULL,
+  shocks_json     TEXT NOT NULL,
+  run_id          INTEGER REFERENCES runs(run_id),
+  created_utc     TEXT NOT NULL
+);
+CREATE TABLE points (
+  point_id           INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key          TEXT NOT NULL,
+  reference_key      TEXT NOT NULL,
+  r_k                REAL NOT NULL,
+  r_ftrunc           REAL NOT NULL,
+  scheme             TEXT NOT NULL,
+  dt_rule            TEXT,
+  dt_factor          REAL,
+  dt_asked_s         REAL,
+  window_s           REAL NOT NULL,
+  n_elements_asked   INTEGER NOT NULL,
+  mass_damping_per_s REAL NOT NULL,
+  status             TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'failed', 'reference_unconverged')),
+  message            TEXT NOT NULL DEFAULT '',
+  run_id             INTEGER REFERENCES runs(run_id),
+  updated_utc        TEXT NOT NULL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX points_by_status ON points(study_id, status);
+CREATE TABLE scores (
+  point_id                 INTEGER PRIMARY KEY REFERENCES points(point_id),
+  reference_id             INTEGER NOT NULL REFERENCES reference_runs(reference_id),
+  err                      REAL,
+  srf                      REAL,
+  n_modes                  INTEGER NOT NULL,
+  n_elements               INTEGER NOT NULL,
+  n_dofs                   INTEGER NOT NULL,
+  dt_requested_s           REAL NOT NULL,
+  dt_used_s                REAL NOT NULL,
+  dt_paper_s               REAL NOT NULL,
+  dt_sharp_s               REAL NOT NULL,
+  steps                    INTEGER NOT NULL,
+  wall_s                   REAL NOT NULL,
+  cpu_s                    REAL NOT NULL,
+  max_energy_ratio         REAL NOT NULL,
+  n_shocks                 INTEGER NOT NULL,
+  first_shock_start_s      REAL,
+  first_shock_impulse_n_s  REAL,
+  first_shock_peak_n       REAL,
+  first_shock_duration_s   REAL,
+  first_shock_rebounds     INTEGER,
+  shocks_json              TEXT NOT NULL
+);
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, ru.host, p.updated_utc
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+    // 1 -> 2: studies of scene files. A point is the scene with some numeric parameters set
+    // (parameters_json: {"solver.r_ftrunc": 30, ...}); it is scored against the same scene run
+    // with the study's reference settings.
+    R"sql(
+CREATE TABLE scene_references (
+  reference_id     INTEGER PRIMARY KEY,
+  reference_key    TEXT NOT NULL UNIQUE,
+  parameters_json  TEXT NOT NULL,
+  status           TEXT NOT NULL,
+  message          TEXT NOT NULL,
+  output_dt_s      REAL NOT NULL,
+  displacement_m   BLOB NOT NULL,
+  force_n          BLOB NOT NULL,
+  steps            INTEGER NOT NULL,
+  wall_s           REAL NOT NULL,
+  max_energy_ratio REAL NOT NULL,
+  run_id           INTEGER REFERENCES runs(run_id),
+  created_utc      TEXT NOT NULL
+);
+CREATE TABLE scene_points (
+  point_id                INTEGER PRIMARY KEY,
+  study_id                INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key               TEXT NOT NULL,
+  reference_key           TEXT NOT NULL,
+  parameters_json         TEXT NOT NULL,
+  status                  TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'failed', 'reference_unconverged')),
+  message                 TEXT NOT NULL DEFAULT '',
+  run_id                  INTEGER REFERENCES runs(run_id),
+  updated_utc             TEXT NOT NULL,
+  reference_id            INTEGER REFERENCES scene_references(reference_id),
+  err                     REAL,
+  srf                     REAL,
+  coordinates             INTEGER,
+  zones                   INTEGER,
+  dt_used_s               REAL,
+  dt_paper_s              REAL,
+  dt_sharp_s              REAL,
+  steps                   INTEGER,
+  wall_s                  REAL,
+  cpu_s                   REAL,
+  max_energy_ratio        REAL,
+  largest_force_n         REAL,
+  largest_force_zone      TEXT,
+  n_shocks                INTEGER,
+  first_shock_peak_n      REAL,
+  first_shock_impulse_n_s REAL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, ru.host, p.updated_utc
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+    // 2 -> 3: the writer's lease. A run holds the database while its heartbeat is recent
+    // (db/study_database.h); how each run ended.
+    R"sql(
+ALTER TABLE runs ADD COLUMN heartbeat_unix_s REAL;
+ALTER TABLE runs ADD COLUMN end_reason TEXT;
+UPDATE runs SET end_reason = 'completed' WHERE ended_utc IS NOT NULL;
+)sql",
+    // 3 -> 4: where each point was computed: host and MPI rank (0 in a local run). Points
+    // stored before take their run's host and rank 0; the views show the point's own. How a
+    // stopped run ended, in words (the tasks an MPI job got no answer for).
+    R"sql(
+ALTER TABLE runs ADD COLUMN end_message TEXT;
+ALTER TABLE points ADD COLUMN host TEXT;
+ALTER TABLE points ADD COLUMN rank INTEGER;
+ALTER TABLE scene_points ADD COLUMN host TEXT;
+ALTER TABLE scene_points ADD COLUMN rank INTEGER;
+UPDATE points SET host = (SELECT host FROM runs WHERE runs.run_id = points.run_id), rank = 0
+WHERE run_id IS NOT NULL AND status NOT IN ('pending', 'running');
+UPDATE scene_points SET host = (SELECT host FROM runs WHERE runs.run_id = scene_points.run_id),
+  rank = 0
+WHERE run_id IS NOT NULL AND status NOT IN ('pending', 'running');
+DROP VIEW results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+DROP VIEW scene_results;
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+    // 4 -> 5: the SRf definition each score was computed with (paper eq. 9 admits several
+    // readings); scores stored before used the first shock.
+    R"sql(
+ALTER TABLE scores ADD COLUMN srf_definition TEXT NOT NULL DEFAULT 'first_shock';
+DROP VIEW results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+    // 5 -> 6: scene study parameters as columns, params_<path> beside scene_results (as
+    // Optuna's params_*). The view is written again whenever scene points are added, with one
+    // column per parameter path of any scene study (db/scene_points.h); until then it has none.
+    R"sql(
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
+    // 6 -> 7: the status 'unstable' (core/run_status.h, docs/physics.md §3.1). SQLite cannot
+    // change a CHECK constraint in place: both point tables are rebuilt with the same columns in
+    // the same order (foreign keys are off while migrating, so the scores keep their rows), and
+    // the views that read them (scene_params too) are dropped first and made again.
+    // Stored canonical points that ended 'ok' undamped with an energy ratio above the limit
+    // become 'unstable', as a new run classifies them; scene points keep their status until
+    // recomputed (their damping is in their scene, not in a column).
+    R"sql(
+DROP VIEW scene_params;
+DROP VIEW results;
+DROP VIEW scene_results;
+CREATE TABLE points_v7 (
+  point_id           INTEGER PRIMARY KEY,
+  study_id           INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key          TEXT NOT NULL,
+  reference_key      TEXT NOT NULL,
+  r_k                REAL NOT NULL,
+  r_ftrunc           REAL NOT NULL,
+  scheme             TEXT NOT NULL,
+  dt_rule            TEXT,
+  dt_factor          REAL,
+  dt_asked_s         REAL,
+  window_s           REAL NOT NULL,
+  n_elements_asked   INTEGER NOT NULL,
+  mass_damping_per_s REAL NOT NULL,
+  status             TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message            TEXT NOT NULL DEFAULT '',
+  run_id             INTEGER REFERENCES runs(run_id),
+  updated_utc        TEXT NOT NULL,
+  host               TEXT,
+  rank               INTEGER,
+  UNIQUE (study_id, point_key)
+);
+INSERT INTO points_v7 SELECT point_id, study_id, point_key, reference_key, r_k, r_ftrunc, scheme,
+  dt_rule, dt_factor, dt_asked_s, window_s, n_elements_asked, mass_damping_per_s, status,
+  message, run_id, updated_utc, host, rank FROM points;
+DROP TABLE points;
+ALTER TABLE points_v7 RENAME TO points;
+CREATE INDEX points_by_status ON points(study_id, status);
+UPDATE points SET status = 'unstable',
+  message = 'undamped, energy grew to ' ||
+    (SELECT printf('%.6g', max_energy_ratio) FROM scores WHERE scores.point_id = points.point_id) ||
+    ' times its initial value (unstable above 5)'
+WHERE status = 'ok' AND mass_damping_per_s = 0
+  AND point_id IN (SELECT point_id FROM scores WHERE max_energy_ratio > 5);
+CREATE TABLE scene_points_v7 (
+  point_id                INTEGER PRIMARY KEY,
+  study_id                INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key               TEXT NOT NULL,
+  reference_key           TEXT NOT NULL,
+  parameters_json         TEXT NOT NULL,
+  status                  TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message                 TEXT NOT NULL DEFAULT '',
+  run_id                  INTEGER REFERENCES runs(run_id),
+  updated_utc             TEXT NOT NULL,
+  reference_id            INTEGER REFERENCES scene_references(reference_id),
+  err                     REAL,
+  srf                     REAL,
+  coordinates             INTEGER,
+  zones                   INTEGER,
+  dt_used_s               REAL,
+  dt_paper_s              REAL,
+  dt_sharp_s              REAL,
+  steps                   INTEGER,
+  wall_s                  REAL,
+  cpu_s                   REAL,
+  max_energy_ratio        REAL,
+  largest_force_n         REAL,
+  largest_force_zone      TEXT,
+  n_shocks                INTEGER,
+  first_shock_peak_n      REAL,
+  first_shock_impulse_n_s REAL,
+  host                    TEXT,
+  rank                    INTEGER,
+  UNIQUE (study_id, point_key)
+);
+INSERT INTO scene_points_v7 SELECT point_id, study_id, point_key, reference_key, parameters_json,
+  status, message, run_id, updated_utc, reference_id, err, srf, coordinates, zones, dt_used_s,
+  dt_paper_s, dt_sharp_s, steps, wall_s, cpu_s, max_energy_ratio, largest_force_n,
+  largest_force_zone, n_shocks, first_shock_peak_n, first_shock_impulse_n_s, host, rank
+FROM scene_points;
+DROP TABLE scene_points;
+ALTER TABLE scene_points_v7 RENAME TO scene_points;
+CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
+    // 7 -> 8: ensemble studies of a scene (formats/ensemble_study_spec.h). A point is one
+    // member: a clearance state, a numerical setting and the member's index; its zones' rows
+    // hold the largest force and the impact statistics of the member's run. A reference is a
+    // state's nominal run (every draw at its centre) at the refined setting.
+    R"sql(
+CREATE TABLE ensemble_references (
+  reference_id     INTEGER PRIMARY KEY,
+  reference_key    TEXT NOT NULL UNIQUE,
+  state            TEXT NOT NULL,
+  status           TEXT NOT NULL,
+  message          TEXT NOT NULL,
+  zones_json       TEXT NOT NULL,
+  max_force_n      BLOB NOT NULL,
+  steps            INTEGER NOT NULL,
+  wall_s           REAL NOT NULL,
+  run_id           INTEGER REFERENCES runs(run_id),
+  created_utc      TEXT NOT NULL
+);
+CREATE TABLE ensemble_members (
+  point_id         INTEGER PRIMARY KEY,
+  study_id         INTEGER NOT NULL REFERENCES studies(study_id),
+  point_key        TEXT NOT NULL,
+  reference_key    TEXT NOT NULL,
+  state            TEXT NOT NULL,
+  setting_json     TEXT NOT NULL,
+  member           INTEGER NOT NULL,
+  status           TEXT NOT NULL DEFAULT 'pending'
+    CHECK (status IN ('pending', 'running', 'ok', 'diverged', 'unstable', 'failed',
+                      'reference_unconverged')),
+  message          TEXT NOT NULL DEFAULT '',
+  run_id           INTEGER REFERENCES runs(run_id),
+  updated_utc      TEXT NOT NULL,
+  host             TEXT,
+  rank             INTEGER,
+  reference_id     INTEGER REFERENCES ensemble_references(reference_id),
+  member_seed      TEXT,
+  coordinates      INTEGER,
+  dt_used_s        REAL,
+  steps            INTEGER,
+  wall_s           REAL,
+  cpu_s            REAL,
+  max_energy_ratio REAL,
+  UNIQUE (study_id, point_key)
+);
+CREATE INDEX ensemble_members_by_status ON ensemble_members(study_id, status);
+CREATE TABLE ensemble_member_zones (
+  point_id                  INTEGER NOT NULL REFERENCES ensemble_members(point_id),
+  zone                      INTEGER NOT NULL,
+  max_force_n               REAL NOT NULL,
+  impacts                   INTEGER,
+  impacts_per_s             REAL,
+  rebounds_per_impact       REAL,
+  mean_impact_duration_s    REAL,
+  longest_impact_duration_s REAL,
+  contact_time_fraction     REAL,
+  mean_force_n              REAL,
+  mean_force_in_contact_n   REAL,
+  rms_force_n               REAL,
+  impulse_n_s               REAL,
+  wear_work_rate_w          REAL,
+  PRIMARY KEY (point_id, zone)
+) WITHOUT ROWID;
+CREATE VIEW ensemble_results AS
+SELECT st.name AS study, p.point_id, p.state, p.setting_json, p.member, p.status, p.message,
+       p.member_seed, p.coordinates, p.dt_used_s, p.steps, p.wall_s, p.cpu_s, p.max_energy_ratio,
+       (SELECT max(z.max_force_n) FROM ensemble_member_zones z WHERE z.point_id = p.point_id)
+         AS largest_force_n,
+       ru.code_version, p.host, p.rank, p.updated_utc
+FROM ensemble_members p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
+    // 8 -> 9: a member refers to its nominal run by its state's name, not by the nominal run's
+    // key, which holds the whole scene: a million members repeated it into gigabytes. The key
+    // stays, once, in ensemble_references.
+    R"sql(
+UPDATE ensemble_members SET reference_key = state;
+)sql",
+    // 9 -> 10: the peak-force ratio of the first shock (validation/scores.h, "pfr"), a score of
+    // both kinds scored against a reference, at the end of their results views. Points stored
+    // before have none until computed again.
+    R"sql(
+ALTER TABLE scores ADD COLUMN pfr REAL;
+ALTER TABLE scene_points ADD COLUMN pfr REAL;
+DROP VIEW scene_params;
+DROP VIEW results;
+DROP VIEW scene_results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_results AS
+SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
+       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
+       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
+       p.first_shock_peak_n, p.first_shock_impulse_n_s,
+       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, p.pfr
+FROM scene_points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scene_references r ON r.reference_id = p.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+CREATE VIEW scene_params AS SELECT * FROM scene_results;
+)sql",
+    // 10 -> 11: a member zone's Archard wear volume over the scene's wear life and its friction
+    // power, and one row per impact of the zones a member's scene lists
+    // (outputs.impact_statistics.impact_table); records/ensemble_records.h. Members stored before
+    // have none until computed again.
+    R"sql(
+ALTER TABLE ensemble_member_zones ADD COLUMN wear_volume_m3 REAL;
+ALTER TABLE ensemble_member_zones ADD COLUMN friction_power_w REAL;
+CREATE TABLE ensemble_member_impacts (
+  point_id         INTEGER NOT NULL REFERENCES ensemble_members(point_id),
+  zone             INTEGER NOT NULL,
+  impact           INTEGER NOT NULL,
+  start_s          REAL NOT NULL,
+  duration_s       REAL NOT NULL,
+  peak_force_n     REAL NOT NULL,
+  peak_time_s      REAL NOT NULL,
+  impulse_n_s      REAL NOT NULL,
+  impact_speed_m_s REAL,
+  rebounds         INTEGER NOT NULL,
+  truncated        INTEGER NOT NULL,
+  PRIMARY KEY (point_id, zone, impact)
+) WITHOUT ROWID;
+)sql",
+};
+
+inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));
+
+}  // namespace shockmap

@@ -1,0 +1,131 @@
+#pragma once
+// The stored records of studies of the paper's problem: a point's parameters (table points),
+// its scores (table scores) and the semi-analytical references (table reference_runs), each
+// with its column table (records/columns.h).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "records/columns.h"
+
+namespace shockmap {
+
+// The parameters of one grid point as stored.
+struct PointParameters {
+  double r_k = 0.0;
+  double r_ftrunc = 0.0;
+  std::string scheme;
+  std::optional<std::string> dt_rule;
+  std::optional<double> dt_factor;
+  std::optional<double> dt_asked_s;
+  double window_s = 0.0;
+  int n_elements_asked = 0;
+  double mass_damping_per_s = 0.0;
+};
+
+inline constexpr Column<PointParameters> kPointParameterColumns[] = {
+    {"r_k", &PointParameters::r_k, "", "k_s / K_bend"},
+    {"r_ftrunc", &PointParameters::r_ftrunc, "", "f_trunc / f1"},
+    {"scheme", &PointParameters::scheme, "", "`explicit-modal` or `implicit-full`"},
+    {"dt_rule", &PointParameters::dt_rule, "",
+     "the bound the time step is a factor of (`paper` or `sharp`), or NULL"},
+    {"dt_factor", &PointParameters::dt_factor, "", "that factor, or NULL"},
+    {"dt_asked_s", &PointParameters::dt_asked_s, "s", "the time step given in seconds, or NULL"},
+    {"window_s", &PointParameters::window_s, "s", "observation window"},
+    {"n_elements_asked", &PointParameters::n_elements_asked, "",
+     "FE elements asked (0: the default for the truncation)"},
+    {"mass_damping_per_s", &PointParameters::mass_damping_per_s, "1/s",
+     "mass-proportional damping α"},
+};
+
+// The measurements of a computed point. Each score of the registry (validation/scores.h) that
+// the paper's problem carries is an optional real column named after it.
+struct ScoreRow {
+  std::int64_t reference_id = 0;
+  std::optional<double> err, srf, pfr;
+  int n_modes = 0, n_elements = 0, n_dofs = 0;
+  double dt_requested_s = 0.0, dt_used_s = 0.0, dt_paper_s = 0.0, dt_sharp_s = 0.0;
+  std::int64_t steps = 0;
+  double wall_s = 0.0, cpu_s = 0.0, max_energy_ratio = 0.0;
+  int n_shocks = 0;
+  // The first shock's; all NULL when there was none.
+  std::optional<double> first_shock_start_s, first_shock_impulse_n_s, first_shock_peak_n,
+      first_shock_duration_s;
+  std::optional<int> first_shock_rebounds;
+  std::string shocks_json = "[]";
+  std::string srf_definition = "first_shock";  // What srf compares (paper eq. 9's readings).
+};
+
+inline constexpr Column<ScoreRow> kScoreColumns[] = {
+    {"reference_id", &ScoreRow::reference_id, "",
+     "the row of `reference_runs` it was scored against"},
+    {"err", &ScoreRow::err, "", "Err, paper eq. 8 (NULL when not scored)"},
+    {"srf", &ScoreRow::srf, "", "SRf, paper eq. 9 (NULL when not scored)"},
+    {"pfr", &ScoreRow::pfr, "",
+     "peak-force ratio of the first shock, min/max as SRf (NULL when not scored; schema 10)"},
+    {"n_modes", &ScoreRow::n_modes, "", "modes kept"},
+    {"n_elements", &ScoreRow::n_elements, "", "FE elements"},
+    {"n_dofs", &ScoreRow::n_dofs, "", "unknowns"},
+    {"dt_requested_s", &ScoreRow::dt_requested_s, "s", "time step asked"},
+    {"dt_used_s", &ScoreRow::dt_used_s, "s", "time step used (shortened to end on the window)"},
+    {"dt_paper_s", &ScoreRow::dt_paper_s, "s", "the bound 1/(4 f_trunc)"},
+    {"dt_sharp_s", &ScoreRow::dt_sharp_s, "s", "the bound 2/ω_max"},
+    {"steps", &ScoreRow::steps, "", "time steps taken"},
+    {"wall_s", &ScoreRow::wall_s, "s",
+     "wall time of the numerical run alone; of a run under 0.5 ms, the lower median of its "
+     "repeats (docs/physics.md §4.4)"},
+    {"cpu_s", &ScoreRow::cpu_s, "s", "CPU time of the numerical run alone, as wall_s"},
+    {"max_energy_ratio", &ScoreRow::max_energy_ratio, "",
+     "largest total energy over the initial energy"},
+    {"n_shocks", &ScoreRow::n_shocks, "", "shocks in the window"},
+    {"first_shock_start_s", &ScoreRow::first_shock_start_s, "s", "start of the first shock"},
+    {"first_shock_impulse_n_s", &ScoreRow::first_shock_impulse_n_s, "N s", "its impulse"},
+    {"first_shock_peak_n", &ScoreRow::first_shock_peak_n, "N", "its peak force"},
+    {"first_shock_duration_s", &ScoreRow::first_shock_duration_s, "s", "its duration"},
+    {"first_shock_rebounds", &ScoreRow::first_shock_rebounds, "", "contacts in it after the first"},
+    {"shocks_json", &ScoreRow::shocks_json, "",
+     "every shock: `start_s`, `end_s`, `duration_s`, `peak_force_n`, `peak_time_s`, "
+     "`impulse_n_s`, `rebounds`, `truncated`"},
+    {"srf_definition", &ScoreRow::srf_definition, "",
+     "which reading of eq. 9 (`first_shock`, `first_contact`, `reference_window`; "
+     "docs/fidelity.md)"},
+};
+
+// A semi-analytical reference: one per problem, window and reference settings.
+struct ReferenceRow {
+  std::int64_t reference_id = 0;  // Its key in the database, given when it is stored.
+  std::string reference_key;
+  double r_k = 0.0, r_fref = 0.0, r_fref_check = 0.0, window_s = 0.0, convergence = 0.0;
+  int n_modes_free = 0, n_modes_contact = 0, n_transitions = 0;
+  double wall_s = 0.0, output_dt_s = 0.0;
+  std::vector<double> tip_m, force_n;
+  std::string shocks_json = "[]";
+};
+
+inline constexpr Column<ReferenceRow> kReferenceColumns[] = {
+    {"reference_key", &ReferenceRow::reference_key, "",
+     "problem, R_k, window and reference settings as JSON, unique"},
+    {"r_k", &ReferenceRow::r_k, "", "k_s / K_bend"},
+    {"r_fref", &ReferenceRow::r_fref, "", "its truncation (docs/physics.md §2)"},
+    {"r_fref_check", &ReferenceRow::r_fref_check, "",
+     "the finer truncation it is checked against, 3 r_fref (in references stored by earlier "
+     "versions: the coarser r_fref / 3)"},
+    {"window_s", &ReferenceRow::window_s, "s", "the window it covers"},
+    {"convergence", &ReferenceRow::convergence, "",
+     "its estimated error: the largest grid convergence index of the tip (a fraction of the "
+     "amplitude), the first-shock impulse (relative) and the Err it induces, from r_fref / 9 to "
+     "r_fref_check (docs/physics.md §2); in earlier versions' references: the tip difference "
+     "from the coarser truncation"},
+    {"n_modes_free", &ReferenceRow::n_modes_free, "", "modes of the free phase"},
+    {"n_modes_contact", &ReferenceRow::n_modes_contact, "", "modes of the contact phase"},
+    {"n_transitions", &ReferenceRow::n_transitions, "", "phase changes"},
+    {"wall_s", &ReferenceRow::wall_s, "s", "its computation, the check included"},
+    {"output_dt_s", &ReferenceRow::output_dt_s, "s", "the sampling step of the two signals below"},
+    {"tip_m", &ReferenceRow::tip_m, "m", "**blob**: the tip displacement"},
+    {"force_n", &ReferenceRow::force_n, "N", "**blob**: the contact force"},
+    {"shocks_json", &ReferenceRow::shocks_json, "", "its shocks, as in `scores.shocks_json`"},
+};
+
+}  // namespace shockmap
