@@ -108,10 +108,19 @@ TEST_F(QuickStudyAdvice, AtAStudiedRkIsItsBoundaryAndBetweenTwoTheSaferSide) {
   EXPECT_DOUBLE_EQ(a.r_ftrunc, std::max(*below.r_ftrunc_min, *above.r_ftrunc_min));
   // 0.1 is the finest studied step: nothing finer to step down to.
   EXPECT_DOUBLE_EQ(a.dt_ratio, std::min(*below.dt_ratio_max, *above.dt_ratio_max));
-  // Where both sides pass at 0.9 dt_sharp, between them the advice steps down to 0.5.
+  // Between two studied R_k the advice takes the studied step one finer than the smaller of
+  // their largest passing ones. Between 3.16e4 and 1e5 those are 0.5 and 0.9: at 3.16e4,
+  // R_ftrunc 464 at 0.9 dt_sharp grows its energy 1.9-fold and scores Err 0.106 (docs/fidelity.md,
+  // "The quick study under the new reference"), so the advice steps down to 0.1.
+  const auto& lower = criteria_.boundary[9];
+  const auto& upper = criteria_.boundary[10];
+  ASSERT_NEAR(lower.r_k, 31622.7766, 1e-3);
+  ASSERT_DOUBLE_EQ(upper.r_k, 1e5);
+  EXPECT_DOUBLE_EQ(*lower.dt_ratio_max, 0.5);
+  EXPECT_DOUBLE_EQ(*upper.dt_ratio_max, 0.9);
   const Advice high = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_,
-                             std::sqrt(31622.7766 * 1e5));
-  EXPECT_NEAR(high.dt_ratio, 0.5, 1e-9);
+                             std::sqrt(lower.r_k * upper.r_k));
+  EXPECT_NEAR(high.dt_ratio, 0.1, 1e-9);
   EXPECT_GT(a.r_ftrunc, 10.0);
   ASSERT_EQ(a.warnings.size(), 1u);
   EXPECT_NE(a.warnings[0].find("between sparse studied values"), std::string::npos);

@@ -48,7 +48,8 @@ double FinerStudiedRatio(const std::vector<ScoredPoint>& points, double ratio) {
 // either side needed (the boundary grows with R_k, eqs. 10-11), and the studied time step one
 // finer than the smaller of their largest passing ones: near the sharp bound Err varies with
 // R_k by more than the threshold (measured on quick: R_ftrunc 215, 0.9 dt_sharp passes at
-// R_k = 3.16e4 and 1e5, Err 0.046 and 0.050, and fails between them, Err 0.28 at 5.62e4).
+// R_k = 3.16e4 and 1e5, Err 0.073 and 0.087, and failed between them, Err 0.28 at 5.62e4 with
+// the earlier reference).
 Basis Between(const RkBoundary& below, const RkBoundary& above, double r_k,
               const std::vector<ScoredPoint>& points) {
   Basis b{std::max(*below.r_ftrunc_min, *above.r_ftrunc_min),
