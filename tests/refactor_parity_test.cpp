@@ -19,27 +19,33 @@
 // sensitivity README "Scenes" measures for any change of dt), so Err is compared only on the
 // soft-wire points.
 //
-// The bundles' largest force per zone equals that of the zone-by-zone step (commit b375d91)
-// before contact stations (core/contact_stations.h), within 1e-9 relative: on the row bundle
-// over its whole 0.5 s, on the 217-pin bundle over its first 10 ms (its chaos may separate
-// later runs that differ in a last digit). Both are in fact equal bit for bit today: the forces
-// are added in the old order. The fixtures were written by the binary of commit b375d91:
+// The bundles' largest force per zone is that of the fixtures within 1e-9 relative: on the row
+// bundle over its whole 0.5 s, on the 217-pin bundle over its first 10 ms (its chaos may
+// separate later runs that differ in a last digit). They were written by the zone-by-zone step
+// (commit b375d91) before contact stations (core/contact_stations.h), and again when the
+// eigensolution took its flexibility form (docs/physics.md §3):
 //   shockmap simulate scenes/bundle_row.json --json > row.json
 //   shockmap simulate tests/data/bundle_hex_first_10ms.json --json > hex.json
 // (bundle_hex_first_10ms.json: scenes/bundle_hex.json with solver.end_time_s = 0.01), then
 //   jq -r '.zone_results[] | "\(.name) \(.max_force_n)"' row.json
 //     > tests/data/bundle_row_zone_maxima.txt          (jq 1.6 prints 17 significant digits)
-// and the same for hex.json into tests/data/bundle_hex_first_10ms_zone_maxima.txt. Zone names
-// were then rounded as zones are named since (the wire height to the micrometre:
-// `@0.9144000000000001` became `@0.9144`); the forces are as the old binary printed them.
+// and the same for hex.json into tests/data/bundle_hex_first_10ms_zone_maxima.txt.
+//
+// The eigensolution is the scenes' only change since commit 4816a50 and b375d91's fixtures: the
+// truncation study's forces and SRf moved by up to 1.5e-8 relative and its soft-wire Err by
+// 1.5e-6; the 217-pin bundle's largest forces over 10 ms by up to 3.6e-5 (its load scaled by
+// 1 +- 1e-12 moves them by 1.7e-8: the move is the eigensolution's, not rounding); the row
+// bundle's over its 0.5 s by up to 21 % (the load scaled by 1 +- 1e-12 moves them by up to
+// 24 %: past its first impacts the row's rattling is chaotic). The truncation study's fixture
+// was then written again (`shockmap study run studies/bundle_row_truncation.json --db row.db`
+// and the query below).
 //
 // tests/data/quick_results.txt was written again when the reference gained the residual
-// flexibility and closed-form impulses and the eigensolution its flexibility form: what moved,
-// and why that is the better answer, is docs/fidelity.md's "The quick study under the new
-// reference" (written with `shockmap study run studies/quick.json --db quick.db` and the query
-// below).
-// The other fixtures in tests/data were written by the binary of commit 4816a50:
-//   shockmap study run studies/bundle_row_truncation.json --db row.db
+// flexibility and closed-form impulses: what moved, and why that is the better answer, is
+// docs/fidelity.md's "The quick study under the new reference" (`shockmap study run
+// studies/quick.json --db quick.db` and the query below).
+//
+// The schema-2 fixtures were written by the binary of commit 4816a50:
 //   shockmap study run tests/data/schema_v2_canonical.json --db schema_v2.db  (and _scene.json)
 // then read with the sqlite3 shell and the queries below (quote() prints every REAL with the
 // digits that round-trip it, so equal text means equal doubles).
