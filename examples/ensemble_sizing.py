@@ -1,0 +1,103 @@
+#!/usr/bin/env python3
+"""The sizing histogram of an ensemble from Python.
+
+Runs a cut-down copy of studies/bundle_hex_ensemble.json (the 7-pin hexagonal bundle, 60
+members in each of its two clearance states, enough to bound a P95 from above at 95 %) into a
+temporary database, takes the sizing statistics with shockmap.sizing, reads every member's
+largest force in the hottest zone and in the hottest wire with shockmap.query, and draws their
+histograms with the P95 and its interval.
+
+    python3 examples/ensemble_sizing.py [OUT.png]        # default ensemble_sizing.png
+"""
+
+import json
+import pathlib
+import sys
+import tempfile
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+import shockmap  # noqa: E402
+
+REPOSITORY = pathlib.Path(__file__).resolve().parent.parent
+MEMBERS = 60
+
+MEMBER_FORCES = """
+SELECT z.max_force_n FROM ensemble_member_zones z
+JOIN ensemble_members m USING (point_id) JOIN studies s USING (study_id)
+WHERE s.name = ? AND m.state = ? AND z.zone = ? AND m.status = 'ok'
+"""
+ZONE_NAMES = """
+SELECT DISTINCT r.zones_json FROM ensemble_members m
+JOIN ensemble_references r USING (reference_id) JOIN studies s USING (study_id)
+WHERE s.name = ? AND m.state = ?
+"""
+
+
+def study_spec():
+    spec = json.loads((REPOSITORY / "studies" / "bundle_hex_ensemble.json").read_text())
+    spec["name"] = "bundle_hex_sizing_example"
+    spec["description"] = "examples/ensemble_sizing.py: bundle_hex_ensemble with 60 members"
+    spec["members"] = MEMBERS
+    spec["scene"] = str(REPOSITORY / "scenes" / "bundle_hex_7.json")
+    return spec
+
+
+def member_forces(db, study, state, zone_name):
+    """Every ok member's largest force in the zone (N); zones are stored by index."""
+    (zones_json,) = shockmap.query(db, ZONE_NAMES, study, state)["zones_json"]
+    index = [zone["name"] for zone in json.loads(zones_json)].index(zone_name)
+    return shockmap.query(db, MEMBER_FORCES, study, state, index)["max_force_n"]
+
+
+def hottest(rows):
+    return rows.loc[rows["p95_n"].idxmax()]
+
+
+def draw_panel(axes, forces, row, title):
+    axes.hist(forces, bins=15, color="tab:blue", alpha=0.75)
+    axes.axvline(row["p95_n"], color="tab:red", linewidth=2, label=f"P95 = {row['p95_n']:.0f} N")
+    axes.axvspan(row["p95_lower_n"], min(row["p95_upper_n"], forces.max()), color="tab:red",
+                 alpha=0.12, label=f"95 % interval [{row['p95_lower_n']:.0f}, {row['p95_upper_n']:.0f}]")
+    if row["wilks_order"] > 0:
+        axes.axvline(row["wilks_limit_n"], color="black", linestyle="--",
+                     label=f"Wilks 95/95 (order {row['wilks_order']}) = {row['wilks_limit_n']:.0f} N")
+    axes.axvline(row["nominal_n"], color="tab:green", linestyle=":", label="nominal run")
+    axes.set(title=title, xlabel="largest contact force of a member (N)", ylabel="members")
+    axes.legend(fontsize="small")
+
+
+def main():
+    out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "ensemble_sizing.png")
+    start = time.perf_counter()
+    spec = study_spec()
+    with tempfile.TemporaryDirectory() as folder:
+        study_file = pathlib.Path(folder) / "ensemble.json"
+        study_file.write_text(json.dumps(spec))
+        db = pathlib.Path(folder) / "ensemble.db"
+        shockmap.Study.load(study_file).run(db=db, progress=True)
+        sizing = shockmap.sizing(db, spec["name"])
+        states = list(dict.fromkeys(sizing["state"]))
+        figure, axes = plt.subplots(len(states), 2, figsize=(12, 4.2 * len(states)),
+                                    constrained_layout=True, squeeze=False)
+        for row_axes, state in zip(axes, states):
+            rows = sizing[sizing["state"] == state]
+            wires = rows[rows["zone"].str.contains("-pin_", regex=False)]  # Between two pins.
+            for panel, (row, what) in zip(row_axes, [(hottest(rows), "hottest zone"),
+                                                     (hottest(wires), "hottest wire")]):
+                forces = member_forces(db, spec["name"], state, row["zone"])
+                draw_panel(panel, forces, row, f"{state}: {what} {row['zone']}, {len(forces)} members")
+                print(f"{state:12s} {what:13s} {row['zone']:22s} P95 {row['p95_n']:.1f} N "
+                      f"[{row['p95_lower_n']:.1f}, {row['p95_upper_n']:.1f}] "
+                      f"from {len(forces)} members")
+    figure.suptitle("7-pin hexagonal bundle, 10 g handling shock: members' largest forces")
+    figure.savefig(out, dpi=110)
+    print(f"{MEMBERS} members x {len(states)} states in {time.perf_counter() - start:.1f} s: {out}")
+
+
+if __name__ == "__main__":
+    main()
