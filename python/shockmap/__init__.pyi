@@ -12,6 +12,8 @@ import numpy.typing as npt
 import pandas as pd
 
 __version__: str
+__all__: List[str]
+DEFAULT_DATABASE: str
 
 PathLike = Union[str, "os.PathLike[str]"]
 FloatArray = npt.NDArray[np.float64]
@@ -77,9 +79,10 @@ class Comparison:
         """The reference's shocks, as shocks_numerical."""
     @property
     def numerical(self) -> Dict[str, FloatArray]:
-        """Histories of the run: t_s, tip_displacement_m, contact_force_n, and those recorded.
+        """Histories of the run: t_s, tip_displacement_m, tip_velocity_m_s, contact_force_n,
+        kinetic_j, strain_j, contact_j, dissipated_j (those recorded).
 
-        The arrays share the run's memory and stay valid after the Comparison is deleted.
+        Read-only arrays over the run's memory; they stay valid after the Comparison is deleted.
         """
     @property
     def reference(self) -> Dict[str, FloatArray]:
@@ -93,7 +96,7 @@ class Comparison:
 
 def compare(
     rk: float,
-    rftrunc: float = 300.0,
+    rftrunc: float,
     *,
     dt: Optional[float] = None,
     dt_factor: float = 0.1,
@@ -110,24 +113,28 @@ def compare(
     """
 
 class Scene:
-    """A scene file (beams, contact zones, effects, solver, outputs), checked as the file reader does."""
+    """A scene (beams, contact zones, effects, solver, outputs), checked as the file reader does."""
 
-    @staticmethod
-    def load(path: PathLike) -> Scene:
-        """Read and check a scene file; InputError names the file, key, value and what is allowed."""
-    @staticmethod
-    def from_dict(d: Mapping[str, Any], path: str = "<dict>") -> Scene:
+    @classmethod
+    def load(cls, path: PathLike) -> "Scene":
+        """Read and check a scene file; InputError names the file, key, value and what's allowed."""
+    @classmethod
+    def from_dict(cls, scene: Mapping[str, Any], path: str = "<dict>") -> "Scene":
         """Check a scene given as a dict (path names it in messages and resolves relative files)."""
     def to_dict(self) -> Dict[str, Any]:
         """The scene as a dict, in the file's format."""
-    def set(self, path: str, value: Any) -> None:
-        """Set a value by its dotted path (e.g. "bundle.wire.stiffness_n_per_m"), re-checked.
+    def set(self, key: str, value: Union[float, int, bool]) -> "Scene":
+        """Set a value by its path (e.g. "bundle.wire.stiffness_n_per_m", "zones[0].gap_m").
 
-        The value takes the type already there; InputError names the path and the value.
+        The value takes the type already there and the scene is checked again; InputError
+        names the path and the value, and leaves the scene as it was. Returns the scene.
         """
     @property
     def name(self) -> str:
         """The scene's name."""
+    @property
+    def path(self) -> str:
+        """The file (or the name given to from_dict) that messages name."""
 
 class SceneRun:
     """The result of simulate()."""
@@ -145,10 +152,28 @@ class SceneRun:
     def dt_used_s(self) -> float:
         """Time step used, s."""
     @property
+    def dt_s(self) -> float:
+        """Time step used, s (as in summary)."""
+    @property
+    def dt_paper_s(self) -> float:
+        """The paper's stability bound 1/(4 f_trunc), s."""
+    @property
+    def dt_sharp_s(self) -> float:
+        """The sharp stability bound 2/omega_max, s."""
+    @property
+    def max_energy_ratio(self) -> float:
+        """Largest total energy over the initial energy."""
+    @property
+    def distinct_bases(self) -> int:
+        """Modal bases computed (identical beams share one)."""
+    @property
+    def build_wall_s(self) -> float:
+        """Wall time of building the model, s."""
+    @property
     def coordinates(self) -> int:
         """Modal coordinates of the model."""
     @property
-    def modes_per_beam(self) -> Any:
+    def modes_per_beam(self) -> List[int]:
         """Modes kept on each beam."""
     @property
     def cpu_s(self) -> float:
@@ -156,31 +181,36 @@ class SceneRun:
     @property
     def wall_s(self) -> float:
         """Wall time of the run, s."""
+    summary: Dict[str, Any]
+    """The summary, as `shockmap simulate --json` prints it."""
     @property
     def zones(self) -> pd.DataFrame:
-        """One row per contact zone: zone, max_force_n (when tracked), impact statistics."""
-    @property
-    def summary(self) -> Dict[str, Any]:
-        """The summary, as `shockmap simulate --json` prints it."""
+        """One row per contact zone: its name, position, max_force_n (when tracked), shocks and
+        impact statistics when the scene asks for them."""
     @property
     def histories(self) -> Dict[str, FloatArray]:
-        """t_s and one array per recorded signal; valid after the SceneRun is deleted."""
+        """t_s, each displacement output NAME_m (NAME_velocity_m_s) and each zone's force ZONE_n,
+        named as `simulate --out`'s CSV columns; read-only, valid after the SceneRun is deleted."""
 
-def simulate(scene: Scene, progress: bool = False) -> SceneRun:
-    """Run a scene, as `shockmap simulate`. Releases the GIL."""
+def simulate(scene: Union[Scene, PathLike], progress: bool = False) -> SceneRun:
+    """Run a scene (or a scene file), as `shockmap simulate`. Releases the GIL; Ctrl-C stops it
+    and raises KeyboardInterrupt."""
 
 class Study:
     """A study file of any kind: canonical, scene_sweep or scene_ensemble."""
 
-    @staticmethod
-    def load(path: PathLike) -> Study:
-        """Read and check a study file; InputError names the file, key, value and what is allowed."""
+    @classmethod
+    def load(cls, path: PathLike) -> "Study":
+        """Read and check a study file; InputError names the file, key, value and what's allowed."""
     @property
     def name(self) -> str:
         """The study's name in the database."""
     @property
     def kind(self) -> str:
         """canonical, scene_sweep or scene_ensemble."""
+    @property
+    def path(self) -> str:
+        """The study file."""
     def run(
         self,
         db: PathLike = "shockmap.db",
@@ -192,23 +222,44 @@ class Study:
 
         jobs None: one worker per core. progress True prints the tool's lines on stderr; a
         callable gets (phase, done, total). Ctrl-C stops as SIGINT does (points in flight
-        stored) and raises KeyboardInterrupt. Returns the run's summary.
+        stored) and raises KeyboardInterrupt. Returns the run's summary (points_in_study,
+        points_computed, ok, diverged, unstable, failed, reference_unconverged, wall_s, ...).
         """
 
 def query(db: PathLike, sql: str, *params: Any) -> pd.DataFrame:
-    """A read-only query, as `shockmap query`; DatabaseError if it would write."""
+    """One read-only statement, as `shockmap query`, with ?1, ?2 ... bound to params.
 
-def results(db: PathLike, study: Optional[str] = None) -> pd.DataFrame:
-    """The view results (or scene_results for a scene study); df.attrs["units"] maps column to unit."""
+    DatabaseError if it would write; df.attrs["units"] maps declared columns to units.
+    """
 
-def criteria(db: PathLike, study: Optional[str] = None) -> pd.DataFrame:
-    """The validity boundary, one row per R_k, as `shockmap criteria derive --out`."""
+def results(db: PathLike = "shockmap.db", study: Optional[str] = None) -> pd.DataFrame:
+    """The study's rows of its view (results, scene_results or ensemble_results), by point.
 
-def sizing(db: PathLike, study: Optional[str] = None, wear: bool = False) -> pd.DataFrame:
-    """Per state, setting and zone sizing statistics of an ensemble, as `shockmap sizing --format csv`."""
+    df.attrs["units"] maps each declared column to its unit ("s", "N", "N s"; "" for none).
+    """
+
+def criteria(
+    db: PathLike = "shockmap.db", study: Optional[str] = None, **thresholds: float
+) -> pd.DataFrame:
+    """The validity boundary, one row per R_k, as `shockmap criteria derive --out` writes it.
+
+    thresholds (err_max=0.1, srf_min=0.8, ...) over the study's own; attrs["criteria"] holds
+    the whole derivation (fit, time step).
+    """
+
+def sizing(
+    db: PathLike = "shockmap.db",
+    study: Optional[str] = None,
+    wear: bool = False,
+    quantile: float = 0.95,
+    confidence: float = 0.95,
+) -> pd.DataFrame:
+    """Per state, setting and zone sizing statistics of an ensemble, as `shockmap sizing
+    --format csv` (the wear table of `sizing --wear` with wear=True)."""
 
 def reference(db: PathLike, reference_id: int, scene: bool = False) -> Dict[str, FloatArray]:
-    """A stored reference's signals by id: t_s and its blobs (tip_m, force_n, ...)."""
+    """A stored reference's signals by id in reference_runs (scene_references with scene=True):
+    t_s and tip_displacement_m, contact_force_n (a scene's scored displacement and force)."""
 
 def point(db: PathLike, study: str, point_id: int) -> Comparison:
     """A stored point computed again against its stored reference (as `shockmap export point`)."""
