@@ -12,7 +12,6 @@ import sys
 import textwrap
 import time
 
-import pandas as pd
 import pytest
 
 import shockmap
@@ -233,7 +232,12 @@ def test_scene_sweep_results_are_scene_results(tmp_path, source_dir, cli):
         "scene": str(source_dir / "scenes" / "cantilever_spring.json"),
         "sweep": {"solver.r_ftrunc": [10, 30]},
         "reference": {"solver.r_ftrunc": 100},
-        "scoring": {"displacement": "tip", "zone": "tip_spring", "window_s": 0.03},
+        "scoring": {
+            "displacement": "tip",
+            "zone": "tip_spring",
+            "window_s": 0.03,
+            "rest_duration_s": 0.0052,
+        },
     }
     path = write_json(tmp_path / "sweep.json", spec)
     db = tmp_path / "sweep.db"
@@ -284,7 +288,7 @@ def test_ctrl_c_stops_the_run_as_sigint_does(tmp_path, source_dir):
             time.sleep(0.05)
             if db.exists() and stored_members(db) >= 1:
                 break
-        assert child.poll() is None, f"the run ended before it was interrupted: {child.stdout.read()}"
+        assert child.poll() is None, f"the run ended uninterrupted: {child.stdout.read()}"
         child.send_signal(signal.SIGINT)
         out, err = child.communicate(timeout=60)
     finally:
