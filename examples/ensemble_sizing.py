@@ -2,10 +2,11 @@
 """The sizing histogram of an ensemble from Python.
 
 Runs a cut-down copy of studies/bundle_hex_ensemble.json (the 7-pin hexagonal bundle, 60
-members in each of its two clearance states, enough to bound a P95 from above at 95 %) into a
-temporary database, takes the sizing statistics with shockmap.sizing, reads every member's
-largest force in the hottest zone and in the hottest wire with shockmap.query, and draws their
-histograms with the P95 and its interval.
+members in each of its two clearance states, enough for Wilks' first-order 95 %/95 % limit)
+into a temporary database, takes the sizing statistics with shockmap.sizing, reads every
+member's largest force in the hottest zone and in the hottest wire (between two pins) with
+shockmap.query, and draws their histograms with the P95, its interval, Wilks' limit and the
+nominal run.
 
     python3 examples/ensemble_sizing.py [OUT.png]        # default ensemble_sizing.png
 """
@@ -54,19 +55,27 @@ def member_forces(db, study, state, zone_name):
     return shockmap.query(db, MEMBER_FORCES, study, state, index)["max_force_n"]
 
 
-def hottest(rows):
+def highest_p95(rows):
     return rows.loc[rows["p95_n"].idxmax()]
 
 
+def bound(value):
+    return f"{value:+.0f}" if value in (float("inf"), float("-inf")) else f"{value:.0f}"
+
+
 def draw_panel(axes, forces, row, title):
+    """The members' forces, the P95 with its interval (cut to the data where unbounded),
+    Wilks' limit where the member count allows one, and the nominal run."""
+    lower, upper = row["p95_lower_n"], row["p95_upper_n"]
     axes.hist(forces, bins=15, color="tab:blue", alpha=0.75)
     axes.axvline(row["p95_n"], color="tab:red", linewidth=2, label=f"P95 = {row['p95_n']:.0f} N")
-    axes.axvspan(row["p95_lower_n"], min(row["p95_upper_n"], forces.max()), color="tab:red",
-                 alpha=0.12, label=f"95 % interval [{row['p95_lower_n']:.0f}, {row['p95_upper_n']:.0f}]")
+    axes.axvspan(max(lower, forces.min()), min(upper, forces.max()), color="tab:red", alpha=0.12,
+                 label=f"its 95 % interval [{bound(lower)}, {bound(upper)}]")
     if row["wilks_order"] > 0:
         axes.axvline(row["wilks_limit_n"], color="black", linestyle="--",
-                     label=f"Wilks 95/95 (order {row['wilks_order']}) = {row['wilks_limit_n']:.0f} N")
-    axes.axvline(row["nominal_n"], color="tab:green", linestyle=":", label="nominal run")
+                     label=f"Wilks 95/95, order {row['wilks_order']}: {row['wilks_limit_n']:.0f} N")
+    axes.axvline(row["nominal_n"], color="tab:green", linestyle=":",
+                 label=f"nominal run: {row['nominal_n']:.0f} N")
     axes.set(title=title, xlabel="largest contact force of a member (N)", ylabel="members")
     axes.legend(fontsize="small")
 
@@ -87,10 +96,12 @@ def main():
         for row_axes, state in zip(axes, states):
             rows = sizing[sizing["state"] == state]
             wires = rows[rows["zone"].str.contains("-pin_", regex=False)]  # Between two pins.
-            for panel, (row, what) in zip(row_axes, [(hottest(rows), "hottest zone"),
-                                                     (hottest(wires), "hottest wire")]):
+            hottest = rows[rows["hottest"] == 1].iloc[0]  # sizing's own choice
+            for panel, (row, what) in zip(row_axes, [(hottest, "hottest zone"),
+                                                     (highest_p95(wires), "hottest wire")]):
                 forces = member_forces(db, spec["name"], state, row["zone"])
-                draw_panel(panel, forces, row, f"{state}: {what} {row['zone']}, {len(forces)} members")
+                title = f"{state}: {what} {row['zone']}, {len(forces)} members"
+                draw_panel(panel, forces, row, title)
                 print(f"{state:12s} {what:13s} {row['zone']:22s} P95 {row['p95_n']:.1f} N "
                       f"[{row['p95_lower_n']:.1f}, {row['p95_upper_n']:.1f}] "
                       f"from {len(forces)} members")

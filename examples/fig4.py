@@ -9,6 +9,7 @@ with shockmap.results and draws both scores with matplotlib.
 """
 
 import json
+import math
 import pathlib
 import sys
 import tempfile
@@ -52,11 +53,12 @@ def draw(results, out):
     for rk, points in results.groupby("r_k"):
         points = points.sort_values("r_ftrunc")
         scored = points[points["status"] == "ok"]  # Diverged or unconverged: no score.
-        label = f"$R_k$ = {rk:.0e}"
+        label = f"$R_k = 10^{{{math.log10(rk):.0f}}}$"
         (line,) = err_axes.plot(scored["r_ftrunc"], scored["err"], "o-", label=label)
         srf_axes.plot(scored["r_ftrunc"], scored["srf"], "o-", color=line.get_color(), label=label)
-        for axes in (err_axes, srf_axes):
-            axes.axvline(rk**0.5, color=line.get_color(), linestyle=":", linewidth=0.8)
+        if points["r_ftrunc"].min() <= math.sqrt(rk) <= points["r_ftrunc"].max():
+            for axes in (err_axes, srf_axes):
+                axes.axvline(math.sqrt(rk), color=line.get_color(), linestyle=":", linewidth=1)
     err_axes.axhline(thresholds["err_max"], color="black", linestyle="--", linewidth=1)
     srf_axes.axhline(thresholds["srf_min"], color="black", linestyle="--", linewidth=1)
     err_axes.set(xscale="log", yscale="log", ylabel="Err (eq. 8)", title="(a) spectral error")
@@ -64,7 +66,7 @@ def draw(results, out):
     for axes in (err_axes, srf_axes):
         axes.set_xlabel(r"$R_{ftrunc} = f_{trunc} / f_1$")
         axes.grid(True, which="both", alpha=0.3)
-    srf_axes.legend(title="dotted: $R_{ftrunc} = \\sqrt{R_k}$", fontsize="small")
+    err_axes.legend(title="dotted: $R_{ftrunc} = \\sqrt{R_k}$", fontsize="small", loc="lower left")
     figure.suptitle("Explicit modal scheme, dt = 0.1 of the sharp bound, window 0.03 s")
     figure.savefig(out, dpi=120)
 
