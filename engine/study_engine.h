@@ -35,7 +35,8 @@ struct StudyRunOptions {
   std::string database_path = kDefaultDatabasePath;
   int jobs = 0;  // 0: one worker per hardware thread.
   bool retry_failed = false;
-  bool progress = true;  // On stderr.
+  bool progress = true;          // On stderr.
+  ProgressListener on_progress;  // Told of each phase's progress too, when given.
   // The worker ranks of an MPI job (rank 0 runs the engine), or null: this process's threads.
   RemoteWorkers* remote = nullptr;
 };
@@ -295,7 +296,7 @@ class StudyRun {
                              [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
     const CpuTimer timer;
     ProgressReporter progress("references", "references", static_cast<double>(missing.size()),
-                              stderr, options_.progress);
+                              stderr, options_.progress, options_.on_progress);
     auto detail = [&] {
       return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
              std::to_string(summary_.references_failed);
@@ -344,7 +345,7 @@ class StudyRun {
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
     ProgressReporter progress("points", "points", static_cast<double>(to_compute_.size()), stderr,
-                              options_.progress);
+                              options_.progress, options_.on_progress);
     using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
     Distribute<Scored>(
         to_compute_.size(),

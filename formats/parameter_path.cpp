@@ -35,6 +35,22 @@ void CheckStudyMayVary(const Json::json_pointer& pointer, const std::string& pat
   }
 }
 
+Json::json_pointer PointerOf(const std::string& path, const std::string& file,
+                             const std::string& where) {
+  const auto pointer = ParameterPointer(path);
+  if (!pointer) FailPath(path, file, where);
+  return *pointer;
+}
+
+void CheckNumberAt(const Json& scene, const Json::json_pointer& pointer, const std::string& path,
+                   const std::string& file, const std::string& where) {
+  if (!scene.contains(pointer) || !scene.at(pointer).is_number()) {
+    FailAt(file, where,
+           "the scene has no number at \"" + path +
+               "\"; only numbers the scene file sets can be swept (write the default there)");
+  }
+}
+
 }  // namespace
 
 std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
@@ -60,32 +76,34 @@ std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
 
 Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
                                     const std::string& file, const std::string& where) {
-  const auto pointer = ParameterPointer(path);
-  if (!pointer) FailPath(path, file, where);
-  CheckStudyMayVary(*pointer, path, file, where);
-  if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
-    FailAt(file, where,
-           "the scene has no number at \"" + path +
-               "\"; only numbers the scene file sets can be swept (write the default there)");
-  }
-  return *pointer;
+  const Json::json_pointer pointer = PointerOf(path, file, where);
+  CheckStudyMayVary(pointer, path, file, where);
+  CheckNumberAt(scene, pointer, path, file, where);
+  return pointer;
 }
 
-Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path, const Json& value,
-                                     const std::string& file, const std::string& where) {
-  if (value.is_number()) return NumericParameter(scene, path, file, where);
-  const auto pointer = ParameterPointer(path);
-  if (!pointer) FailPath(path, file, where);
-  CheckStudyMayVary(*pointer, path, file, where);
+Json::json_pointer SceneParameter(const Json& scene, const std::string& path, const Json& value,
+                                  const std::string& file, const std::string& where) {
+  const Json::json_pointer pointer = PointerOf(path, file, where);
+  if (value.is_number()) {
+    CheckNumberAt(scene, pointer, path, file, where);
+    return pointer;
+  }
   if (!value.is_boolean()) {
     FailAt(file, where, "expected a number or true/false, got " + Shown(value));
   }
-  if (!scene.contains(*pointer) || !scene.at(*pointer).is_boolean()) {
+  if (!scene.contains(pointer) || !scene.at(pointer).is_boolean()) {
     FailAt(file, where,
            "the scene has no true/false at \"" + path +
                "\"; only values the scene file sets can be set (write the default there)");
   }
-  return *pointer;
+  return pointer;
+}
+
+Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path, const Json& value,
+                                     const std::string& file, const std::string& where) {
+  CheckStudyMayVary(PointerOf(path, file, where), path, file, where);
+  return SceneParameter(scene, path, value, file, where);
 }
 
 }  // namespace shockmap
