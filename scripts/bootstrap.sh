@@ -15,6 +15,7 @@ SHOCKMAP_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   gnuplot-nox
+  python3-dev pybind11-dev python3-numpy python3-pandas
 )
 
 install_missing_packages() {
