@@ -3,6 +3,10 @@
 import gc
 import json
 import os
+import signal
+import subprocess
+import sys
+import textwrap
 import threading
 import time
 
@@ -184,3 +188,51 @@ def test_two_threads_run_two_scenes_at_once(source_dir):
     best_concurrent = min(t for _, t in trials)
     assert best_sequential > 0.4, f"runs too short to time: {trials}"
     assert best_concurrent < 0.8 * best_sequential, f"(sequential, concurrent) s: {trials}"
+
+
+INTERRUPTED_SIMULATION = textwrap.dedent(
+    """
+    import sys
+    import time
+    import shockmap
+    scene = shockmap.Scene.load(sys.argv[1])
+    print("started", flush=True)
+    start = time.perf_counter()
+    try:
+        shockmap.simulate(scene)
+    except KeyboardInterrupt:
+        print(f"KeyboardInterrupt {time.perf_counter() - start:.3f}", flush=True)
+        sys.exit(0)
+    print(f"finished {time.perf_counter() - start:.3f}", flush=True)
+    """
+)
+
+
+def test_ctrl_c_stops_a_simulation(source_dir):
+    # The 217-pin bundle: several seconds of CPU, stopped after half a second.
+    scene = source_dir / "scenes" / "bundle_hex.json"
+    child = subprocess.Popen(
+        [sys.executable, "-c", INTERRUPTED_SIMULATION, str(scene)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(0.5)
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=120)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert child.returncode == 0, err
+    assert out.startswith("KeyboardInterrupt"), (out, err)
+
+
+def test_the_interpreter_s_ctrl_c_is_back_after_a_run(source_dir):
+    before = signal.getsignal(signal.SIGINT)
+    shockmap.simulate(shockmap.Scene.load(source_dir / "scenes" / "cantilever_spring.json"))
+    assert signal.getsignal(signal.SIGINT) is before
+    with pytest.raises(KeyboardInterrupt):
+        signal.raise_signal(signal.SIGINT)
+        time.sleep(1)  # The interpreter raises it at its next check.

@@ -173,7 +173,7 @@ def test_query_refuses_to_write(canonical):
 
 def test_missing_database_raises_and_creates_nothing(tmp_path):
     absent = tmp_path / "absent.db"
-    with pytest.raises((shockmap.DatabaseError, shockmap.InputError), match="absent.db"):
+    with pytest.raises(shockmap.DatabaseError, match="absent.db"):
         shockmap.results(absent)
     assert not absent.exists()
 
