@@ -45,6 +45,7 @@ def study_spec():
     spec["description"] = "examples/ensemble_sizing.py: bundle_hex_ensemble with 60 members"
     spec["members"] = MEMBERS
     spec["scene"] = str(REPOSITORY / "scenes" / "bundle_hex_7.json")
+    spec.pop("impact_statistics", None)  # The histograms need the largest forces only.
     return spec
 
 
@@ -82,6 +83,7 @@ def draw_panel(axes, forces, row, title):
 
 def main():
     out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "ensemble_sizing.png")
+    out.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     spec = study_spec()
     with tempfile.TemporaryDirectory() as folder:

@@ -73,6 +73,7 @@ def draw(results, out):
 
 def main():
     out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "fig4.png")
+    out.parent.mkdir(parents=True, exist_ok=True)
     start = time.perf_counter()
     results = run_grid()
     draw(results, out)
