@@ -165,10 +165,12 @@ def test_two_threads_run_two_scenes_at_once(source_dir):
         return time.perf_counter() - start, runs
 
     def concurrent():
-        runs = [None, None]
+        runs, spans = [None, None], [None, None]
 
         def work(i):
+            began = time.perf_counter()
             runs[i] = shockmap.simulate(scenes[i])
+            spans[i] = (began, time.perf_counter())
 
         threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
         start = time.perf_counter()
@@ -176,16 +178,22 @@ def test_two_threads_run_two_scenes_at_once(source_dir):
             thread.start()
         for thread in threads:
             thread.join()
+        # Had a run held the GIL, the other thread could not have started its own before it
+        # ended, whatever the load of the machine.
+        assert max(s[0] for s in spans) < min(s[1] for s in spans), f"no overlap: {spans}"
         return time.perf_counter() - start, runs
 
-    # The machine is shared: take the best of three rounds of each, interleaved.
+    # The machine is shared (CTest runs other tests beside this one): rounds of each,
+    # interleaved, until the best of each shows the overlap, at most six.
     trials = []
-    for _ in range(3):
+    while len(trials) < 6:
         (t_seq, runs_seq), (t_con, runs_con) = sequential(), concurrent()
         assert [largest_forces(r) for r in runs_con] == [largest_forces(r) for r in runs_seq]
         trials.append((t_seq, t_con))
-    best_sequential = min(t for t, _ in trials)
-    best_concurrent = min(t for _, t in trials)
+        best_sequential = min(t for t, _ in trials)
+        best_concurrent = min(t for _, t in trials)
+        if len(trials) >= 2 and best_concurrent < 0.8 * best_sequential:
+            break
     assert best_sequential > 0.4, f"runs too short to time: {trials}"
     assert best_concurrent < 0.8 * best_sequential, f"(sequential, concurrent) s: {trials}"
 
