@@ -56,8 +56,23 @@ py::dict TableDict(const Table& table) {
   return d;
 }
 
+// A Python value bound to a parameter: None, an int, a float or a str.
+TableCell ParameterCell(const py::handle& value, std::size_t index) {
+  if (value.is_none()) return {};
+  if (py::isinstance<py::bool_>(value)) return std::int64_t{value.cast<bool>()};
+  if (py::isinstance<py::int_>(value)) return value.cast<std::int64_t>();
+  if (py::isinstance<py::float_>(value)) return value.cast<double>();
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  throw InputError(
+      fmt::format("parameters[{}]: a {} cannot be bound; give None, an int, a float "
+                  "or a str",
+                  index, std::string(py::str(value.get_type().attr("__name__")))));
+}
+
 py::dict Query(const std::string& database_path, const std::string& sql,
-               const std::vector<std::string>& parameters) {
+               const py::sequence& values) {
+  std::vector<TableCell> parameters;
+  for (std::size_t i = 0; i < values.size(); ++i) parameters.push_back(ParameterCell(values[i], i));
   Table table;
   {
     py::gil_scoped_release release;

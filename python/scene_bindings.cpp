@@ -57,9 +57,10 @@ struct SceneRunHandle {
 py::dict Histories(const SceneRunHandle& h) {
   const TransientResult& r = h.run->result;
   py::dict d;
-  const UniformSignal* first = !r.displacement_m.empty()    ? &r.displacement_m[0]
-                               : !r.contact_force_n.empty() ? &r.contact_force_n[0]
-                                                            : nullptr;
+  const UniformSignal* first = !r.displacement_m.empty()            ? &r.displacement_m[0]
+                               : !r.contact_force_n.empty()         ? &r.contact_force_n[0]
+                               : !r.energy.kinetic_j.values.empty() ? &r.energy.kinetic_j
+                                                                    : nullptr;
   if (first == nullptr) return d;
   d["t_s"] = TimesOf(*first);
   for (std::size_t p = 0; p < r.displacement_m.size(); ++p) {
@@ -71,6 +72,13 @@ py::dict Histories(const SceneRunHandle& h) {
   }
   for (std::size_t z = 0; z < r.contact_force_n.size(); ++z) {
     d[py::str(h.zone_names[z] + "_n")] = ArrayOver(h.run, r.contact_force_n[z].values);
+  }
+  const EnergyHistory& e = r.energy;
+  for (const auto& [name, signal] :
+       {std::pair{"kinetic_j", &e.kinetic_j}, std::pair{"strain_j", &e.strain_j},
+        std::pair{"contact_j", &e.contact_j}, std::pair{"dissipated_j", &e.dissipated_j},
+        std::pair{"external_work_j", &e.external_work_j}}) {
+    if (!signal->values.empty()) d[name] = ArrayOver(h.run, signal->values);
   }
   return d;
 }

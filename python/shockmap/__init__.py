@@ -168,8 +168,9 @@ def _frame(table):
 
 
 def query(db, sql, *parameters):
-    """One read-only SQL statement, as `shockmap query`; ?1, ?2 ... bound to `parameters`."""
-    return _frame(_shockmap.query(str(db), sql, [str(p) for p in parameters]))
+    """One read-only SQL statement, as `shockmap query`; ?1, ?2 ... bound to `parameters`
+    (None, int, float or str)."""
+    return _frame(_shockmap.query(str(db), sql, list(parameters)))
 
 
 _RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",

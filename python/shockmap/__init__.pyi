@@ -18,7 +18,7 @@ DEFAULT_DATABASE: str
 PathLike = Union[str, "os.PathLike[str]"]
 FloatArray = npt.NDArray[np.float64]
 Status = Literal["ok", "diverged", "unstable", "failed", "reference_unconverged"]
-ProgressCallback = Callable[[str, int, int], None]
+ProgressCallback = Callable[[str, float, float], None]
 
 class InputError(ValueError):
     """Bad input: the message names the file, key or flag, the value and what is allowed."""
@@ -189,8 +189,10 @@ class SceneRun:
         impact statistics when the scene asks for them."""
     @property
     def histories(self) -> Dict[str, FloatArray]:
-        """t_s, each displacement output NAME_m (NAME_velocity_m_s) and each zone's force ZONE_n,
-        named as `simulate --out`'s CSV columns; read-only, valid after the SceneRun is deleted."""
+        """t_s, each displacement output NAME_m (NAME_velocity_m_s), each zone's force ZONE_n and
+        the energies when recorded (kinetic_j, strain_j, contact_j, dissipated_j,
+        external_work_j), named as `simulate --out`'s CSV columns; read-only, valid after the
+        SceneRun is deleted."""
 
 def simulate(scene: Union[Scene, PathLike], progress: bool = False) -> SceneRun:
     """Run a scene (or a scene file), as `shockmap simulate`. Releases the GIL; Ctrl-C stops it
@@ -226,8 +228,9 @@ class Study:
         points_computed, ok, diverged, unstable, failed, reference_unconverged, wall_s, ...).
         """
 
-def query(db: PathLike, sql: str, *params: Any) -> pd.DataFrame:
-    """One read-only statement, as `shockmap query`, with ?1, ?2 ... bound to params.
+def query(db: PathLike, sql: str, *params: Union[None, int, float, str]) -> pd.DataFrame:
+    """One read-only statement, as `shockmap query`, with ?1, ?2 ... bound to params (NULL,
+    integer, real or text as given; InputError for another type).
 
     DatabaseError if it would write; df.attrs["units"] maps declared columns to units.
     """

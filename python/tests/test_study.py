@@ -164,6 +164,18 @@ def test_query_with_parameters_is_the_command_line_s_query(canonical, cli):
     assert_frame_matches_csv(frame, printed)
 
 
+def test_query_binds_parameters_with_their_types(canonical):
+    _, db, _ = canonical
+    frame = shockmap.query(db, "SELECT ?1 AS x, typeof(?1) AS tx, typeof(?2) AS ti, ?3 IS NULL AS n",
+                           1.5, 2, None)
+    assert frame["x"][0] == 1.5
+    assert list(frame.loc[0, ["tx", "ti", "n"]]) == ["real", "integer", 1]
+    unscored = shockmap.query(db, "SELECT count(*) AS n FROM results WHERE dt_asked_s IS ?", None)
+    assert unscored["n"][0] == N_POINTS
+    with pytest.raises(shockmap.InputError, match=r"parameters\[0\]: a list cannot be bound"):
+        shockmap.query(db, "SELECT ?", [1])
+
+
 def test_query_refuses_to_write(canonical):
     _, db, _ = canonical
     with pytest.raises(shockmap.DatabaseError):
