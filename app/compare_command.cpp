@@ -56,8 +56,13 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
     fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r.scores[score.name], "{:.4f}"),
                score.source, score.meaning);
   }
-  fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
-             r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+  if (f.options.scheme == Scheme::kExplicitModal) {
+    fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
+               r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+  } else {
+    fmt::print("  model             the full FE model, {} elements, {} unknowns (no modal basis)\n",
+               r.n_elements, r.n_dofs);
+  }
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", r.numerical.dt_used_s,
              r.numerical.dt_requested_s, r.numerical.steps_taken);
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",

@@ -18,8 +18,8 @@ using ProgressListener = std::function<void(std::string_view phase, double done,
 
 class ProgressReporter {
  public:
-  // `phase` names the work ("references", "points", "simulate bundle_hex"), `unit` what
-  // done and total count ("references", "points", "s simulated"); writes to `out`, nothing
+  // `phase` names the work ("references", "points", "simulate bundle_hex"), `unit` follows the
+  // numbers ("done" where the phase names what is counted, "s simulated"); writes to `out`, nothing
   // when `enabled` is false or total <= 0; `listener`, when given, is told too.
   ProgressReporter(std::string phase, std::string unit, double total, std::FILE* out, bool enabled,
                    ProgressListener listener = {});

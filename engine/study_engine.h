@@ -295,7 +295,7 @@ class StudyRun {
     std::ranges::stable_sort(missing, std::greater{},
                              [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
     const CpuTimer timer;
-    ProgressReporter progress("references", "references", static_cast<double>(missing.size()),
+    ProgressReporter progress("references", "done", static_cast<double>(missing.size()),
                               stderr, options_.progress, options_.on_progress);
     auto detail = [&] {
       return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
@@ -344,7 +344,7 @@ class StudyRun {
     std::vector<std::int64_t> ids;
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
-    ProgressReporter progress("points", "points", static_cast<double>(to_compute_.size()), stderr,
+    ProgressReporter progress("points", "done", static_cast<double>(to_compute_.size()), stderr,
                               options_.progress, options_.on_progress);
     using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
     Distribute<Scored>(
