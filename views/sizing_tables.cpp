@@ -108,7 +108,7 @@ Table ZoneTable(const EnsembleSizing& s) {
       std::optional<bool> agrees;
       if (refined != nullptr) agrees = Agrees(z, refined->zones[z.zone], s.options.tolerance);
       auto row = Row(s, g, z, agrees, false);
-      row.push_back(static_cast<std::int64_t>(z.zone == g.hottest));
+      row.emplace_back(std::in_place_type<std::int64_t>, z.zone == g.hottest ? 1 : 0);
       t.rows.push_back(std::move(row));
     }
   }
