@@ -31,7 +31,7 @@ void Derive(const CriteriaFlags& f) {
   const CriteriaOptions options = ThresholdsFor(f.thresholds, f.database_path, study);
   std::string error;
   if (!options.IsValid(&error)) throw InputError(error);
-  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria criteria = DeriveCriteria(points, options);
   if (!f.out.empty()) {
     const std::filesystem::path file(f.out);
@@ -47,7 +47,7 @@ void Check(const CriteriaFlags& f) {
   const ValidityCriteria baseline =
       CriteriaFromJson(ReadJsonFile(f.baseline), f.baseline, &tolerances);
   const std::string study = ResolveStudyName(f.database_path, f.study);
-  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria current = DeriveCriteria(points, baseline.options);
   const auto problems = CheckAgainstBaseline(baseline, tolerances, current, points);
   if (problems.empty()) {

@@ -120,7 +120,7 @@ std::string CriteriaJson(const std::string& database_path, const std::string& st
   std::string error;
   if (!options.IsValid(&error)) throw InputError(error);
   py::gil_scoped_release release;
-  const auto points = LoadScoredPoints(database_path, name, "explicit-modal");
+  const auto points = LoadCriteriaPoints(database_path, name);
   return CriteriaToJson(name, DeriveCriteria(points, options)).dump();
 }
 

@@ -60,4 +60,16 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
   return points;
 }
 
+std::vector<ScoredPoint> LoadCriteriaPoints(const std::string& database_path,
+                                            const std::string& study) {
+  auto points = LoadScoredPoints(database_path, study, "explicit-modal");
+  if (points.empty()) {
+    throw InputError("STUDY: study " + study + " in " + database_path +
+                     " has no scored point of the paper's problem (explicit-modal): criteria are "
+                     "derived from a study of kind \"canonical\" once its points are run (an "
+                     "ensemble is judged with `shockmap sizing`)");
+  }
+  return points;
+}
+
 }  // namespace shockmap

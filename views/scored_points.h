@@ -16,4 +16,10 @@ std::string ResolveStudyName(const std::string& database_path, const std::string
 std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                                           const std::string& study, const std::string& scheme);
 
+// The explicit modal points of `study` validity criteria are derived from. Throws InputError
+// when there is none (a study of scenes or an ensemble, or one not run yet), rather than let
+// criteria of nothing be printed.
+std::vector<ScoredPoint> LoadCriteriaPoints(const std::string& database_path,
+                                            const std::string& study);
+
 }  // namespace shockmap

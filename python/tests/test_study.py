@@ -326,3 +326,12 @@ def stored_members(db):
             ).fetchone()[0]
     except sqlite3.Error:  # The run has not created its tables yet.
         return 0
+
+
+def test_criteria_of_an_ensemble_are_refused_as_the_command_line_refuses_them(small_ensemble, cli):
+    db, name = small_ensemble
+    printed = cli("criteria", "derive", name, "--db", db, expect=2)
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.criteria(db, name)
+    assert str(raised.value) == cli_error_message(printed.stderr)
+    assert "shockmap sizing" in str(raised.value)
