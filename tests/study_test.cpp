@@ -287,7 +287,7 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
 TEST(ProgressReporter, PrintsAPlainFinalLineOffATerminal) {
   std::FILE* out = std::tmpfile();
   ASSERT_NE(out, nullptr);
-  ProgressReporter progress("references", "references", 3, out, true);
+  ProgressReporter progress("references", "done", 3, out, true);
   progress.Update(1, "unconverged 0");
   progress.Finish(3, "unconverged 1, failed 0");
   std::rewind(out);
