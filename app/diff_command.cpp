@@ -30,6 +30,7 @@ void Diff(const DiffFlags& f) {
   const DiffedStudy a = LoadDiffedStudy(f.database_path, f.study_a, f.thresholds.given, "A");
   const DiffedStudy b = LoadDiffedStudy(database_b, f.study_b, f.thresholds.given, "B");
   const StudyDiff diff = DiffStudies(a, b, f.tolerance);
+  if (!f.out.empty()) DrawDiffMap(a, b, f.out);  // Before any output: a bad --out prints none.
   if (f.format == "json") {
     std::cout << DiffToJson(a, b, diff).dump(2) << '\n';
   } else if (f.format == "csv") {
@@ -38,7 +39,6 @@ void Diff(const DiffFlags& f) {
     std::cout << DiffText(a, b, diff);
   }
   if (f.out.empty()) return;
-  DrawDiffMap(a, b, f.out);
   (f.format == "table" ? std::cout : std::cerr) << "map written to " << f.out << '\n';
 }
 
