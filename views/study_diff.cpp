@@ -191,7 +191,7 @@ std::vector<const ScoreDefinition*> JudgedScores(const DiffedStudy& a, const Dif
 }
 
 std::string FitText(const ValidityCriteria& c) {
-  if (!c.fit) return "no fit (fewer than two R_k above the knee)";
+  if (!c.fit) return "no fit: fewer than two R_k have a boundary above the smallest truncation";
   return fmt::format(
       "R_ftrunc = {:.3g} R_k^{:.3f} above the knee R_k = {:.4g} (p in [{:.3f}, {:.3f}])",
       c.fit->c_envelope, c.fit->p, c.fit->knee_r_k, c.fit->p_low, c.fit->p_high);
