@@ -8,6 +8,7 @@
 #include "app/compare_command.h"
 #include "app/completion_command.h"
 #include "app/criteria_command.h"
+#include "app/diff_command.h"
 #include "app/error_report.h"
 #include "app/exit_codes.h"
 #include "app/export_command.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   shockmap::AddQueryCommand(app);
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
+  shockmap::AddDiffCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddSizingCommand(app);
   shockmap::AddViewCommands(app);
