@@ -155,8 +155,10 @@ std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
   const std::string q = "p" + Percent(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone"};
   if (compact) {
-    c.push_back("wear_" + q + "_m3 [" + Percent(s.options.confidence) + " %]");
-    c.insert(c.end(), {"wilks_limit_m3", "mean_wear_volume_m3", "force_" + q + "_n"});
+    const std::string c_percent = Percent(s.options.confidence);
+    const std::string p = "P" + Percent(s.options.quantile);
+    c.insert(c.end(), {"wear " + p + " (m3) [" + c_percent + " %]",
+                       "Wilks " + p + "/" + c_percent + " %", "mean (m3)", "force " + p + " (N)"});
     return c;
   }
   for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
