@@ -27,7 +27,7 @@ struct CriteriaFlags {
 
 void Derive(const CriteriaFlags& f) {
   if (!f.out.empty()) CheckPathLength(f.out, "--out");
-  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "criteria derive");
   const CriteriaOptions options = ThresholdsFor(f.thresholds, f.database_path, study);
   std::string error;
   if (!options.IsValid(&error)) throw InputError(error);
@@ -46,7 +46,7 @@ void Check(const CriteriaFlags& f) {
   CriteriaTolerances tolerances;
   const ValidityCriteria baseline =
       CriteriaFromJson(ReadJsonFile(f.baseline), f.baseline, &tolerances);
-  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "criteria check");
   const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria current = DeriveCriteria(points, baseline.options);
   const auto problems = CheckAgainstBaseline(baseline, tolerances, current, points);

@@ -86,7 +86,8 @@ void AddPlotCommand(CLI::App& app, const Flags& flags) {
   fig4->add_option("--out", flags->out, "image, .png or .svg (default: out/STUDY_fig4.png)");
   fig4->callback([flags] {
     CheckPlotPath(flags->out);
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study =
+        ResolveCanonicalStudy(flags->database_path, flags->study, "plot fig4");
     const std::string out = flags->out.empty() ? "out/" + study + "_fig4.png" : flags->out;
     DrawFig4(study, LoadScoredPoints(flags->database_path, study, "explicit-modal"),
              LoadScoredPoints(flags->database_path, study, "implicit-full"),
@@ -112,7 +113,7 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
                                  "--rk only the table is printed");
     }
     CheckPlotPath(flags->out);
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study = ResolveCanonicalStudy(flags->database_path, flags->study, "cost");
     const auto tables =
         BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
                         LoadScoredPoints(flags->database_path, study, "implicit-full"),
@@ -159,7 +160,7 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
           "--rk: required to advise from a study (or give a scene file, *.json, "
           "for STUDY)");
     }
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study = ResolveCanonicalStudy(flags->database_path, flags->study, "advise");
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
     const StudySpec spec = StoredSpec(flags->database_path, study);
     const Advice a = Advise(

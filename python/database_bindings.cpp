@@ -115,7 +115,7 @@ std::pair<std::string, std::string> StudyAndKind(const std::string& database_pat
 // thresholds and `given` over them.
 std::string CriteriaJson(const std::string& database_path, const std::string& study,
                          const std::map<std::string, double, std::less<>>& given) {
-  const std::string name = ResolveStudyName(database_path, study);
+  const std::string name = ResolveCanonicalStudy(database_path, study, "criteria derive");
   const CriteriaOptions options = StudyCriteriaOptions(database_path, name, given);
   std::string error;
   if (!options.IsValid(&error)) throw InputError(error);

@@ -6,15 +6,18 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <sstream>
 
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
 #include "tests/run_command.h"
+#include "views/cost_front.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
 
@@ -324,6 +327,31 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   }
   ASSERT_EQ(hottest.size(), 4u);  // Two states by two settings.
 
+  // The terminal's table: 12 members have no Wilks limit and cannot bound a P95 from above; it
+  // says how many would, shows no infinity and fits 120 characters.
+  const auto table = RunShockmap("sizing --db " + at.db);
+  ASSERT_EQ(table.exit_code, 0) << table.output;
+  EXPECT_NE(table.output.find("a one-sided P95 at 95 % confidence needs at least 59 members"),
+            std::string::npos)
+      << table.output;
+  EXPECT_EQ(table.output.find("inf"), std::string::npos) << table.output;
+  std::istringstream lines(table.output);
+  for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 120u) << line;
+  // An ensemble is no study of the paper's problem: map and criteria say so and what to use.
+  for (const std::string command : {"map", "criteria derive"}) {
+    const auto named =
+        RunShockmap(command + " --db " + at.db + " '" + study["name"].get<std::string>() + "'");
+    EXPECT_EQ(named.exit_code, 2) << named.output;
+    EXPECT_NE(named.output.find("is of kind \"scene_ensemble\""), std::string::npos)
+        << named.output;
+    EXPECT_NE(named.output.find("shockmap sizing"), std::string::npos) << named.output;
+    const auto unnamed = RunShockmap(command + " --db " + at.db);
+    EXPECT_EQ(unnamed.exit_code, 2) << unnamed.output;
+    EXPECT_NE(unnamed.output.find("0 studies of the paper's problem"), std::string::npos)
+        << unnamed.output;
+    EXPECT_EQ(unnamed.output.find("small"), std::string::npos) << "listed as eligible";
+  }
+
   const auto page = at.dir / "report" / "index.html";
   const std::string html = ReadBytes(page.string());
   EXPECT_EQ(html.find("<b>small"), std::string::npos) << "the study name went in as markup";
@@ -398,6 +426,40 @@ TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
   }
 }
 
+// A point that passes while a finer time step at the same R_k and R_ftrunc fails is flagged and
+// kept off the front, however fast; its finer neighbours passing, it is on it.
+TEST(CostFront, IsBuiltFromPointsWhoseFinerTimeStepsPassToo) {
+  auto point = [](double r_ftrunc, double dt_ratio, double err, double cpu_s) {
+    ScoredPoint p;
+    p.r_k = 3162.0;
+    p.r_ftrunc = r_ftrunc;
+    p.status = RunStatus::kOk;
+    p.dt_sharp_s = 1e-6;
+    p.dt_s = dt_ratio * p.dt_sharp_s;
+    p.cpu_s = cpu_s;
+    p.scores.Set("err", err);
+    p.scores.Set("srf", 1.0);
+    return p;
+  };
+  const std::vector<ScoredPoint> points = {
+      point(100, 0.1, 0.108, 0.5), point(100, 0.9, 0.089, 0.05),  // Passes by cancellation.
+      point(316, 0.1, 0.020, 1.0), point(316, 0.9, 0.030, 0.1)};  // Passes at both steps.
+  const auto tables = BuildCostTables(points, {}, std::nullopt);
+  ASSERT_EQ(tables.size(), 1u);
+  std::map<std::pair<double, long>, CostRow> rows;  // By R_ftrunc and 10 dt/dt_sharp.
+  for (const CostRow& r : tables[0].rows)
+    rows[{r.point.r_ftrunc, std::lround(10 * r.point.DtRatio())}] = r;
+  const CostRow& cancelled = rows.at({100, 9});
+  EXPECT_TRUE(cancelled.passes);
+  EXPECT_TRUE(cancelled.fragile);
+  EXPECT_FALSE(cancelled.pareto);
+  EXPECT_FALSE(rows.at({100, 1}).passes);
+  EXPECT_FALSE(rows.at({316, 9}).fragile);
+  EXPECT_TRUE(rows.at({316, 9}).pareto);  // The fastest robust point heads the front.
+  EXPECT_TRUE(rows.at({316, 1}).pareto);  // More accurate at a higher cost.
+  EXPECT_NE(CostSummary(tables).find("fragile"), std::string::npos);
+}
+
 TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
   const auto fig4 =
       RunShockmap("plot fig4 --db " + at_.db + " --out " + (at_.dir / "fig4.svg").string());
@@ -409,6 +471,11 @@ TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
   ASSERT_EQ(cost.exit_code, 0) << cost.output;
   EXPECT_NE(cost.output.find("R_k = 3162"), std::string::npos) << cost.output;
   EXPECT_NE(cost.output.find("*"), std::string::npos) << "no Pareto point marked";
+  // R_ftrunc 100 passes at 0.9 dt_sharp (Err 0.089) and fails at 0.1 (Err 0.108): by error
+  // cancellation, shown as such and off the front.
+  const std::regex fragile_row(R"( explicit-modal +100 +0\.9 .* fragile *\n)");
+  EXPECT_TRUE(std::regex_search(cost.output, fragile_row)) << cost.output;
+  EXPECT_NE(cost.output.find("only by error cancellation"), std::string::npos) << cost.output;
 
   const auto inside = RunShockmap("advise --db " + at_.db + " --rk 5000");
   ASSERT_EQ(inside.exit_code, 0) << inside.output;

@@ -14,6 +14,7 @@
 #include "db/read_only_query.h"
 #include "engine/progress_reporter.h"
 #include "engine/study_run.h"
+#include "formats/setting_change.h"
 #include "tests/run_command.h"
 
 namespace shockmap {
@@ -134,7 +135,7 @@ TEST(StudySpec, ModesAxisPlacesOneTruncationJustAboveEachModeFrequency) {
   }
 }
 
-TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
+TEST(StudySpec, ScoringSettingsEnterTheSettingsKeyByTheirValue) {
   auto spec = [](const std::string& shocks) {
     return ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {"shocks": {)" + shocks +
                                       R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
@@ -145,7 +146,6 @@ TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
   const StudySpec contact = spec(R"("srf_definition": "first_contact")");
   const StudySpec window = spec(R"("srf_definition": "reference_window")");
   EXPECT_EQ(SettingsKey(plain), SettingsKey(shock));
-  EXPECT_EQ(SettingsKey(plain).find("srf_definition"), std::string::npos);
   EXPECT_NE(SettingsKey(plain), SettingsKey(contact));
   EXPECT_NE(SettingsKey(contact), SettingsKey(window));
   EXPECT_EQ(OptionsOf(window, window.points[0]).srf_definition, SrfDefinition::kReferenceWindow);
@@ -157,6 +157,37 @@ TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
                                                            "x.json")));
   // The reference does not depend on how SRf reads it.
   EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
+}
+
+// Each scoring and reference setting is lifelong and named by its key in the study file, with
+// the stored and the given value; thresholds and grid axes are not.
+TEST(StudySpec, AChangedLifelongSettingIsNamedByItsFileKey) {
+  auto key = [](const std::string& scoring) {
+    return Json::parse(
+        SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {)" + scoring +
+                                               R"(}, "grids": [{"rk": [1, 10], "rftrunc": 10}]})"),
+                                   "x.json")));
+  };
+  const Json plain = key(R"("window_s": 0.03)");
+  const std::pair<const char*, const char*> changes[] = {
+      {R"("window_s": 0.05)", "scoring.window_s"},
+      {R"("window_s": 0.03, "psd": {"n_samples": 2048})", "scoring.psd.n_samples"},
+      {R"("window_s": 0.03, "psd": {"window": "rectangular"})", "scoring.psd.window"},
+      {R"("window_s": 0.03, "psd": {"zero_padding_factor": 2})", "scoring.psd.zero_padding_factor"},
+      {R"("window_s": 0.03, "shocks": {"rest_duration_t1": 1})", "scoring.shocks.rest_duration_t1"},
+      {R"("window_s": 0.03, "reference": {"r_fref_min": 1000})", "scoring.reference.r_fref_min"},
+      {R"("window_s": 0.03, "reference": {"tolerance": 0.05})", "scoring.reference.tolerance"},
+  };
+  for (const auto& [scoring, setting] : changes) {
+    const auto change = FirstChangedSetting(plain, key(scoring));
+    ASSERT_TRUE(change.has_value()) << scoring;
+    EXPECT_EQ(change->key, setting);
+  }
+  const auto window = FirstChangedSetting(plain, key(R"("window_s": 0.05)"));
+  EXPECT_EQ(window->stored, "0.03");
+  EXPECT_EQ(window->given, "0.05");
+  EXPECT_FALSE(
+      FirstChangedSetting(plain, key(R"("window_s": 0.03, "thresholds": {"err_max": 0.2})")));
 }
 
 class StudyDatabaseRuns : public ::testing::Test {
@@ -318,8 +349,7 @@ TEST(StudyRunCli, ReportsEveryPhaseAndARerunThatFindsEveryPointStored) {
   const std::string run = "study run " + spec + " --db " + (dir / "s.db").string();
   const auto first = testing::RunShockmap(run + " --jobs 1");
   ASSERT_EQ(first.exit_code, 0) << first.output;
-  EXPECT_NE(first.output.find("progress: references 2/2 done"), std::string::npos)
-      << first.output;
+  EXPECT_NE(first.output.find("progress: references 2/2 done"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("unconverged 0, failed 0"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("progress: points 4/4 done"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("4 points in the study, 4 computed now (1 job"), std::string::npos)

@@ -13,6 +13,19 @@
 
 namespace shockmap {
 
+namespace {
+
+// True when some point of `points` at p's R_k and R_ftrunc with a finer time step fails.
+bool FinerStepFails(const ScoredPoint& p, const std::vector<ScoredPoint>& points,
+                    const CriteriaOptions& thresholds) {
+  return std::ranges::any_of(points, [&](const ScoredPoint& q) {
+    return q.r_k == p.r_k && q.r_ftrunc == p.r_ftrunc && q.DtRatio() < p.DtRatio() &&
+           !thresholds.Passes(q);
+  });
+}
+
+}  // namespace
+
 std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_points,
                                        const std::vector<ScoredPoint>& implicit_points,
                                        std::optional<double> r_k,
@@ -23,7 +36,8 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
       if (p.status != RunStatus::kOk || !p.scores["err"]) continue;
       CostTable& t = by_rk[p.r_k];
       t.r_k = p.r_k;
-      t.rows.push_back({p, scheme, thresholds.Passes(p), false});
+      const bool passes = thresholds.Passes(p);
+      t.rows.push_back({p, scheme, passes, passes && FinerStepFails(p, points, thresholds), false});
     }
   };
   add(explicit_points, "explicit-modal");
@@ -45,7 +59,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
     std::ranges::sort(t.rows, {}, [](const CostRow& r) { return r.point.cpu_s; });
     double best_err = INFINITY;
     for (auto& row : t.rows) {
-      if (row.passes && *row.point.scores["err"] < best_err) {
+      if (row.passes && !row.fragile && *row.point.scores["err"] < best_err) {
         row.pareto = true;
         best_err = *row.point.scores["err"];
       }
@@ -79,21 +93,30 @@ std::string CostSummary(const std::vector<CostTable>& tables) {
       s += fmt::format(" (the studied R_k nearest to --rk {:g})", *t.asked_r_k);
     }
     const auto passing = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.passes; });
-    s += fmt::format(": {} scored, {} within the thresholds (the front is built from those)",
+    const auto fragile = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.fragile; });
+    s += fmt::format(": {} scored, {} within the thresholds",
                      Counted(static_cast<long long>(t.rows.size()), "point"), passing);
+    s += fragile == 0 ? " (the front is built from those)"
+                      : fmt::format(
+                            ", {} of them only by error cancellation (passes \"fragile\": a "
+                            "finer dt at the same R_ftrunc fails; left off the front)",
+                            fragile);
     if (t.implicit_over_explicit) {
       s += fmt::format("; implicit / explicit CPU time at equal accuracy: {:.3g} (median of {})",
                        *t.implicit_over_explicit, t.ratio_pairs);
     }
-    s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>13} {:>8} {:>7} {:>6} {}\n", "scheme",
+    s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>13} {:>8} {:>7} {:>7} {}\n", "scheme",
                      "R_ftrunc", "dt/dt_sharp", "CPU (s)", "steps x modes", "Err", "SRf", "passes",
                      "Pareto");
     for (const auto& r : t.rows) {
-      s += fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>13.4g} {:>8.4f} {:>7} {:>6} {}\n",
+      s += fmt::format("  {:<15} {:>9.4g} {:>11.3g} {:>11.3e} {:>13.4g} {:>8.4f} {:>7} {:>7} {}\n",
                        r.scheme, r.point.r_ftrunc, r.point.DtRatio(), r.point.cpu_s,
                        static_cast<double>(r.point.steps) * r.point.n_modes, *r.point.scores["err"],
                        r.point.scores["srf"] ? fmt::format("{:.4f}", *r.point.scores["srf"]) : "-",
-                       r.passes ? "yes" : "no", r.pareto ? "*" : "");
+                       r.fragile  ? "fragile"
+                       : r.passes ? "yes"
+                                  : "no",
+                       r.pareto ? "*" : "");
     }
   }
   return s;
@@ -107,12 +130,12 @@ void DrawCost(const std::string& study, const CostTable& table, const std::files
   {
     AtomicFile data_out(data_file);
     std::ostream& data = data_out.Stream();
-    data << "# cpu_s err srf implicit pareto r_ftrunc dt_ratio\n";
+    data << "# cpu_s err srf implicit pareto r_ftrunc dt_ratio fragile\n";
     for (const auto& r : table.rows) {
-      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g}\n", r.point.cpu_s,
+      data << fmt::format("{:.6g} {:.6g} {:.6g} {} {} {:g} {:.3g} {}\n", r.point.cpu_s,
                           *r.point.scores["err"], r.point.scores["srf"].value_or(NAN),
                           r.scheme == "implicit-full" ? 1 : 0, r.pareto ? 1 : 0, r.point.r_ftrunc,
-                          r.point.DtRatio());
+                          r.point.DtRatio(), r.fragile ? 1 : 0);
     }
     data_out.Commit();
   }
@@ -132,12 +155,18 @@ set palette defined (1 '#fee08b', 2 '#66bd63', 3 '#1a9850', 4 '#006837')
 set cblabel 'log_{{10}} R_{{ftrunc}}'
 plot {data} using 1:($4 == 0 ? $2 : 1/0):(log10($6)) with points pt 7 ps 1.5 lc palette title 'explicit modal', \
      '' using 1:($4 == 1 ? $2 : 1/0) with points pt 9 ps 2 lc rgb '#000000' title 'implicit full model', \
-     '' using 1:($5 == 1 ? $2 : 1/0) with linespoints lw 2 pt 6 ps 2.2 lc rgb '#d73027' title 'Pareto front'
+     '' using 1:($5 == 1 ? $2 : 1/0) with linespoints lw 2 pt 6 ps 2.2 lc rgb '#d73027' title 'Pareto front'{fragile}
 )gp",
       fmt::arg("terminal", TerminalFor(file, 1000, 700)), fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("title", GnuplotQuoted(fmt::format("{}: what accuracy costs at R_k = {:.4g}", study,
                                                   table.r_k))),
-      fmt::arg("data", GnuplotFileName(data_file)));
+      fmt::arg("data", GnuplotFileName(data_file)),
+      fmt::arg("fragile",
+               std::ranges::any_of(table.rows, [](const CostRow& r) { return r.fragile; })
+                   ? ", \\\n     '' using 1:($8 == 1 ? $2 : 1/0) with points pt 4 ps 2.4 lw 2 lc "
+                     "rgb '#7b3294' title 'passes by error cancellation (a finer dt fails): off "
+                     "the front'"
+                   : ""));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 

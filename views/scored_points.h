@@ -12,6 +12,13 @@ namespace shockmap {
 // when the database holds no such study, or several and none was named.
 std::string ResolveStudyName(const std::string& database_path, const std::string& study);
 
+// `study` among the studies of the paper's problem (kind "canonical"), the one maps, criteria,
+// Fig. 4, cost and advice read: when given, it must be one (InputError naming its kind and the
+// commands for that kind otherwise); else the database's only one, or InputError listing them.
+// `command` names the asking command in the message.
+std::string ResolveCanonicalStudy(const std::string& database_path, const std::string& study,
+                                  const std::string& command);
+
 // Points of `study` run with `scheme` that have a score row (every status but pending/running).
 std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                                           const std::string& study, const std::string& scheme);

@@ -2,8 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "statistics/wilks.h"
 
 namespace shockmap {
 namespace {
@@ -22,21 +25,55 @@ TableCell Optional(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? TableCell(*v) : TableCell(std::monostate{});
 }
 
-std::string Shown(const QuantileInterval& q) {
-  return fmt::format("{:.5g} [{}, {}]", q.estimate,
-                     q.lower_bounded ? fmt::format("{:.5g}", q.lower) : "-inf",
-                     q.upper_bounded ? fmt::format("{:.5g}", q.upper) : "+inf");
+// The terminal's tables show every number to kShownDigits significant digits, an unbounded
+// side of an interval as "-" (SizingFootnotes says why).
+constexpr int kShownDigits = 4;
+
+std::string Significant(double v) { return fmt::format("{:.{}g}", v, kShownDigits); }
+
+TableCell Significant(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? TableCell(Significant(*v)) : TableCell(std::string("-"));
 }
 
-std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
+std::string Shown(const QuantileInterval& q) {
+  return fmt::format("{} [{}, {}]", Significant(q.estimate),
+                     q.lower_bounded ? Significant(q.lower) : "-",
+                     q.upper_bounded ? Significant(q.upper) : "-");
+}
+
+// The terminal's table: the hottest zone's sizing quantile with its interval, Wilks' limit, the
+// nominal run's force and the agreement with the refined setting; the rest is in ZoneTable.
+std::vector<std::string> CompactColumns(const EnsembleSizing& s) {
+  const std::string q = Percent(s.options.quantile), c = Percent(s.options.confidence);
+  return {"state",
+          "setting",
+          "members",
+          "hottest zone",
+          "P" + q + " (N) [" + c + " %]",
+          "Wilks P" + q + "/" + c + " %",
+          "nominal (N)",
+          "agrees"};
+}
+
+std::vector<TableCell> CompactRow(const GroupSizing& g, const ZoneSizing& z,
+                                  std::optional<bool> agrees) {
+  return {g.state,
+          g.setting_json + (g.refined ? " (refined)" : ""),
+          static_cast<std::int64_t>(z.members),
+          z.name,
+          Shown(z.sizing),
+          z.wilks ? Significant(z.wilks->value) : std::string("-"),
+          Significant(z.nominal_n),
+          std::string(!agrees   ? "-"
+                      : *agrees ? "yes"
+                                : "no")};
+}
+
+std::vector<std::string> Columns(const EnsembleSizing& s) {
   const std::string q = Percent(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone"};
   auto interval = [&](const std::string& name) {
-    if (compact) {
-      c.push_back(name + "_n [" + Percent(s.options.confidence) + " %]");
-    } else {
-      for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
-    }
+    for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
   };
   interval("p50");
   interval("p95");
@@ -50,16 +87,12 @@ std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
 }
 
 std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
-                           std::optional<bool> agrees, bool compact) {
+                           std::optional<bool> agrees) {
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
                                 static_cast<std::int64_t>(z.members), z.name};
   auto interval = [&](const QuantileInterval& q) {
-    if (compact) {
-      row.push_back(Shown(q));
-    } else {
-      row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
-                             Bound(q.upper, q.upper_bounded, kInfinity)});
-    }
+    row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
+                           Bound(q.upper, q.upper_bounded, kInfinity)});
   };
   interval(z.p50);
   interval(z.p95);
@@ -85,16 +118,17 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
 
 Table HottestZoneTable(const EnsembleSizing& s, bool compact) {
   Table t;
-  t.columns = Columns(s, compact);
+  t.columns = compact ? CompactColumns(s) : Columns(s);
   for (const GroupSizing& g : s.groups) {
-    t.rows.push_back(Row(s, g, g.zones[g.hottest], g.hottest_agrees, compact));
+    const ZoneSizing& z = g.zones[g.hottest];
+    t.rows.push_back(compact ? CompactRow(g, z, g.hottest_agrees) : Row(s, g, z, g.hottest_agrees));
   }
   return t;
 }
 
 Table ZoneTable(const EnsembleSizing& s) {
   Table t;
-  t.columns = Columns(s, false);
+  t.columns = Columns(s);
   t.columns.push_back("hottest");
   const auto refined_of = [&](const GroupSizing& g) -> const GroupSizing* {
     for (const GroupSizing& r : s.groups) {
@@ -107,7 +141,7 @@ Table ZoneTable(const EnsembleSizing& s) {
     for (const ZoneSizing& z : g.zones) {
       std::optional<bool> agrees;
       if (refined != nullptr) agrees = Agrees(z, refined->zones[z.zone], s.options.tolerance);
-      auto row = Row(s, g, z, agrees, false);
+      auto row = Row(s, g, z, agrees);
       row.emplace_back(std::in_place_type<std::int64_t>, z.zone == g.hottest ? 1 : 0);
       t.rows.push_back(std::move(row));
     }
@@ -121,10 +155,13 @@ std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
   const std::string q = "p" + Percent(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone"};
   if (compact) {
-    c.push_back("wear_" + q + "_m3 [" + Percent(s.options.confidence) + " %]");
-  } else {
-    for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
+    const std::string c_percent = Percent(s.options.confidence);
+    const std::string p = "P" + Percent(s.options.quantile);
+    c.insert(c.end(), {"wear " + p + " (m3) [" + c_percent + " %]",
+                       "Wilks " + p + "/" + c_percent + " %", "mean (m3)", "force " + p + " (N)"});
+    return c;
   }
+  for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
   c.insert(c.end(), {"wilks_order", "wilks_limit_m3", "mean_wear_volume_m3", "force_" + q + "_n"});
   return c;
 }
@@ -132,14 +169,20 @@ std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
 // Precondition: z.wear.
 std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool compact) {
   const QuantileInterval& w = z.wear->sizing;
+  if (compact) {
+    return {g.state,
+            g.setting_json + (g.refined ? " (refined)" : ""),
+            static_cast<std::int64_t>(z.members),
+            z.name,
+            Shown(w),
+            z.wear->wilks ? Significant(z.wear->wilks->value) : std::string("-"),
+            Significant(z.wear->mean_m3),
+            Significant(z.sizing.estimate)};
+  }
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
                                 static_cast<std::int64_t>(z.members), z.name};
-  if (compact) {
-    row.push_back(Shown(w));
-  } else {
-    row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
-                           Bound(w.upper, w.upper_bounded, kInfinity)});
-  }
+  row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
+                         Bound(w.upper, w.upper_bounded, kInfinity)});
   row.push_back(static_cast<std::int64_t>(z.wear->wilks_order));
   row.push_back(z.wear->wilks ? TableCell(z.wear->wilks->value) : TableCell(std::monostate{}));
   row.insert(row.end(), {z.wear->mean_m3, z.sizing.estimate});
@@ -171,6 +214,36 @@ Table MostWornZoneTable(const EnsembleSizing& s) {
     if (most != nullptr) t.rows.push_back(WearRow(g, *most, true));
   }
   return t;
+}
+
+std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
+  const double q = s.options.quantile, c = s.options.confidence;
+  std::vector<std::string> lines;
+  int fewest = std::numeric_limits<int>::max();
+  bool unbounded = false;
+  for (const GroupSizing& g : s.groups) {
+    for (const ZoneSizing& z : g.zones) {
+      if (wear && !z.wear) continue;
+      const QuantileInterval& interval = wear ? z.wear->sizing : z.sizing;
+      unbounded = unbounded || !interval.lower_bounded || !interval.upper_bounded;
+      if (!(wear ? z.wear->wilks.has_value() : z.wilks.has_value()))
+        fewest = std::min(fewest, z.members);
+    }
+  }
+  if (fewest != std::numeric_limits<int>::max()) {
+    lines.push_back(fmt::format(
+        "Wilks' limit: a one-sided P{} at {} % confidence needs at least {} members (the "
+        "largest of n members bounds P{} once 1 - {:g}^n >= {:g}); this study has {}: run more",
+        Percent(q), Percent(c), WilksMembersNeeded(q, c, 1), Percent(q), q, c, fewest));
+  }
+  if (unbounded) {
+    lines.push_back("-: a side of an interval the members are too few to bound, or no value");
+  }
+  lines.push_back(wear ? "every zone, with the interval's bounds and Wilks' order: --format "
+                         "csv|json or --out DIR"
+                       : "P50, P99, bounds, bootstrap, impact statistics and run times of every "
+                         "zone: --format csv|json or --out DIR");
+  return lines;
 }
 
 std::vector<std::string> AgreementLines(const EnsembleSizing& s) {
