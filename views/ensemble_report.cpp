@@ -15,10 +15,6 @@
 namespace shockmap {
 namespace {
 
-std::string Scrolling(const std::string& table) {
-  return "<div class=\"scroll\">" + table + "</div>\n";
-}
-
 // What the study is and what the tables count, from the stored study file.
 std::string About(const EnsembleSizing& s, const std::string& spec_json) {
   const auto spec = nlohmann::json::parse(spec_json, nullptr, false);
@@ -93,8 +89,8 @@ std::string Impacts(const EnsembleSizing& s) {
   }
   return "<p>Each zone's impact statistics (docs/physics.md §6), averaged over the members; "
          "the wear work rate where the scene bends in both planes.</p>\n" +
-         Scrolling(SortableTable(table, "impacts-table",
-                                 "Mean impact statistics per clearance state, setting and zone"));
+         SortableTable(table, "impacts-table",
+                       "Mean impact statistics per clearance state, setting and zone");
 }
 
 std::string Wear(const EnsembleSizing& s) {
@@ -110,8 +106,7 @@ std::string Wear(const EnsembleSizing& s) {
              "upper tolerance limit (the design value) and the mean, beside the P{0:g} of the "
              "largest force: the numbers of <code>shockmap sizing --wear</code>.</p>\n",
              100 * s.options.quantile, 100 * s.options.confidence) +
-         Scrolling(SortableTable(table, "wear-table",
-                                 "Wear volume per clearance state, setting and zone"));
+         SortableTable(table, "wear-table", "Wear volume per clearance state, setting and zone");
 }
 
 std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
@@ -132,11 +127,11 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
   return {
       {"sizing-hottest", "Sizing force of the hottest zone",
        About(sizing, stored.spec_json) +
-           Scrolling(SortableTable(HottestZoneTable(sizing, false), "sizing-hottest-table",
-                                   "The hottest zone per clearance state and setting"))},
+           SortableTable(HottestZoneTable(sizing, false), "sizing-hottest-table",
+                         "The hottest zone per clearance state and setting")},
       {"sizing-zones", "Sizing statistics per zone",
-       Scrolling(SortableTable(ZoneTable(sizing), "sizing-zones-table",
-                               "Every zone per clearance state and setting"))},
+       SortableTable(ZoneTable(sizing), "sizing-zones-table",
+                     "Every zone per clearance state and setting")},
       {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
       {"impacts", "Impact statistics", Impacts(sizing)},
       {"wear-sizing", "Wear sizing", Wear(sizing)},
