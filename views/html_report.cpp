@@ -157,7 +157,9 @@ std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext
       {"report written", UtcNow() + " (UTC)"},
       {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version, ctx.writer.compiler,
                                       ctx.writer.build_type)},
-      {"points computed by", computed.empty() ? "no run yet" : computed},
+      {ctx.kind == ToString(StudyFileKind::kSceneEnsemble) ? "members computed by"
+                                                           : "points computed by",
+       computed.empty() ? "no run yet" : computed},
       {"database", ctx.database_path}};
   // An ensemble's members are not scored: the scores' thresholds judge nothing there.
   if (ctx.kind != ToString(StudyFileKind::kSceneEnsemble)) {
