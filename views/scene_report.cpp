@@ -117,7 +117,7 @@ Table PointsWithParameters(const SceneStudySpec& spec, const Table& results,
       }
       cells.push_back(value);
     }
-    cells.push_back(OutcomeOf(results, row, thresholds));
+    cells.emplace_back(std::in_place_type<std::string>, OutcomeOf(results, row, thresholds));
     for (const std::string& name : shown) {
       const std::size_t c = ColumnOf(results, name);
       cells.push_back(c < row.size() ? row[c] : TableCell());
