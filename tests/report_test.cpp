@@ -54,6 +54,24 @@ std::size_t Count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// The number of stored points with `status`, as `query --format csv` prints it.
+std::string StatusCount(const Place& at, const std::string& status) {
+  const auto q =
+      RunShockmap("query --db " + at.db +
+                  " --format csv \"SELECT count(*) FROM results WHERE status = '" + status + "'\"");
+  EXPECT_EQ(q.exit_code, 0) << q.output;
+  const auto line = q.output.find('\n');
+  return q.output.substr(line + 1, q.output.find('\n', line + 1) - line - 1);
+}
+
+// The body rows of the table `id` in `dom`.
+std::size_t TableRowCount(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  if (start == std::string::npos) return 0;
+  const auto body = dom.find("<tbody>", start);
+  return Count(dom.substr(body, dom.find("</tbody>", body) - body), "<tr");
+}
+
 // The stored value of one column of a point, as `query --format csv` prints it.
 std::string Stored(const Place& at, const std::string& column, const std::string& point_id) {
   const auto q = RunShockmap("query --db " + at.db + " --format csv \"SELECT " + column +
@@ -174,6 +192,85 @@ void CheckPointPage(const Place& at) {
   ASSERT_TRUE(std::regex_search(run.output, err, std::regex("\"err\": ([0-9.e+-]+)")))
       << run.output;
   EXPECT_NEAR(std::stod(err[1]), std::stod(Stored(at, "err", id)), 1e-9) << command[1];
+  EXPECT_EQ(Count(page, "shockmap compare "), 1u) << "the command is printed twice";
+
+  // A point without a drawn Fig. 3 says why, and prints its command once.
+  const auto points = at.dir / "report" / "points";
+  std::string absent;
+  for (const auto& entry : std::filesystem::directory_iterator(points)) {
+    if (entry.path().extension() == ".html" &&
+        !std::filesystem::exists(points / entry.path().stem() / "fig3.png")) {
+      absent = ReadBytes(entry.path().string());
+      break;
+    }
+  }
+  ASSERT_FALSE(absent.empty()) << "every point has its Fig. 3";
+  EXPECT_NE(absent.find("No Fig. 3 for this point: the database stores each run's scores and "
+                        "shocks, not its histories"),
+            std::string::npos);
+  EXPECT_EQ(Count(absent, "shockmap compare "), 1u) << "the command is printed twice";
+}
+
+// The verdict opens the report and its counts are the database's.
+void CheckVerdict(const Place& at) {
+  const std::string dom = Dom(at, at.dir / "report" / "index.html");
+  const auto verdict = dom.find("id=\"verdict-text\"");
+  ASSERT_NE(verdict, std::string::npos);
+  EXPECT_LT(verdict, dom.find("id=\"outcomes\"")) << "the verdict is not at the top";
+  const std::string text = dom.substr(verdict, dom.find("</p>", verdict) - verdict);
+  EXPECT_NE(text.find("judged by Err &lt;= 0.1, SRf &gt;= 0.8"), std::string::npos) << text;
+  EXPECT_NE(text.find("Validity rule: R_ftrunc &gt;= "), std::string::npos) << text;
+  EXPECT_NE(text.find("Time-step margin: runs pass up to dt = "), std::string::npos) << text;
+  auto count = [&](const std::string& status) { return StatusCount(at, status); };
+  EXPECT_NE(text.find("Of 308 points, " + count("ok") + " ran to the end"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("; " + count("diverged") + " diverged ("), std::string::npos) << text;
+  // The criteria are a table, one row per studied R_k.
+  EXPECT_EQ(TableRowCount(dom, "criteria-table"), 11u);
+}
+
+// Typing into the points table's filter hides the other rows; its CSV link then holds the header
+// and the rows shown, reals at full precision.
+void CheckFilterAndCsv(const Place& at) {
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  const std::string typist = R"(<script>
+var box = document.querySelector('input.table-filter[data-table="points-table"]');
+box.value = 'diverged';
+box.dispatchEvent(new Event('input'));
+var rows = Array.from(document.getElementById('points-table').tBodies[0].rows);
+document.body.dataset.shown = rows.filter(function (r) { return !r.hidden; }).length;
+document.addEventListener('click', function (e) { e.preventDefault(); });
+var link = document.querySelector('a.table-csv[data-table="points-table"]');
+link.click();
+var out = document.createElement('pre');
+out.id = 'csv-out';
+out.textContent = decodeURIComponent(link.href.slice(link.href.indexOf(',') + 1));
+document.body.appendChild(out);
+</script></body>)";
+  html.replace(html.rfind("</body>"), 7, typist);
+  const auto copy = at.dir / "report" / "filter_check.html";
+  WriteText(copy.string(), html);
+  const std::string dom = Dom(at, copy);
+  const std::string diverged = StatusCount(at, "diverged");
+  EXPECT_NE(dom.find("data-shown=\"" + diverged + "\""), std::string::npos) << diverged;
+  const auto start = dom.find("<pre id=\"csv-out\">");
+  ASSERT_NE(start, std::string::npos);
+  std::stringstream csv(dom.substr(start + 18, dom.find("</pre>", start) - start - 18));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 1 + std::stoul(diverged));
+  EXPECT_EQ(lines[0].rfind("point_id,r_k,r_ftrunc,scheme,", 0), 0u) << lines[0];
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_NE(lines[i].find(",diverged,"), std::string::npos) << lines[i];
+    // Each row's R_ftrunc at full precision, as stored.
+    std::stringstream fields(lines[i]);
+    std::string id, r_k, r_ftrunc;
+    std::getline(fields, id, ',');
+    std::getline(fields, r_k, ',');
+    std::getline(fields, r_ftrunc, ',');
+    EXPECT_EQ(std::stod(r_ftrunc), std::stod(Stored(at, "r_ftrunc", id))) << lines[i];
+    if (i >= 3) break;  // A few rows against the database.
+  }
 }
 
 class QuickStudyViews : public ::testing::Test {
@@ -200,6 +297,8 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   CheckIndex(at_);
   CheckMapCells(at_);
   CheckSortOnClick(at_);
+  CheckVerdict(at_);
+  CheckFilterAndCsv(at_);
   CheckPointPage(at_);
   // The maps' scripts run from their own folder.
   std::filesystem::remove(at_.dir / "report" / "map_err.png");
@@ -245,6 +344,15 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   const std::string rows =
       dom.substr(points_table, dom.find("</table>", points_table) - points_table);
   EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
+  // Passes and fails counted apart from the run status, each point's outcome beside its status.
+  std::smatch counts;
+  ASSERT_TRUE(std::regex_search(
+      dom, counts,
+      std::regex("(\\d+) of 2 points pass Err &lt;= 0.1, SRf &gt;= 0.8; (\\d+) ran to the end "
+                 "and fail them.*; (\\d+) did not run to the end")));
+  EXPECT_EQ(std::stoi(counts[1]) + std::stoi(counts[2]) + std::stoi(counts[3]), 2);
+  EXPECT_EQ(std::stoi(counts[1]), static_cast<int>(Count(rows, "<td>passes</td>")));
+  EXPECT_EQ(std::stoi(counts[2]), static_cast<int>(Count(rows, "<td>fails thresholds</td>")));
   EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
   std::filesystem::remove_all(at.dir);
@@ -323,7 +431,19 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
   std::map<std::pair<std::string, std::string>, nlohmann::json> hottest;  // (state, setting)
   for (const auto& row : nlohmann::json::parse(sizing.output)) {
-    if (row["hottest"] == 1) hottest[{row["state"], row["setting"]}] = row;
+    if (row["hottest"] != 1) continue;
+    // The report names a setting by its values: {"solver.r_ftrunc":1000} (refined) is
+    // solver.r_ftrunc = 1000 (refined).
+    std::string setting = row["setting"];
+    const std::string refined = " (refined)";
+    const bool is_refined = setting.ends_with(refined);
+    if (is_refined) setting.resize(setting.size() - refined.size());
+    std::string name;
+    const nlohmann::json values = nlohmann::json::parse(setting);
+    for (const auto& [path, value] : values.items()) {
+      name += (name.empty() ? "" : ", ") + path + " = " + value.dump();
+    }
+    hottest[{row["state"], name + (is_refined ? refined : "")}] = row;
   }
   ASSERT_EQ(hottest.size(), 4u);  // Two states by two settings.
 

@@ -16,6 +16,7 @@
 #include "views/html_text.h"
 #include "views/html_validity_map.h"
 #include "views/scored_points.h"
+#include "views/study_verdict.h"
 #include "views/validity_map.h"
 
 namespace shockmap {
@@ -78,6 +79,24 @@ std::string CostSection(const ReportContext& ctx, const std::vector<ScoredPoint>
          Preformatted(CostSummary(tables));
 }
 
+// The criteria per R_k as a table, then the fit and the paper's rules, each line its label in
+// bold.
+std::string CriteriaHtml(const ValidityCriteria& criteria, const std::vector<ScoredPoint>& points) {
+  std::string rules;
+  for (const std::string& line : CriteriaRuleLines(criteria, points)) {
+    const std::size_t gap = line.find("  ");
+    const std::size_t text = line.find_first_not_of(' ', gap);
+    rules += gap == std::string::npos || text == std::string::npos
+                 ? "<li>" + HtmlEscaped(line) + "</li>\n"
+                 : fmt::format("<li><strong>{}</strong>: {}</li>\n",
+                               HtmlEscaped(line.substr(0, gap)), HtmlEscaped(line.substr(text)));
+  }
+  return SortableTable(CriteriaTable(criteria), "criteria-table",
+                       "Per studied R_k (explicit-modal; " +
+                           ThresholdsText(criteria.options, false) + "); an empty cell: none") +
+         "<ul class=\"rules\">\n" + rules + "</ul>\n";
+}
+
 // The points table (a chosen set of the results view's columns), each row linking its page.
 std::string PointsTable(const Table& results) {
   std::vector<std::string> shown_columns = {"point_id", "r_k",       "r_ftrunc",  "scheme",
@@ -101,10 +120,7 @@ std::string PointsTable(const Table& results) {
     links.push_back(
         PointPagePath(std::get<std::int64_t>(row[PointIdColumn(results)])).generic_string());
   }
-  return "<div class=\"scroll\">" +
-         SortableTable(shown, "points-table", "Every stored point (click a header to sort)",
-                       links) +
-         "</div>\n";
+  return SortableTable(shown, "points-table", "Every stored point (click a header to sort)", links);
 }
 
 // Writes points/point_ID.html for every row of `results`.
@@ -141,7 +157,9 @@ std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext
       {"report written", UtcNow() + " (UTC)"},
       {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version, ctx.writer.compiler,
                                       ctx.writer.build_type)},
-      {"points computed by", computed.empty() ? "no run yet" : computed},
+      {ctx.kind == ToString(StudyFileKind::kSceneEnsemble) ? "members computed by"
+                                                           : "points computed by",
+       computed.empty() ? "no run yet" : computed},
       {"database", ctx.database_path}};
   // An ensemble's members are not scored: the scores' thresholds judge nothing there.
   if (ctx.kind != ToString(StudyFileKind::kSceneEnsemble)) {
@@ -191,10 +209,13 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
   const auto fig4_png = ctx.dir / "fig4.png";
   DrawFig4(ctx.study, explicit_points, implicit_points, ctx.thresholds, fig4_png);
   return {
+      {"verdict", "Verdict",
+       "<p class=\"verdict\" id=\"verdict-text\">" +
+           HtmlEscaped(StudyVerdict(ctx.study, criteria, explicit_points, results)) + "</p>\n"},
       {"outcomes", "Outcomes",
        SortableTable(tables.outcomes, "outcomes-table", "Points by scheme and status")},
       {"criteria", "Validity criteria and the paper's rules",
-       Preformatted(CriteriaSummary(ctx.study, criteria, explicit_points))},
+       CriteriaHtml(criteria, explicit_points)},
       {"maps", "Validity maps", InteractiveMaps(explicit_points, criteria)},
       {"map-figures", "Validity maps as figures", MapFigures(ctx, explicit_points, criteria)},
       {"fig4", "The paper's Fig. 4",

@@ -56,12 +56,31 @@ std::string StoredValues(const PointPageInput& in) {
   return SortableTable(values, "stored-table", "Its row of the results view");
 }
 
-std::string FigureSection(const PointPageInput& in, const std::string& command) {
-  if (!in.figure) {
-    return "<p>The report draws Fig. 3 for the points around the derived boundary only. To draw "
-           "this one, run (from the report's folder):</p><pre>" +
-           HtmlEscaped(command) + "</pre>\n";
+// Why a point has no Fig. 3 and how to get it; once the command under "Reproduce it" has drawn
+// point_ID/fig3.png beside the page, the page's script shows it here.
+std::string AbsentFigure(const PointPageInput& in) {
+  if (!in.point || in.spec == nullptr) {
+    return "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's "
+           "scores and shocks, not its histories, and the point is not in the stored study file, "
+           "so no command can recompute it.</p>\n";
   }
+  const std::string png = fmt::format("point_{}/fig3.png", in.point_id);
+  return fmt::format(
+      "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's scores "
+      "and shocks, not its histories (only its reference's), and the report recomputes runs to "
+      "draw Fig. 3 only for the points around the derived boundary. The command under "
+      "<a href=\"#reproduce\">Reproduce it</a> recomputes this one and writes <code>{0}</code>; "
+      "this page shows it once it is there.</p>\n<figure id=\"fig3-drawn\" hidden></figure>\n"
+      "<script>(function () {{ var image = new Image(); image.alt = 'Fig. 3 of point {1}, "
+      "recomputed by the command below'; image.onload = function () {{ var f = "
+      "document.getElementById('fig3-drawn'); f.appendChild(image); f.hidden = false; "
+      "document.getElementById('fig3-absent').hidden = true; }}; image.src = '{0}'; }})();"
+      "</script>\n",
+      HtmlEscaped(png), in.point_id);
+}
+
+std::string FigureSection(const PointPageInput& in) {
+  if (!in.figure) return AbsentFigure(in);
   std::string scores;
   for (const ScoreDefinition& score : Scores()) {
     const std::optional<double> v = in.figure->scores[score.name];
@@ -122,7 +141,7 @@ std::string PointPage(const PointPageInput& in) {
                              &unmatched);
     for (const std::string& u : unmatched) caveats += "<li>" + HtmlEscaped(u) + "</li>";
   }
-  sections.push_back({"fig3", "Fig. 3: the run against its reference", FigureSection(in, command)});
+  sections.push_back({"fig3", "Fig. 3: the run against its reference", FigureSection(in)});
   sections.push_back(
       {"reproduce", "Reproduce it",
        "<pre>" + HtmlEscaped(command) + "</pre>\n" +
@@ -130,8 +149,7 @@ std::string PointPage(const PointPageInput& in) {
                             : "<p>compare has no flag for these settings of the study; its "
                               "result can differ from the stored one by them:</p><ul>" +
                                   caveats + "</ul>\n")});
-  sections.push_back(
-      {"values", "Stored values", "<div class=\"scroll\">" + StoredValues(in) + "</div>"});
+  sections.push_back({"values", "Stored values", StoredValues(in)});
   ReportHeader header{fmt::format("{}: point {}", in.study, in.point_id),
                       {{"study", in.study}, {"point", std::to_string(in.point_id)}}};
   std::string page = ReportPage(header, sections);

@@ -1,7 +1,9 @@
 #pragma once
 // The report's page of one stored point of a canonical study (points/point_ID.html): its stored
 // values, the `shockmap compare` command that recomputes it, and its Fig. 3 (tip displacement
-// and contact force against the reference) when the report drew it.
+// and contact force against the reference) when the report drew it; else a sentence saying why
+// it is absent (runs' histories are not stored) and, once the command has drawn
+// point_ID/fig3.png beside the page, that image.
 
 #include <cstdint>
 #include <filesystem>
