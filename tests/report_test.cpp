@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -72,6 +73,38 @@ std::size_t TableRowCount(const std::string& dom, const std::string& id) {
   return Count(dom.substr(body, dom.find("</tbody>", body) - body), "<tr");
 }
 
+// The values of the data rows of block `index` (blocks separated by two blank lines) of a
+// gnuplot data file, comments skipped.
+std::vector<std::vector<double>> DataBlock(const std::string& file, int index) {
+  std::vector<std::vector<double>> rows;
+  std::stringstream in(ReadBytes(file));
+  int block = 0, blank = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) {
+      if (++blank == 2) ++block;
+      continue;
+    }
+    blank = 0;
+    if (line[0] == '#' || block != index) continue;
+    std::stringstream fields(line);
+    std::vector<double>& row = rows.emplace_back();
+    for (std::string f; fields >> f;) row.push_back(f == "NaN" ? NAN : std::stod(f));
+  }
+  return rows;
+}
+
+// The plot clauses of a gnuplot script whose text contains `what`.
+std::vector<std::string> ClausesWith(const std::string& script, const std::string& what) {
+  const std::string plot = script.substr(script.rfind("\nplot "));
+  const std::regex clause("(?:plot |, \\\\\n +)([^\n]*?)(?=, \\\\\n|\n|$)");
+  std::vector<std::string> found;
+  for (auto it = std::sregex_iterator(plot.begin(), plot.end(), clause);
+       it != std::sregex_iterator(); ++it) {
+    if ((*it)[1].str().find(what) != std::string::npos) found.push_back((*it)[1]);
+  }
+  return found;
+}
+
 // The stored value of one column of a point, as `query --format csv` prints it.
 std::string Stored(const Place& at, const std::string& column, const std::string& point_id) {
   const auto q = RunShockmap("query --db " + at.db + " --format csv \"SELECT " + column +
@@ -103,6 +136,12 @@ void CheckIndex(const Place& at) {
   }
   // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second.
   EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u);
+  // Every diverged cell carries a cross, every unstable one a square; the dt map's bound names
+  // omega itself.
+  EXPECT_GT(Count(html, "data-status=\"diverged\""), 0u);
+  EXPECT_EQ(Count(html, "<path class=\"marker\""), Count(html, "data-status=\"diverged\""));
+  EXPECT_EQ(Count(html, "<rect class=\"marker\""), Count(html, "data-status=\"unstable\""));
+  EXPECT_NE(html.find("dt = 2 / \u03c9<sub>max</sub>"), std::string::npos);
 }
 
 void CheckMapCells(const Place& at) {
@@ -500,6 +539,20 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
         << id;
   }
   EXPECT_EQ(Count(dom, "against the refined setting:"), 2u);  // One line per state.
+  // The pictures' legends name only what is drawn: a band where some interval is bounded on
+  // both sides, an upward arrow where some upper side is open; states are never joined.
+  for (const std::string state : {"new", "worn"}) {
+    const auto dir = at.dir / "report" / "sizing";
+    const auto rows = DataBlock((dir / ("convergence_" + state + ".dat")).string(), 0);
+    const std::string script = ReadBytes((dir / ("convergence_" + state + ".gp")).string());
+    const bool closed = std::ranges::any_of(rows, [](auto& r) { return r[4] > 0 && r[5] > 0; });
+    const bool open_up = std::ranges::any_of(rows, [](auto& r) { return r[5] == 0; });
+    EXPECT_EQ(script.find("both sides bounded") != std::string::npos, closed) << script;
+    EXPECT_EQ(script.find("open upward") != std::string::npos, open_up) << script;
+    EXPECT_EQ(script.find("set key below"), script.find("set key")) << script;
+  }
+  const std::string states = ReadBytes((at.dir / "report" / "sizing" / "states.gp").string());
+  EXPECT_EQ(states.find("lines"), std::string::npos) << states;
   std::filesystem::remove_all(at.dir);
 }
 
@@ -580,11 +633,102 @@ TEST(CostFront, IsBuiltFromPointsWhoseFinerTimeStepsPassToo) {
   EXPECT_NE(CostSummary(tables).find("fragile"), std::string::npos);
 }
 
+// The cells of a dt map: each reaches from the next finer studied ratio up to its own, and the
+// cell above the sharp bound starts at the bound.
+TEST(MapGrid, DtCellsEndAtTheirStepAndNeverStraddleTheSharpBound) {
+  std::vector<ScoredPoint> points;
+  for (double ratio : {0.1, 0.5, 0.9, 1.5}) {
+    ScoredPoint& p = points.emplace_back();
+    p.r_k = 100.0, p.r_ftrunc = 30.0, p.dt_sharp_s = 1e-4, p.dt_s = ratio * 1e-4;
+  }
+  const MapGrid grid = BuildMapGrid(points, MapAxis::kDt);
+  ASSERT_EQ(grid.cells.size(), 4u);
+  const std::vector<std::pair<double, double>> expected = {
+      {0.1 / std::sqrt(5.0), 0.1}, {0.1, 0.5}, {0.5, 0.9}, {1.0, 1.5}};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(grid.cells[i].y_low, expected[i].first, 1e-9) << grid.cells[i].y;
+    EXPECT_NEAR(grid.cells[i].y_high, expected[i].second, 1e-9) << grid.cells[i].y;
+  }
+}
+
+// The dt map of quick, where runs at 1.5 dt_sharp diverge: diverged cells are white under a
+// cross (never a colour of the Err palette), no cell straddles the bound, the bound names omega.
+TEST_F(QuickStudyViews, DtMapMarksDivergedRunsAndKeepsCellsOnTheirSideOfTheBound) {
+  const auto image = at_.dir / "map_err_dt.png";
+  const auto map =
+      RunShockmap("map --db " + at_.db + " --metric err --y dt --out " + image.string());
+  ASSERT_EQ(map.exit_code, 0) << map.output;
+  const std::string script = ReadBytes((at_.dir / "map_err_dt.gp").string());
+  const auto crosses = ClausesWith(script, "pt 2 ");
+  ASSERT_EQ(crosses.size(), 1u) << script;
+  EXPECT_NE(crosses[0].find("title 'diverged (no score)'"), std::string::npos) << crosses[0];
+  std::smatch palette;
+  ASSERT_TRUE(std::regex_search(script, palette, std::regex("set palette defined \\(([^\n]*)\\)")));
+  for (const std::string& fill : ClausesWith(script, "fc rgb")) {
+    const std::string colour = fill.substr(fill.find("fc rgb '") + 8, 7);
+    EXPECT_EQ(palette[1].str().find(colour), std::string::npos)
+        << "a status cell is filled with a colour of the score palette: " << fill;
+  }
+  EXPECT_NE(script.find("2/\u03c9_{max}"), std::string::npos);
+  EXPECT_EQ(script.find("Symbol"), std::string::npos);
+  int above = 0, below = 0;
+  for (const auto& cell : DataBlock((at_.dir / "map_err_dt.dat").string(), 0)) {
+    ASSERT_EQ(cell.size(), 9u);
+    EXPECT_DOUBLE_EQ(cell[5], cell[1]) << "a cell reaches above its own dt " << cell[1];
+    if (cell[1] > 1.0) {
+      EXPECT_GE(cell[4], 1.0) << "a cell above the bound reaches below it";
+      ++above;
+    } else {
+      ++below;
+    }
+  }
+  EXPECT_EQ(above, 11);
+  EXPECT_EQ(below, 33);
+}
+
+// The cost plot's Pareto line is its own data block, joined without breaks, in the order of
+// CPU time; its legend names the schemes present and every dt / dt_sharp shown.
+TEST_F(QuickStudyViews, CostPlotJoinsTheWholeFrontAndNamesOnlyWhatItDraws) {
+  const auto cost =
+      RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());
+  ASSERT_EQ(cost.exit_code, 0) << cost.output;
+  const std::string script = ReadBytes((at_.dir / "cost.gp").string());
+  const auto front = ClausesWith(script, "Pareto");
+  ASSERT_EQ(front.size(), 1u) << script;
+  EXPECT_NE(front[0].find("index 1"), std::string::npos) << front[0];
+  EXPECT_EQ(front[0].find("1/0"), std::string::npos) << front[0];
+  const auto front_rows = DataBlock((at_.dir / "cost.dat").string(), 1);
+  EXPECT_EQ(front_rows.size(), Count(cost.output, " *\n")) << cost.output;
+  EXPECT_GE(front_rows.size(), 4u);
+  for (std::size_t i = 1; i < front_rows.size(); ++i) {
+    EXPECT_GE(front_rows[i][0], front_rows[i - 1][0]);
+    EXPECT_LT(front_rows[i][1], front_rows[i - 1][1]);
+  }
+  EXPECT_EQ(script.find("implicit"), std::string::npos) << "quick has no implicit point";
+  std::set<std::string> ratios;
+  for (const auto& row : DataBlock((at_.dir / "cost.dat").string(), 0)) {
+    ratios.insert(fmt::format("{:.3g}", row[6]));
+  }
+  EXPECT_GE(ratios.size(), 2u);
+  for (const std::string& ratio : ratios) {
+    EXPECT_EQ(ClausesWith(script, "dt = " + ratio + " dt_{sharp}").size(), 1u) << ratio;
+  }
+}
+
 TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
   const auto fig4 =
       RunShockmap("plot fig4 --db " + at_.db + " --out " + (at_.dir / "fig4.svg").string());
   ASSERT_EQ(fig4.exit_code, 0) << fig4.output;
   EXPECT_GT(std::filesystem::file_size(at_.dir / "fig4.svg"), 1000u);
+  // The SRf panel spans its data (0.81 to 1 on quick) and the threshold, not 0 to 1.
+  const std::string fig4_script = ReadBytes((at_.dir / "fig4.gp").string());
+  const std::regex srf_range("set ylabel 'SRf[^\n]*\nset yrange \\[([^:]+):([^\\]]+)\\]");
+  std::smatch srf;
+  ASSERT_TRUE(std::regex_search(fig4_script, srf, srf_range)) << fig4_script;
+  EXPECT_GT(std::stod(srf[1]), 0.7);
+  EXPECT_LT(std::stod(srf[1]), 0.8);  // Below the threshold line.
+  EXPECT_GT(std::stod(srf[2]), 1.0);
+  EXPECT_LT(std::stod(srf[2]), 1.05);
 
   const auto cost =
       RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());

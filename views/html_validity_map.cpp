@@ -39,6 +39,46 @@ std::string Scored(const std::optional<double>& v) {
   return v ? fmt::format("{:.4f}", *v) : "not scored";
 }
 
+// The category's marker centred on the cell (x, y, w, h in SVG units), drawn in black and
+// transparent to the pointer so that hovering reaches the cell; "" without a marker.
+std::string MarkerShape(CellMarker marker, double x, double y, double w, double h) {
+  const double cx = x + w / 2, cy = y + h / 2, r = std::min(9.0, 0.3 * std::min(w, h));
+  const char* style = "fill=\"none\" stroke=\"#000\" stroke-width=\"2\" pointer-events=\"none\"";
+  switch (marker) {
+    case CellMarker::kCross:
+      return fmt::format(
+          "<path class=\"marker\" d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}M{:.1f} {:.1f}L{:.1f} "
+          "{:.1f}\" {}/>",
+          cx - r, cy - r, cx + r, cy + r, cx - r, cy + r, cx + r, cy - r, style);
+    case CellMarker::kSquare:
+      return fmt::format(
+          "<rect class=\"marker\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" "
+          "{}/>",
+          cx - r, cy - r, 2 * r, 2 * r, style);
+    case CellMarker::kCircle:
+      return fmt::format("<circle class=\"marker\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" {}/>",
+                         cx, cy, r, style);
+    case CellMarker::kNone:
+      break;
+  }
+  return "";
+}
+
+// The legend's sample of a category: its marker as a character, or its fill.
+std::string LegendSample(const OutcomeCategory& category) {
+  switch (category.marker) {
+    case CellMarker::kCross:
+      return "<b class=\"marker\">&#215;</b>";
+    case CellMarker::kSquare:
+      return "<b class=\"marker\">&#9633;</b>";
+    case CellMarker::kCircle:
+      return "<b class=\"marker\">&#9675;</b>";
+    case CellMarker::kNone:
+      break;
+  }
+  return fmt::format("<i style=\"background:{}\"></i>", category.colour);
+}
+
 std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th) {
   const ScoredPoint& p = *c.point;
   const OutcomeCategory& category = OutcomeCategories()[OutcomeCategoryOf(p, th)];
@@ -51,17 +91,18 @@ std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th
   const std::string tip = fmt::format(
       "R_k = {:.6g}, R_ftrunc = {:.6g}, dt = {:.4g} s ({:.3g} dt_sharp), {}status {} ({})", p.r_k,
       p.r_ftrunc, p.dt_s, p.DtRatio(), scores, status, category.label);
+  const double x = f.X(c.x_low), y = f.Y(c.y_high), w = f.X(c.x_high) - x, h = f.Y(c.y_low) - y;
   return fmt::format(
       "<a href=\"{href}\"><rect class=\"cell\" x=\"{x:.2f}\" y=\"{y:.2f}\" width=\"{w:.2f}\" "
       "height=\"{h:.2f}\" fill=\"{fill}\" data-point-id=\"{id}\" data-rk=\"{rk:.6g}\" "
       "data-rftrunc=\"{rft:.6g}\" data-dt=\"{dt:.4g}\" data-dt-ratio=\"{ratio:.3g}\" "
       "{scores}data-status=\"{status}\" data-outcome=\"{outcome}\">"
-      "<title>{tip}</title></rect></a>\n",
-      fmt::arg("href", PointPagePath(p.point_id).generic_string()), fmt::arg("x", f.X(c.x_low)),
-      fmt::arg("y", f.Y(c.y_high)), fmt::arg("w", f.X(c.x_high) - f.X(c.x_low)),
-      fmt::arg("h", f.Y(c.y_low) - f.Y(c.y_high)), fmt::arg("fill", category.colour),
-      fmt::arg("id", p.point_id), fmt::arg("rk", p.r_k), fmt::arg("rft", p.r_ftrunc),
-      fmt::arg("dt", p.dt_s), fmt::arg("ratio", p.DtRatio()), fmt::arg("scores", data),
+      "<title>{tip}</title></rect>{marker}</a>\n",
+      fmt::arg("href", PointPagePath(p.point_id).generic_string()), fmt::arg("x", x),
+      fmt::arg("y", y), fmt::arg("w", w), fmt::arg("h", h), fmt::arg("fill", category.colour),
+      fmt::arg("marker", MarkerShape(category.marker, x, y, w, h)), fmt::arg("id", p.point_id),
+      fmt::arg("rk", p.r_k), fmt::arg("rft", p.r_ftrunc), fmt::arg("dt", p.dt_s),
+      fmt::arg("ratio", p.DtRatio()), fmt::arg("scores", data),
       fmt::arg("status", HtmlEscaped(status)), fmt::arg("outcome", HtmlEscaped(category.label)),
       fmt::arg("tip", HtmlEscaped(tip)));
 }
@@ -118,8 +159,8 @@ std::string Legend(const MapGrid& grid, const ValidityCriteria& criteria, MapAxi
   std::string items;
   for (std::size_t i = 0; i < present.size(); ++i) {
     if (!present[i]) continue;
-    items += fmt::format("<span><i style=\"background:{}\"></i>{}</span>",
-                         OutcomeCategories()[i].colour, HtmlEscaped(OutcomeCategories()[i].label));
+    items += fmt::format("<span>{}{}</span>", LegendSample(OutcomeCategories()[i]),
+                         HtmlEscaped(OutcomeCategories()[i].label));
   }
   if (y == MapAxis::kRFtrunc && criteria.fit) {
     items += fmt::format(
@@ -128,7 +169,7 @@ std::string Legend(const MapGrid& grid, const ValidityCriteria& criteria, MapAxi
         criteria.fit->c_envelope, criteria.fit->p, criteria.fit->knee_r_k);
   }
   if (y == MapAxis::kDt) {
-    items += "<span>black line: the sharp stability bound dt = 2 / omega_max</span>";
+    items += "<span>black line: the sharp stability bound dt = 2 / ω<sub>max</sub></span>";
   }
   return "<p class=\"legend\">" + items + "</p>\n";
 }

@@ -37,6 +37,7 @@ svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
 .legend span { display: inline-block; margin-right: 1.2em; }
 .legend i { display: inline-block; width: 1em; height: 1em; vertical-align: middle; margin-right: 0.3em; border: 1px solid #999; }
+.legend b.marker { display: inline-block; width: 1em; text-align: center; margin-right: 0.3em; }
 #cell-info { position: fixed; display: none; background: #fff; border: 1px solid #333; padding: 0.4em 0.6em; font-size: 0.85em; pointer-events: none; box-shadow: 2px 2px 6px #aaa; }
 @media print {
   body { max-width: none; margin: 0; font-size: 10pt; }
