@@ -43,29 +43,28 @@ std::string Shown(const QuantileInterval& q) {
 }
 
 // The terminal's table: per family, its hottest zone's sizing quantile with its interval, the
-// design value (Wilks' limit) and the members it needs, the nominal run's force and the
-// agreement with the refined setting; the rest is in ZoneTable.
+// design value (Wilks' limit, or the members it needs) and the agreement with the refined
+// setting ("refined" on the refined setting's rows); the rest is in ZoneTable.
 std::vector<std::string> CompactColumns(const EnsembleSizing& s) {
   const std::string q = Percent(s.options.quantile), c = Percent(s.options.confidence);
-  return {"state",  "setting", "members", "family", "hottest zone", "P" + q + " (N) [" + c + " %]",
-          "design", "needs",   "nominal", "agrees"};
+  return {"state",      "setting",      "members",
+          "family",     "hottest zone", "P" + q + " (N) [" + c + " %]",
+          "design (N)", "agrees"};
 }
 
 std::string Agreement(std::optional<bool> agrees) { return !agrees ? "-" : *agrees ? "yes" : "no"; }
 
 std::vector<TableCell> CompactRow(const EnsembleSizing& s, const GroupSizing& g,
                                   const ZoneSizing& z, std::optional<bool> agrees) {
-  return {
-      g.state,
-      g.setting_json + (g.refined ? " (refined)" : ""),
-      static_cast<std::int64_t>(z.members),
-      FamilyName(z.family),
-      z.name,
-      Shown(z.sizing),
-      z.wilks ? Significant(z.wilks->value) : std::string("-"),
-      static_cast<std::int64_t>(WilksMembersNeeded(s.options.quantile, s.options.confidence, 1)),
-      Significant(z.nominal_n),
-      Agreement(agrees)};
+  const int needed = WilksMembersNeeded(s.options.quantile, s.options.confidence, 1);
+  return {g.state,
+          g.setting_json,
+          static_cast<std::int64_t>(z.members),
+          FamilyName(z.family),
+          z.name,
+          Shown(z.sizing),
+          z.wilks ? Significant(z.wilks->value) : fmt::format("needs {}", needed),
+          g.refined ? std::string("refined") : Agreement(agrees)};
 }
 
 std::vector<std::string> Columns(const EnsembleSizing& s) {
@@ -245,8 +244,8 @@ std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
   if (!wear) {
     lines.push_back(fmt::format(
         "family: pin-pin wires, the duct pad, pins against the wrapper; each family's hottest zone "
-        "at the refined setting; design: Wilks' P{}/{} % limit (N); needs: the members it takes; "
-        "nominal: the nominal run's force (N)",
+        "at the refined setting; design: Wilks' P{}/{} % limit, or the members it needs; agrees: "
+        "with the refined setting",
         Percent(q), Percent(c)));
   }
   if (unbounded) {
@@ -254,8 +253,8 @@ std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
   }
   lines.push_back(wear ? "every zone, with the interval's bounds and Wilks' order: --format "
                          "csv|json or --out DIR"
-                       : "P50, P99, bounds, bootstrap, impact statistics and run times of every "
-                         "zone: --format csv|json or --out DIR");
+                       : "P50, P99, bounds, bootstrap, nominal run, impact statistics and run "
+                         "times of every zone: --format csv|json or --out DIR");
   return lines;
 }
 
