@@ -67,8 +67,8 @@ void PrintWrapped(const std::string& text, std::size_t indent = 2) {
   fmt::print("{}\n", line);
 }
 
-// The hottest zone of each state and setting, then how each setting compares and what the
-// members cost.
+// The hottest zone of each family per state and setting, then how each setting compares and
+// what the members cost.
 void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   PrintWrapped(
       fmt::format("study {}: P{:g} of the largest force per zone, {:g} % intervals (order "
@@ -163,8 +163,9 @@ void AddSizingCommand(CLI::App& app) {
   auto flags = std::make_shared<SizingFlags>();
   CLI::App* sizing = app.add_subcommand(
       "sizing",
-      "Sizing statistics of an ensemble study: per zone and for the hottest zone, per clearance "
-      "state and setting, P50/P95/P99 of the largest force with order-statistic intervals, "
+      "Sizing statistics of an ensemble study: per zone and for the hottest zone of each family "
+      "(pin-pin wire, duct pad, pin-wrapper), per clearance state and setting, P50/P95/P99 of the "
+      "largest force with order-statistic intervals, "
       "Wilks' upper tolerance limit, a bootstrap cross-check, impact statistics, and each "
       "setting against the refined one; with --wear, the same of the wear volume");
   sizing->add_option("STUDY", flags->study, "study name (default: the database's only ensemble)");
@@ -189,7 +190,7 @@ void AddSizingCommand(CLI::App& app) {
   sizing->add_option("--out", flags->out, "folder for the CSV tables and the pictures");
   sizing
       ->add_option("--format", flags->format,
-                   "standard output: the hottest zones as a table, "
+                   "standard output: each family's hottest zone as a table, "
                    "or every zone as CSV or JSON")
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));

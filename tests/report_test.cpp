@@ -12,6 +12,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -468,9 +469,10 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   ASSERT_EQ(report.exit_code, 0) << report.output;
   const auto sizing = RunShockmap("sizing --db " + at.db + " --format json");
   ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
-  std::map<std::pair<std::string, std::string>, nlohmann::json> hottest;  // (state, setting)
+  // (state, setting, family) -> the family's hottest zone.
+  std::map<std::tuple<std::string, std::string, std::string>, nlohmann::json> hottest;
   for (const auto& row : nlohmann::json::parse(sizing.output)) {
-    if (row["hottest"] != 1) continue;
+    if (row["family_hottest"] != 1) continue;
     // The report names a setting by its values: {"solver.r_ftrunc":1000} (refined) is
     // solver.r_ftrunc = 1000 (refined).
     std::string setting = row["setting"];
@@ -482,9 +484,9 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
     for (const auto& [path, value] : values.items()) {
       name += (name.empty() ? "" : ", ") + path + " = " + value.dump();
     }
-    hottest[{row["state"], name + (is_refined ? refined : "")}] = row;
+    hottest[{row["state"], name + (is_refined ? refined : ""), row["family"]}] = row;
   }
-  ASSERT_EQ(hottest.size(), 4u);  // Two states by two settings.
+  ASSERT_EQ(hottest.size(), 12u);  // Two states by two settings by three zone families.
 
   // The terminal's table: 12 members have no Wilks limit and cannot bound a P95 from above; it
   // says how many would, shows no infinity and fits 120 characters.
@@ -527,7 +529,7 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   ASSERT_EQ(rows.size(), hottest.size());
   for (const Cells& row : rows) {
     ASSERT_GT(row.size(), static_cast<std::size_t>(p95));
-    const auto expected = hottest.find({row[0].second, row[1].second});
+    const auto expected = hottest.find({row[0].second, row[1].second, row[4].second});
     ASSERT_NE(expected, hottest.end()) << row[0].second << " " << row[1].second;
     EXPECT_EQ(row[3].second, expected->second["zone"]);
     std::smatch full;

@@ -72,8 +72,11 @@ std::string About(const EnsembleSizing& s, const std::string& spec_json) {
       "<p>P{0:g} of the members' largest force per zone, with {1:g} % intervals from order "
       "statistics (an empty end: too few members to bound that side), Wilks' upper tolerance "
       "limit and a bootstrap interval as a cross-check: the numbers of <code>shockmap sizing "
-      "--quantile {2:g} --confidence {3:g}</code>. The hottest zone of a clearance state has the "
-      "highest estimate at its refined setting.</p>\n",
+      "--quantile {2:g} --confidence {3:g}</code>. The zones come in the families an engineer "
+      "sizes: the pin-pin wires, the duct pad, the pins against the wrapper (and any other); the "
+      "hottest zone of a family has the family's highest estimate at the state's refined "
+      "setting, so that the duct pad does not hide the wires. Its design value is Wilks' limit, "
+      "which needs the members given beside it.</p>\n",
       100 * s.options.quantile, 100 * s.options.confidence, s.options.quantile,
       s.options.confidence);
   if (s.pending + s.failed > 0) {
@@ -171,11 +174,11 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
   const EnsembleSizing sizing = SizeEnsemble(stored, ctx.study, SizingOptions{});
   const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
   return {
-      {"sizing-hottest", "Sizing force of the hottest zone",
+      {"sizing-hottest", "Sizing force of the hottest zone of each family",
        About(sizing, stored.spec_json) +
            SortableTable(WithSettingNames(HottestZoneTable(sizing, false), sizing, scene),
                          "sizing-hottest-table",
-                         "The hottest zone per clearance state and setting")},
+                         "The hottest zone of each family per clearance state and setting")},
       {"sizing-zones", "Sizing statistics per zone",
        SortableTable(WithSettingNames(ZoneTable(sizing), sizing, scene), "sizing-zones-table",
                      "Every zone per clearance state and setting")},

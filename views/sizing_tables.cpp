@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "formats/zone_family.h"
 #include "statistics/wilks.h"
 
 namespace shockmap {
@@ -41,37 +42,34 @@ std::string Shown(const QuantileInterval& q) {
                      q.upper_bounded ? Significant(q.upper) : "-");
 }
 
-// The terminal's table: the hottest zone's sizing quantile with its interval, Wilks' limit, the
-// nominal run's force and the agreement with the refined setting; the rest is in ZoneTable.
+// The terminal's table: per family, its hottest zone's sizing quantile with its interval, the
+// design value (Wilks' limit, or the members it needs) and the agreement with the refined
+// setting ("refined" on the refined setting's rows); the rest is in ZoneTable.
 std::vector<std::string> CompactColumns(const EnsembleSizing& s) {
   const std::string q = Percent(s.options.quantile), c = Percent(s.options.confidence);
-  return {"state",
-          "setting",
-          "members",
-          "hottest zone",
-          "P" + q + " (N) [" + c + " %]",
-          "Wilks P" + q + "/" + c + " %",
-          "nominal (N)",
-          "agrees"};
+  return {"state",      "setting",      "members",
+          "family",     "hottest zone", "P" + q + " (N) [" + c + " %]",
+          "design (N)", "agrees"};
 }
 
-std::vector<TableCell> CompactRow(const GroupSizing& g, const ZoneSizing& z,
-                                  std::optional<bool> agrees) {
+std::string Agreement(std::optional<bool> agrees) { return !agrees ? "-" : *agrees ? "yes" : "no"; }
+
+std::vector<TableCell> CompactRow(const EnsembleSizing& s, const GroupSizing& g,
+                                  const ZoneSizing& z, std::optional<bool> agrees) {
+  const int needed = WilksMembersNeeded(s.options.quantile, s.options.confidence, 1);
   return {g.state,
-          g.setting_json + (g.refined ? " (refined)" : ""),
+          g.setting_json,
           static_cast<std::int64_t>(z.members),
+          FamilyName(z.family),
           z.name,
           Shown(z.sizing),
-          z.wilks ? Significant(z.wilks->value) : std::string("-"),
-          Significant(z.nominal_n),
-          std::string(!agrees   ? "-"
-                      : *agrees ? "yes"
-                                : "no")};
+          z.wilks ? Significant(z.wilks->value) : fmt::format("needs {}", needed),
+          g.refined ? std::string("refined") : Agreement(agrees)};
 }
 
 std::vector<std::string> Columns(const EnsembleSizing& s) {
   const std::string q = Percent(s.options.quantile);
-  std::vector<std::string> c = {"state", "setting", "members", "zone"};
+  std::vector<std::string> c = {"state", "setting", "members", "zone", "family"};
   auto interval = [&](const std::string& name) {
     for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
   };
@@ -79,8 +77,8 @@ std::vector<std::string> Columns(const EnsembleSizing& s) {
   interval("p95");
   interval("p99");
   if (q != "50" && q != "95" && q != "99") interval("p" + q);
-  c.insert(c.end(),
-           {"wilks_order", "wilks_limit_n", "bootstrap_lower_n", "bootstrap_upper_n", "nominal_n"});
+  c.insert(c.end(), {"wilks_order", "wilks_limit_n", "wilks_members_needed", "bootstrap_lower_n",
+                     "bootstrap_upper_n", "nominal_n"});
   c.insert(c.end(), {"agrees_with_refined", "impacts_per_s", "contact_time_fraction",
                      "mean_force_n", "wear_work_rate_w", "wall_s_per_member", "cpu_s_per_member"});
   return c;
@@ -89,7 +87,7 @@ std::vector<std::string> Columns(const EnsembleSizing& s) {
 std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
                            std::optional<bool> agrees) {
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
-                                static_cast<std::int64_t>(z.members), z.name};
+                                static_cast<std::int64_t>(z.members), z.name, FamilyName(z.family)};
   auto interval = [&](const QuantileInterval& q) {
     row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
                            Bound(q.upper, q.upper_bounded, kInfinity)});
@@ -101,8 +99,10 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
   if (q != "50" && q != "95" && q != "99") interval(z.sizing);
   row.push_back(static_cast<std::int64_t>(z.wilks_order));
   row.push_back(z.wilks ? TableCell(z.wilks->value) : TableCell(std::monostate{}));
+  row.emplace_back(std::in_place_type<std::int64_t>,
+                   WilksMembersNeeded(s.options.quantile, s.options.confidence, 1));
   row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, Optional(z.nominal_n)});
-  row.push_back(std::string(!agrees ? "-" : *agrees ? "yes" : "no"));
+  row.push_back(Agreement(agrees));
   if (z.impacts) {
     row.insert(row.end(), {z.impacts->impacts_per_s, z.impacts->contact_time_fraction,
                            z.impacts->mean_force_n, Optional(z.impacts->wear_work_rate_w)});
@@ -120,8 +120,10 @@ Table HottestZoneTable(const EnsembleSizing& s, bool compact) {
   Table t;
   t.columns = compact ? CompactColumns(s) : Columns(s);
   for (const GroupSizing& g : s.groups) {
-    const ZoneSizing& z = g.zones[g.hottest];
-    t.rows.push_back(compact ? CompactRow(g, z, g.hottest_agrees) : Row(s, g, z, g.hottest_agrees));
+    for (const FamilyHottest& f : g.families) {
+      const ZoneSizing& z = g.zones[f.zone];
+      t.rows.push_back(compact ? CompactRow(s, g, z, f.agrees) : Row(s, g, z, f.agrees));
+    }
   }
   return t;
 }
@@ -129,7 +131,7 @@ Table HottestZoneTable(const EnsembleSizing& s, bool compact) {
 Table ZoneTable(const EnsembleSizing& s) {
   Table t;
   t.columns = Columns(s);
-  t.columns.push_back("hottest");
+  t.columns.insert(t.columns.end(), {"hottest", "family_hottest"});
   const auto refined_of = [&](const GroupSizing& g) -> const GroupSizing* {
     for (const GroupSizing& r : s.groups) {
       if (r.refined && r.state == g.state) return &r;
@@ -143,6 +145,9 @@ Table ZoneTable(const EnsembleSizing& s) {
       if (refined != nullptr) agrees = Agrees(z, refined->zones[z.zone], s.options.tolerance);
       auto row = Row(s, g, z, agrees);
       row.emplace_back(std::in_place_type<std::int64_t>, z.zone == g.hottest ? 1 : 0);
+      const bool family_hottest =
+          std::ranges::any_of(g.families, [&](const FamilyHottest& f) { return f.zone == z.zone; });
+      row.emplace_back(std::in_place_type<std::int64_t>, family_hottest ? 1 : 0);
       t.rows.push_back(std::move(row));
     }
   }
@@ -236,13 +241,20 @@ std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
         "largest of n members bounds P{} once 1 - {:g}^n >= {:g}); this study has {}: run more",
         Percent(q), Percent(c), WilksMembersNeeded(q, c, 1), Percent(q), q, c, fewest));
   }
+  if (!wear) {
+    lines.push_back(fmt::format(
+        "family: pin-pin wires, the duct pad, pins against the wrapper; each family's hottest zone "
+        "at the refined setting; design: Wilks' P{}/{} % limit, or the members it needs; agrees: "
+        "with the refined setting",
+        Percent(q), Percent(c)));
+  }
   if (unbounded) {
     lines.push_back("-: a side of an interval the members are too few to bound, or no value");
   }
   lines.push_back(wear ? "every zone, with the interval's bounds and Wilks' order: --format "
                          "csv|json or --out DIR"
-                       : "P50, P99, bounds, bootstrap, impact statistics and run times of every "
-                         "zone: --format csv|json or --out DIR");
+                       : "P50, P99, bounds, bootstrap, nominal run, impact statistics and run "
+                         "times of every zone: --format csv|json or --out DIR");
   return lines;
 }
 

@@ -1,10 +1,10 @@
 #pragma once
-// The tables of `shockmap sizing` (docs/ensembles.md, "Sizing"): one row per clearance state
-// and setting for its hottest zone, or one per state, setting and zone, of the largest force or
-// of the wear volume; intervals as their two
-// ends (infinite when unbounded: too few members for that side). The compact form for the
-// terminal fits about 110 characters: the sizing quantile as "estimate [lower, upper]" text,
-// every number to 4 significant digits, an unbounded side as "-"; the full columns are the
+// The tables of `shockmap sizing` (docs/ensembles.md, "Sizing"): one row per clearance state,
+// setting and zone family for the family's hottest zone (docs/ensembles.md, "Sizing by zone
+// family"), or one per state, setting and zone, of the largest force or of the wear volume;
+// intervals as their two ends (infinite when unbounded: too few members for that side). The compact
+// form for the terminal fits about 120 characters: the sizing quantile as "estimate [lower, upper]"
+// text, every number to 4 significant digits, an unbounded side as "-"; the full columns are the
 // CSV and JSON ones.
 
 #include <string>
