@@ -89,15 +89,6 @@ std::array<bool, kCategories.size()> WriteDiffData(const DiffedStudy& a, const M
   return present;
 }
 
-// "set xtics (...)": one tick per studied value, labelled with 4 significant digits.
-std::string Tics(const char* axis, std::vector<double> values) {
-  std::ranges::sort(values);
-  std::string tics;
-  for (double v : values) tics += fmt::format("{}'{:.4g}' {}", tics.empty() ? "" : ", ", v, v);
-  return fmt::format("set {}tics ({}){}\n", axis, tics,
-                     std::string(axis) == "x" ? " rotate by -35 offset 0,0" : "");
-}
-
 std::vector<double> Union(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<double> all = x;
   for (double v : y) {
@@ -168,8 +159,8 @@ plot {clauses}
 )",
       fmt::arg("terminal", terminal), fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("title", GnuplotQuoted(title)),
-      fmt::arg("xtics", Tics("x", Union(grid_a.r_k_values, grid_b.r_k_values))),
-      fmt::arg("ytics", Tics("y", Union(grid_a.y_values, grid_b.y_values))),
+      fmt::arg("xtics", GnuplotTics("x", Union(grid_a.r_k_values, grid_b.r_k_values))),
+      fmt::arg("ytics", GnuplotTics("y", Union(grid_a.y_values, grid_b.y_values))),
       fmt::arg("xmin", x_low), fmt::arg("xmax", x_high), fmt::arg("ymin", y_low),
       fmt::arg("ymax", y_high),
       fmt::arg("clauses", PlotClauses(present, a, b, GnuplotFileName(data_file))));

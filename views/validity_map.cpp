@@ -193,14 +193,6 @@ std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
          "eq. 11: R_{ftrunc} = 300 for R_k > 10^2'";
 }
 
-// "set xtics (...)": one tick per studied value, labelled with 4 significant digits.
-std::string Tics(const char* axis, const std::vector<double>& values) {
-  std::string tics;
-  for (double v : values) tics += fmt::format("{}'{:.4g}' {}", tics.empty() ? "" : ", ", v, v);
-  return fmt::format("set {}tics ({}){}\n", axis, tics,
-                     std::string(axis) == "x" ? " rotate by -35 offset 0,0" : "");
-}
-
 // What the script needs beyond the style: names, axes and ranges.
 struct MapFrame {
   std::string title, ylabel, tics, cells, overlays;
@@ -250,7 +242,7 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
   const MapFrame frame{
       study + ": " + style.title + ", " + shown,
       by_dt ? "dt / dt_{sharp}" : "R_{ftrunc} = f_{trunc} / f_1",
-      Tics("x", grid.r_k_values) + Tics("y", grid.y_values),
+      GnuplotTics("x", grid.r_k_values) + GnuplotTics("y", grid.y_values),
       CellClauses(grid, options.metric, criteria.options, GnuplotFileName(data_file)),
       Overlays(criteria, options.y),
       file,
