@@ -124,7 +124,7 @@ void CheckIndex(const Place& at) {
   const std::string dom = Dom(at, page);
   const std::size_t images = Count(html, "<img ");
   const std::size_t tables = Count(html, "<table class=\"sortable\"");
-  EXPECT_GE(images, 7u);  // Five maps, Fig. 4 and the cost front.
+  EXPECT_EQ(images, 2u);  // Fig. 4 and the cost front; the maps are inline SVG.
   EXPECT_NE(dom.find(fmt::format("data-images-loaded=\"{0}/{0}\"", images)), std::string::npos)
       << dom.substr(0, dom.find("<h1>"));
   EXPECT_NE(dom.find(fmt::format("data-sortable-tables=\"{}\"", tables)), std::string::npos);
@@ -135,8 +135,16 @@ void CheckIndex(const Place& at) {
   for (const char* section : {"criteria", "maps", "fig4", "cost", "study-file"}) {
     EXPECT_NE(dom.find(std::string("href=\"#") + section + "\""), std::string::npos) << section;
   }
-  // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second.
-  EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u);
+  // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second, and
+  // the first's grid again on each metric map (Err, SRf, cost at least).
+  const std::size_t metric_maps = Count(dom, "<div class=\"metric-map\"");
+  EXPECT_GE(metric_maps, 3u);
+  EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u + metric_maps * 11u * 7u);
+  // Each map's gnuplot figure is still written, and linked.
+  for (const char* png : {"map_err.png", "map_srf.png", "map_cost.png", "map_status_dt.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / png)) << png;
+    EXPECT_NE(html.find(std::string("href=\"") + png + "\""), std::string::npos) << png;
+  }
   // Every diverged cell carries a cross, every unstable one a square; the dt map's bound names
   // omega itself.
   EXPECT_GT(Count(html, "data-status=\"diverged\""), 0u);
@@ -170,7 +178,45 @@ void CheckMapCells(const Place& at) {
     }
     EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / m[1].str())) << m[1];
   }
-  EXPECT_EQ(checked, 11 * 7 + 11 * 4);
+  const int metric_maps = static_cast<int>(Count(dom, "<div class=\"metric-map\""));
+  EXPECT_EQ(checked, 11 * 7 + 11 * 4 + metric_maps * 11 * 7);
+}
+
+// The metric switch shows one metric map at a time, and the Err map's cells title the stored
+// Err of their points.
+void CheckMetricSwitch(const Place& at) {
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  const std::string chooser = R"(<script>
+function shown() {
+  return Array.from(document.querySelectorAll('.metric-map')).filter(function (m) {
+    return m.getBoundingClientRect().height > 0;
+  }).map(function (m) { return m.dataset.metric; }).join(',');
+}
+var choice = document.querySelector('select.metric-switch[data-maps="map-metric"]');
+document.body.dataset.before = shown();
+choice.value = 'srf';
+choice.dispatchEvent(new Event('change'));
+document.body.dataset.after = shown();
+</script></body>)";
+  html.replace(html.rfind("</body>"), 7, chooser);
+  const auto copy = at.dir / "report" / "switch_check.html";
+  WriteText(copy.string(), html);
+  const std::string dom = Dom(at, copy);
+  EXPECT_NE(dom.find("data-before=\"err\""), std::string::npos) << dom.substr(0, 400);
+  EXPECT_NE(dom.find("data-after=\"srf\""), std::string::npos) << dom.substr(0, 400);
+
+  const auto start = dom.find("<svg class=\"map\" id=\"map-metric-err\"");
+  ASSERT_NE(start, std::string::npos);
+  const std::string err_map = dom.substr(start, dom.find("</svg>", start) - start);
+  const std::regex cell("data-point-id=\"(\\d+)\"[^>]*><title>Err = ([^;]+);");
+  int checked = 0;
+  for (auto it = std::sregex_iterator(err_map.begin(), err_map.end(), cell);
+       it != std::sregex_iterator() && checked < 5; ++it, ++checked) {
+    const std::string id = (*it)[1];
+    EXPECT_NEAR(std::stod((*it)[2]), std::stod(Stored(at, "err", id)), 1e-5 * std::stod((*it)[2]))
+        << id;
+  }
+  EXPECT_EQ(checked, 5) << "no Err in the cells' titles";
 }
 
 void CheckSortOnClick(const Place& at) {
@@ -337,6 +383,7 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   CheckIndex(at_);
   CheckMapCells(at_);
   CheckSortOnClick(at_);
+  CheckMetricSwitch(at_);
   CheckVerdict(at_);
   CheckFilterAndCsv(at_);
   CheckPointPage(at_);

@@ -45,25 +45,41 @@ std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
       "<p>Hover a cell for its R_k, R_ftrunc, dt, scores and status; click it to open the "
       "point: its stored values, its Fig. 3 and the <code>compare</code> command that "
       "recomputes it.</p>\n<h3>Outcome over R_k and R_ftrunc, {}</h3>\n{}"
-      "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}",
+      "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}"
+      "<h3>Scores and cost over R_k and R_ftrunc, {}</h3>\n{}",
       HtmlEscaped(DtShown(by_rft)),
       HtmlValidityMap(by_rft, MapAxis::kRFtrunc, criteria, "map-rftrunc"), by_dt.fixed_r_ftrunc,
-      HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"));
+      HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"), HtmlEscaped(DtShown(by_rft)),
+      HtmlMetricMaps(by_rft, criteria, "map-metric"));
 }
 
-// The gnuplot maps, Fig. 4 and the cost front, drawn into ctx.dir.
-std::string MapFigures(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
-                       const ValidityCriteria& criteria) {
-  std::string figures;
+// One line of links to a drawn map's image, data and script.
+std::string MapFileLinks(const std::filesystem::path& png, const std::string& caption,
+                         const std::filesystem::path& dir) {
+  std::string links;
+  for (const FileLink& l : PlotFiles(png, dir)) {
+    links += fmt::format(" <a href=\"{}\">{}</a>", HtmlEscaped(l.relative.generic_string()),
+                         HtmlEscaped(l.label));
+  }
+  return fmt::format("<li>{}:{}</li>\n", HtmlEscaped(caption), links);
+}
+
+// The gnuplot maps, drawn into ctx.dir for papers and linked (the page shows the interactive
+// maps).
+std::string MapFiles(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
+                     const ValidityCriteria& criteria) {
+  std::string items;
   for (const std::string& metric : MapMetrics()) {
     const auto png = ctx.dir / ("map_" + metric + ".png");
     DrawValidityMap(ctx.study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
-    figures += Figure(png, "Validity map: " + metric + " over R_k and R_ftrunc", ctx.dir);
+    items += MapFileLinks(png, metric + " over R_k and R_ftrunc", ctx.dir);
   }
   const auto dt_png = ctx.dir / "map_status_dt.png";
   DrawValidityMap(ctx.study, points, criteria, {"status", MapAxis::kDt, {}}, dt_png);
-  return figures +
-         Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation", ctx.dir);
+  items += MapFileLinks(dt_png, "outcome over R_k and dt / dt_sharp", ctx.dir);
+  return "<p>The maps as gnuplot figures, with their data and scripts:</p>\n<ul "
+         "class=\"files\">\n" +
+         items + "</ul>\n";
 }
 
 // The cost front of the paper's Fig. 3 case when studied, else of the nearest R_k, with its
@@ -217,7 +233,7 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
       {"criteria", "Validity criteria and the paper's rules",
        CriteriaHtml(criteria, explicit_points)},
       {"maps", "Validity maps", InteractiveMaps(explicit_points, criteria)},
-      {"map-figures", "Validity maps as figures", MapFigures(ctx, explicit_points, criteria)},
+      {"map-files", "Validity maps as files", MapFiles(ctx, explicit_points, criteria)},
       {"fig4", "The paper's Fig. 4",
        Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4", ctx.dir)},
       {"cost", "What accuracy costs", CostSection(ctx, explicit_points, implicit_points)},

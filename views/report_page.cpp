@@ -36,12 +36,14 @@ svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
 svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
 .legend span { display: inline-block; margin-right: 1.2em; }
+.legend .scale i { vertical-align: middle; display: inline-block; height: 1em; border: 1px solid #999; }
 .legend i { display: inline-block; width: 1em; height: 1em; vertical-align: middle; margin-right: 0.3em; border: 1px solid #999; }
 .legend b.marker { display: inline-block; width: 1em; text-align: center; margin-right: 0.3em; }
 #cell-info { position: fixed; display: none; background: #fff; border: 1px solid #333; padding: 0.4em 0.6em; font-size: 0.85em; pointer-events: none; box-shadow: 2px 2px 6px #aaa; }
 @media print {
   body { max-width: none; margin: 0; font-size: 10pt; }
-  .table-tools, nav#contents, #cell-info, footer { display: none; }
+  .table-tools, nav#contents, #cell-info, footer, select.metric-switch { display: none; }
+  .metric-map[hidden] { display: block; }
   .table-wrap { overflow: visible; }
   table { font-size: 8pt; } th[aria-sort]::after { content: ''; }
   td.long { min-width: 12em; }
@@ -53,8 +55,9 @@ svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
 )css";
 
 // After the vendored tablesort: a numeric sort that reads exponents (empty cells sort as
-// -infinity), every sortable table taken, the map's hover box (with {scores}: one line per
-// score of the registry), and the page's load marks. A format string: its braces are doubled.
+// -infinity), every sortable table taken, the map's hover box, the metric switch (with {scores}:
+// one line per score of the registry), and the page's load marks. A format string: its braces are
+// doubled.
 constexpr const char* kScript = R"js(
 Tablesort.extend('real', function () {{ return false; }}, function (a, b) {{
   var x = a.trim() === '' ? -Infinity : Number(a), y = b.trim() === '' ? -Infinity : Number(b);
@@ -79,6 +82,15 @@ document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {{
     info.style.display = 'block';
   }});
   cell.addEventListener('mouseleave', function () {{ info.style.display = 'none'; }});
+}});
+// Each metric switch shows the map of the metric chosen and hides the others.
+document.querySelectorAll('select.metric-switch').forEach(function (choice) {{
+  var maps = document.getElementById(choice.dataset.maps).querySelectorAll('.metric-map');
+  function show() {{
+    maps.forEach(function (m) {{ m.hidden = m.dataset.metric !== choice.value; }});
+  }}
+  choice.addEventListener('change', show);
+  show();
 }});
 // Each table's filter box hides the body rows that do not hold every word typed (any case).
 document.querySelectorAll('input.table-filter').forEach(function (box) {{
