@@ -32,10 +32,6 @@ constexpr int kShownDigits = 4;
 
 std::string Significant(double v) { return fmt::format("{:.{}g}", v, kShownDigits); }
 
-TableCell Significant(const std::optional<double>& v) {
-  return v && std::isfinite(*v) ? TableCell(Significant(*v)) : TableCell(std::string("-"));
-}
-
 std::string Shown(const QuantileInterval& q) {
   return fmt::format("{} [{}, {}]", Significant(q.estimate),
                      q.lower_bounded ? Significant(q.lower) : "-",
