@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -20,6 +21,7 @@
 
 #include "tests/run_command.h"
 #include "views/cost_front.h"
+#include "views/fig3_svg.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
 
@@ -256,8 +258,86 @@ document.body.dataset.descending = headers[column].getAttribute('aria-sort') + '
   }
 }
 
+// The numbers of an attribute of `element` ("x y w h").
+std::vector<double> Numbers(const std::string& element, const std::string& attribute) {
+  const auto start = element.find(attribute + "=\"") + attribute.size() + 2;
+  std::stringstream in(element.substr(start, element.find('"', start) - start));
+  std::vector<double> out;
+  for (std::string v; in >> v;) out.push_back(std::stod(v));
+  return out;
+}
+
+// A panel's polyline of `cls` as (t_s, value) pairs, mapped back through its data-box and
+// data-range.
+std::vector<std::pair<double, double>> DrawnCurve(const std::string& panel,
+                                                  const std::string& cls) {
+  const auto box = Numbers(panel, "data-box"), range = Numbers(panel, "data-range");
+  const auto line = panel.find("<polyline class=\"" + cls + "\"");
+  EXPECT_NE(line, std::string::npos) << cls;
+  const std::string polyline = panel.substr(line);
+  const auto points = polyline.find("points=\"") + 8;
+  std::stringstream vertices(polyline.substr(points, polyline.find('"', points) - points));
+  std::vector<std::pair<double, double>> curve;
+  for (std::string v; vertices >> v;) {
+    const double x = std::stod(v.substr(0, v.find(','))), y = std::stod(v.substr(v.find(',') + 1));
+    curve.emplace_back(range[0] + (x - box[0]) / box[2] * (range[1] - range[0]),
+                       range[2] + (box[1] + box[3] - y) / box[3] * (range[3] - range[2]));
+  }
+  return curve;
+}
+
+// The panel of `quantity` in a page's Fig. 3.
+std::string Panel(const std::string& page, const std::string& quantity) {
+  const auto start = page.find("<g class=\"panel\" data-quantity=\"" + quantity + "\"");
+  EXPECT_NE(start, std::string::npos) << quantity;
+  return page.substr(start, page.find("\n</g>\n", start) - start);
+}
+
+// The drawn reference force of a point's Fig. 3 against its stored reference: the first sample
+// and the largest force, within the rounding of the SVG's coordinates (0.05 units); every curve
+// within 2 * kFig3Columns vertices.
+void CheckFigureAgainstStoredReference(const Place& at, const std::string& page,
+                                       const std::string& id) {
+  const auto csv = at.dir / ("reference_" + id + ".csv");
+  const auto exported =
+      RunShockmap("export reference --db " + at.db + " --point " + id + " --out " + csv.string());
+  ASSERT_EQ(exported.exit_code, 0) << exported.output;
+  std::stringstream rows(ReadBytes(csv.string()));
+  std::string line;
+  std::getline(rows, line);
+  double first_tip = NAN, max_force = -INFINITY;
+  while (std::getline(rows, line)) {
+    std::stringstream fields(line);
+    std::string t, tip, force;
+    std::getline(fields, t, ',');
+    std::getline(fields, tip, ',');
+    std::getline(fields, force, ',');
+    if (std::isnan(first_tip)) first_tip = std::stod(tip);
+    max_force = std::max(max_force, std::stod(force));
+  }
+  const std::string force_panel = Panel(page, "force"), tip_panel = Panel(page, "tip");
+  const auto range = Numbers(force_panel, "data-range"), box = Numbers(force_panel, "data-box");
+  const auto force = DrawnCurve(force_panel, "reference");
+  ASSERT_FALSE(force.empty());
+  double drawn_max = -INFINITY;
+  for (const auto& v : force) drawn_max = std::max(drawn_max, v.second);
+  EXPECT_GT(max_force, 0.0) << "the point's reference has no contact";
+  EXPECT_NEAR(drawn_max, max_force / 1e3, 0.05 / box[3] * (range[3] - range[2]) + 1e-12);
+  const auto tip = DrawnCurve(tip_panel, "reference");
+  const auto tip_range = Numbers(tip_panel, "data-range"), tip_box = Numbers(tip_panel, "data-box");
+  EXPECT_NEAR(tip.front().first, 0.0, 0.05 / tip_box[2] * tip_range[1]);
+  EXPECT_NEAR(tip.front().second, first_tip * 1e3,
+              0.05 / tip_box[3] * (tip_range[3] - tip_range[2]) + 1e-12);
+  for (const std::string& p : {force_panel, tip_panel}) {
+    for (const std::string cls : {"reference", "numerical"}) {
+      EXPECT_LE(DrawnCurve(p, cls).size(), 2 * shockmap::kFig3Columns) << cls;
+    }
+  }
+}
+
 void CheckPointPage(const Place& at) {
-  // A point with a drawn Fig. 3: its page embeds it and names the command.
+  // A point whose Fig. 3 is also written as files: its page links them, and its command
+  // recomputes the stored Err.
   std::string page_path;
   for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
     if (entry.is_directory() && std::filesystem::exists(entry.path() / "fig3.png")) {
@@ -265,36 +345,38 @@ void CheckPointPage(const Place& at) {
       break;
     }
   }
-  ASSERT_FALSE(page_path.empty()) << "no Fig. 3 was drawn";
+  ASSERT_FALSE(page_path.empty()) << "no Fig. 3 was written as files";
   const std::string page = ReadBytes(page_path);
-  EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos);
+  const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
+  EXPECT_NE(page.find("href=\"point_" + id + "/fig3.png\""), std::string::npos);
+  EXPECT_NE(page.find("href=\"point_" + id + "/numerical.csv\""), std::string::npos);
   std::smatch command;
   ASSERT_TRUE(std::regex_search(page, command, std::regex("shockmap compare ([^<]*) --out ")))
       << page;
-  const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
   const auto run = RunShockmap("compare " + command[1].str() + " --json");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::smatch err;
   ASSERT_TRUE(std::regex_search(run.output, err, std::regex("\"err\": ([0-9.e+-]+)")))
       << run.output;
   EXPECT_NEAR(std::stod(err[1]), std::stod(Stored(at, "err", id)), 1e-9) << command[1];
-  EXPECT_EQ(Count(page, "shockmap compare "), 1u) << "the command is printed twice";
+  CheckFigureAgainstStoredReference(at, page, id);
 
-  // A point without a drawn Fig. 3 says why, and prints its command once.
-  const auto points = at.dir / "report" / "points";
-  std::string absent;
-  for (const auto& entry : std::filesystem::directory_iterator(points)) {
-    if (entry.path().extension() == ".html" &&
-        !std::filesystem::exists(points / entry.path().stem() / "fig3.png")) {
-      absent = ReadBytes(entry.path().string());
-      break;
-    }
+  // Every point page draws its Fig. 3, two panels, from a run whose recomputed scores are the
+  // stored ones; prints its command once; a diverged run says where it stopped.
+  std::size_t pages = 0, diverged = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
+    if (entry.path().extension() != ".html") continue;
+    const std::string p = ReadBytes(entry.path().string());
+    ++pages;
+    EXPECT_EQ(Count(p, "<svg class=\"fig3\""), 1u) << entry.path();
+    EXPECT_EQ(Count(p, "<g class=\"panel\""), 2u) << entry.path();
+    EXPECT_EQ(Count(p, "the stored scores, exactly"), 1u) << entry.path();
+    EXPECT_EQ(Count(p, "shockmap compare "), 1u) << entry.path();
+    EXPECT_EQ(p.find("fig3-absent"), std::string::npos) << entry.path();
+    diverged += Count(p, "The run stopped (diverged");
   }
-  ASSERT_FALSE(absent.empty()) << "every point has its Fig. 3";
-  EXPECT_NE(absent.find("No Fig. 3 for this point: the database stores each run's scores and "
-                        "shocks, not its histories"),
-            std::string::npos);
-  EXPECT_EQ(Count(absent, "shockmap compare "), 1u) << "the command is printed twice";
+  EXPECT_EQ(pages, 308u);
+  EXPECT_EQ(std::to_string(diverged), StatusCount(at, "diverged"));
 }
 
 // The verdict opens the report and its counts are the database's.
@@ -603,6 +685,28 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   const std::string states = ReadBytes((at.dir / "report" / "sizing" / "states.gp").string());
   EXPECT_EQ(states.find("lines"), std::string::npos) << states;
   std::filesystem::remove_all(at.dir);
+}
+
+// Min/max per column keeps every column's extremes in time order, at most two a column, and
+// stops at the first non-finite sample (where a diverged run stopped).
+TEST(Fig3Svg, MinMaxPerColumnKeepsThePeaksAndStopsWhereTheRunDid) {
+  UniformSignal s{0.0, 1e-4, {}};
+  for (int i = 0; i < 10000; ++i) s.values.push_back(std::sin(0.01 * i) + (i == 4321 ? 5.0 : 0.0));
+  const auto curve = MinMaxPerColumn(s, 0.0, s.EndTime(), 100);
+  EXPECT_LE(curve.size(), 200u);
+  EXPECT_GE(curve.size(), 100u);
+  const auto top = std::ranges::max_element(curve, {}, &CurveVertex::value);
+  EXPECT_EQ(top->value, s.values[4321]);
+  EXPECT_DOUBLE_EQ(top->t_s, s.TimeAt(4321));
+  EXPECT_EQ(std::ranges::min_element(curve, {}, &CurveVertex::value)->value,
+            *std::ranges::min_element(s.values));
+  EXPECT_TRUE(std::ranges::is_sorted(curve, {}, &CurveVertex::t_s));
+  EXPECT_EQ(curve.front().t_s, 0.0);
+  EXPECT_DOUBLE_EQ(curve.back().t_s, s.EndTime());
+
+  s.values[5000] = NAN;
+  const auto cut = MinMaxPerColumn(s, 0.0, s.EndTime(), 100);
+  EXPECT_DOUBLE_EQ(cut.back().t_s, s.TimeAt(4999));
 }
 
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <string_view>
+#include <utility>
+#include <variant>
+
 #include "db/corrupt_rows.h"
 #include "db/report_queries.h"
 #include "views/html_text.h"
@@ -56,46 +61,63 @@ std::string StoredValues(const PointPageInput& in) {
   return SortableTable(values, "stored-table", "Its row of the results view");
 }
 
-// Why a point has no Fig. 3 and how to get it; once the command under "Reproduce it" has drawn
-// point_ID/fig3.png beside the page, the page's script shows it here.
-std::string AbsentFigure(const PointPageInput& in) {
-  if (!in.point || in.spec == nullptr) {
-    return "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's "
-           "scores and shocks, not its histories, and the point is not in the stored study file, "
-           "so no command can recompute it.</p>\n";
+// The point's stored value of `score` (NULL: none).
+std::optional<double> StoredScore(const PointPageInput& in, std::string_view score) {
+  for (std::size_t i = 0; i < in.columns->size(); ++i) {
+    if ((*in.columns)[i] != score) continue;
+    if (const double* v = std::get_if<double>(&(*in.row)[i])) return *v;
   }
-  const std::string png = fmt::format("point_{}/fig3.png", in.point_id);
-  return fmt::format(
-      "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's scores "
-      "and shocks, not its histories (only its reference's), and the report recomputes runs to "
-      "draw Fig. 3 only for the points around the derived boundary. The command under "
-      "<a href=\"#reproduce\">Reproduce it</a> recomputes this one and writes <code>{0}</code>; "
-      "this page shows it once it is there.</p>\n<figure id=\"fig3-drawn\" hidden></figure>\n"
-      "<script>(function () {{ var image = new Image(); image.alt = 'Fig. 3 of point {1}, "
-      "recomputed by the command below'; image.onload = function () {{ var f = "
-      "document.getElementById('fig3-drawn'); f.appendChild(image); f.hidden = false; "
-      "document.getElementById('fig3-absent').hidden = true; }}; image.src = '{0}'; }})();"
-      "</script>\n",
-      HtmlEscaped(png), in.point_id);
+  return std::nullopt;
+}
+
+// "Err = 0.0123, SRf = 0.9876: the stored scores, exactly", or each recomputed score beside its
+// stored value where they differ.
+std::string RecomputedScores(const PointPageInput& in) {
+  std::string scores;
+  bool same = true;
+  for (const ScoreDefinition& score : Scores()) {
+    const std::optional<double> v = in.figure->scores[score.name];
+    const std::optional<double> stored = StoredScore(in, score.name);
+    same = same && v == stored;
+    scores += fmt::format("{}{} = {}", scores.empty() ? "" : ", ", score.label,
+                          v ? fmt::format("{:.4f}", *v) : std::string("not scored"));
+    if (v != stored) {
+      scores += fmt::format(" (stored: {})",
+                            stored ? fmt::format("{}", *stored) : std::string("not scored"));
+    }
+  }
+  return HtmlEscaped(scores) +
+         (same ? ": <span class=\"scores-agree\">the stored scores, exactly</span>"
+               : ": <span class=\"scores-differ\">not the stored scores</span>");
+}
+
+std::string FigureLinks(const std::filesystem::path& files) {
+  const std::string dir = files.filename().generic_string();
+  std::string links;
+  constexpr std::array<std::pair<const char*, const char*>, 4> kFiles = {
+      {{"numerical history (CSV)", "numerical.csv"},
+       {"reference history (CSV)", "reference.csv"},
+       {"the figure by gnuplot (PNG)", "fig3.png"},
+       {"gnuplot script", "fig3.gp"}}};
+  for (const auto& [label, file] : kFiles) {
+    links += fmt::format(" <a href=\"{}/{}\">{}</a>", HtmlEscaped(dir), file, label);
+  }
+  return " <span class=\"files\">files:" + links + "</span>";
 }
 
 std::string FigureSection(const PointPageInput& in) {
-  if (!in.figure) return AbsentFigure(in);
-  std::string scores;
-  for (const ScoreDefinition& score : Scores()) {
-    const std::optional<double> v = in.figure->scores[score.name];
-    scores += fmt::format("{}{} = {}", scores.empty() ? "" : ", ", score.label,
-                          v ? fmt::format("{:.4f}", *v) : std::string("not scored"));
+  if (!in.figure) {
+    return "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's "
+           "scores and shocks, not its histories, and the point or its reference is not stored "
+           "any more, so the report could not compute it again.</p>\n";
   }
-  const auto dir = in.figure->png.parent_path();
-  return EmbeddedFigure(in.figure->png,
-                        "Tip displacement and contact force against the stored reference, "
-                        "recomputed: " +
-                            scores,
-                        {{"image", dir.filename() / "fig3.png"},
-                         {"numerical history (CSV)", dir.filename() / "numerical.csv"},
-                         {"reference history (CSV)", dir.filename() / "reference.csv"},
-                         {"gnuplot script", dir.filename() / "fig3.gp"}});
+  const std::string note =
+      in.figure->note.empty() ? "" : "<p class=\"fig3-note\">" + in.figure->note + "</p>\n";
+  return fmt::format(
+      "{}<figure class=\"fig3\">{}<figcaption>Tip displacement and contact force against the "
+      "stored reference, the run computed again: {}{}</figcaption></figure>\n",
+      note, in.figure->svg, RecomputedScores(in),
+      in.figure->files ? FigureLinks(*in.figure->files) : "");
 }
 
 }  // namespace

@@ -35,6 +35,9 @@ svg.map { width: 100%; max-width: 1100px; height: auto; display: block; }
 svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
 svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
+svg.fig3 { width: 100%; max-width: 760px; height: auto; display: block; }
+svg.fig3 text { font-size: 11px; } svg.fig3 .axis { font-size: 12px; }
+svg.fig3 .grid { stroke: #ddd; stroke-dasharray: 2 2; } svg.fig3 .frame { fill: none; stroke: #333; }
 .legend span { display: inline-block; margin-right: 1.2em; }
 .legend .scale i { vertical-align: middle; display: inline-block; height: 1em; border: 1px solid #999; }
 .legend i { display: inline-block; width: 1em; height: 1em; vertical-align: middle; margin-right: 0.3em; border: 1px solid #999; }
@@ -48,7 +51,7 @@ svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
   table { font-size: 8pt; } th[aria-sort]::after { content: ''; }
   td.long { min-width: 12em; }
   section { break-before: page; } section:first-of-type { break-before: auto; }
-  h2, h3, caption { break-after: avoid; } tr, figure, svg.map, p.verdict { break-inside: avoid; }
+  h2, h3, caption { break-after: avoid; } tr, figure, svg.map, svg.fig3, p.verdict { break-inside: avoid; }
   thead { display: table-header-group; }
   a { color: inherit; text-decoration: none; }
 }
