@@ -151,7 +151,7 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,
                 "draw the histories as the paper's Fig. 3 (PNG, needs --out)");
-  cmd->callback([flags, cmd] {
+  cmd->callback([flags] {
     if (flags->plot && flags->out_dir.empty()) {
       throw CLI::ValidationError("--plot", "needs --out DIR to write the CSV files and PNG into");
     }

@@ -45,8 +45,6 @@ struct Range {
   bool Contains(double v) const { return (lo_strict ? v > lo : v >= lo) && v <= hi; }
 };
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // An axis: a number, a non-empty list of numbers, {"logspace": [a, b, n]} (n values from 10^a
 // to 10^b) or {"linspace": [a, b, n]}.
 std::vector<double> ParseAxis(const Json& value, const std::string& file, const std::string& path,

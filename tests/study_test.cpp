@@ -44,8 +44,6 @@ TEST_P(StudySpecRejects, NamingTheKeyPath) {
   }
 }
 
-constexpr const char* kGrid = R"("grids": [{"rk": [100], "rftrunc": [10]}])";
-
 INSTANTIATE_TEST_SUITE_P(
     Malformed, StudySpecRejects,
     ::testing::Values(
