@@ -350,6 +350,12 @@ void CheckPointPage(const Place& at) {
   const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
   EXPECT_NE(page.find("href=\"point_" + id + "/fig3.png\""), std::string::npos);
   EXPECT_NE(page.find("href=\"point_" + id + "/numerical.csv\""), std::string::npos);
+  // In the browser, the page shows its figure: two panels, each with both curves.
+  const std::string dom = Dom(at, page_path);
+  EXPECT_EQ(Count(dom, "<svg class=\"fig3\""), 1u);
+  EXPECT_EQ(Count(dom, "<g class=\"panel\""), 2u);
+  EXPECT_EQ(Count(dom, "<polyline class=\"reference\""), 2u);
+  EXPECT_EQ(Count(dom, "<polyline class=\"numerical\""), 2u);
   std::smatch command;
   ASSERT_TRUE(std::regex_search(page, command, std::regex("shockmap compare ([^<]*) --out ")))
       << page;
@@ -476,8 +482,31 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   EXPECT_TRUE(std::filesystem::exists(at_.dir / "report" / "map_err.png"));
 }
 
+// The cells of each body row of the table `id` in `dom`: (attributes, text) per cell.
+using Cells = std::vector<std::pair<std::string, std::string>>;
+std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  EXPECT_NE(start, std::string::npos) << id;
+  if (start == std::string::npos) return {};
+  const auto body = dom.find("<tbody>", start);
+  const std::string rows = dom.substr(body, dom.find("</tbody>", body) - body);
+  const std::regex row("<tr>(.*?)</tr>"), cell("<td([^>]*)>(.*?)</td>");
+  std::vector<Cells> out;
+  for (auto r = std::sregex_iterator(rows.begin(), rows.end(), row); r != std::sregex_iterator();
+       ++r) {
+    const std::string text = (*r)[1];
+    auto& cells = out.emplace_back();
+    for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator();
+         ++c) {
+      cells.emplace_back((*c)[1], std::regex_replace((*c)[2].str(), std::regex("&quot;"), "\""));
+    }
+  }
+  return out;
+}
+
 // A scene study named with markup: the report has its sections, the points with their swept
-// parameter as a column, the contact-force map, and shows the name as text.
+// parameters as columns, the validity map over them, the contact-force map, and shows the name
+// as text.
 TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   Place at{std::filesystem::temp_directory_path() /
                ("shockmap_scene_report_" + std::to_string(getpid())),
@@ -488,7 +517,7 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   const nlohmann::json study = {
       {"name", "<b>spring</b> & \"q\""},
       {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
-      {"sweep", {{"solver.r_ftrunc", {10, 300}}}},
+      {"sweep", {{"solver.r_ftrunc", {10, 300}}, {"solver.dt.factor", {0.1, 0.5}}}},
       {"reference", {{"solver.r_ftrunc", 1000}}},
       {"scoring", {{"displacement", "tip"}, {"zone", "tip_spring"}, {"rest_duration_s", 0.0052}}}};
   WriteText((at.dir / "study.json").string(), study.dump());
@@ -512,41 +541,37 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   const auto points_table = dom.find("id=\"points-table\"");
   const std::string rows =
       dom.substr(points_table, dom.find("</table>", points_table) - points_table);
-  EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
+  EXPECT_EQ(Count(rows, "<tr>"), 1u + 4u);  // The header and the four points.
   // Passes and fails counted apart from the run status, each point's outcome beside its status.
   std::smatch counts;
   ASSERT_TRUE(std::regex_search(
       dom, counts,
-      std::regex("(\\d+) of 2 points pass Err &lt;= 0.1, SRf &gt;= 0.8; (\\d+) ran to the end "
+      std::regex("(\\d+) of 4 points pass Err &lt;= 0.1, SRf &gt;= 0.8; (\\d+) ran to the end "
                  "and fail them.*; (\\d+) did not run to the end")));
-  EXPECT_EQ(std::stoi(counts[1]) + std::stoi(counts[2]) + std::stoi(counts[3]), 2);
+  EXPECT_EQ(std::stoi(counts[1]) + std::stoi(counts[2]) + std::stoi(counts[3]), 4);
   EXPECT_EQ(std::stoi(counts[1]), static_cast<int>(Count(rows, "<td>passes</td>")));
   EXPECT_EQ(std::stoi(counts[2]), static_cast<int>(Count(rows, "<td>fails thresholds</td>")));
+  // The validity map over the swept settings: a cell per point, R_ftrunc across and dt up, each
+  // cell's outcome the one the points table gives that point.
+  std::map<std::string, std::string> outcome_of;  // By point id, from the table.
+  for (const Cells& row : TableRows(dom, "points-table")) {
+    outcome_of[row[0].second] = row[3].second;
+  }
+  const std::regex cell(
+      "<rect class=\"cell\"[^>]* data-point-id=\"(\\d+)\" "
+      "data-parameters=\"solver.dt.factor=([0-9.]+);solver.r_ftrunc=(\\d+)\" "
+      "data-outcome=\"([^\"]+)\"");
+  std::set<std::string> drawn;
+  for (auto c = std::sregex_iterator(html.begin(), html.end(), cell); c != std::sregex_iterator();
+       ++c) {
+    EXPECT_EQ((*c)[4].str(), outcome_of[(*c)[1].str()]) << "point " << (*c)[1];
+    drawn.insert((*c)[3].str() + "/" + (*c)[2].str());
+  }
+  EXPECT_EQ(drawn, (std::set<std::string>{"10/0.1", "10/0.5", "300/0.1", "300/0.5"}));
+  EXPECT_EQ(Count(html, "<svg class=\"sweep-map\""), 1u);
   EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
   std::filesystem::remove_all(at.dir);
-}
-
-// The cells of each body row of the table `id` in `dom`: (attributes, text) per cell.
-using Cells = std::vector<std::pair<std::string, std::string>>;
-std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
-  const auto start = dom.find("id=\"" + id + "\"");
-  EXPECT_NE(start, std::string::npos) << id;
-  if (start == std::string::npos) return {};
-  const auto body = dom.find("<tbody>", start);
-  const std::string rows = dom.substr(body, dom.find("</tbody>", body) - body);
-  const std::regex row("<tr>(.*?)</tr>"), cell("<td([^>]*)>(.*?)</td>");
-  std::vector<Cells> out;
-  for (auto r = std::sregex_iterator(rows.begin(), rows.end(), row); r != std::sregex_iterator();
-       ++r) {
-    const std::string text = (*r)[1];
-    auto& cells = out.emplace_back();
-    for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator();
-         ++c) {
-      cells.emplace_back((*c)[1], std::regex_replace((*c)[2].str(), std::regex("&quot;"), "\""));
-    }
-  }
-  return out;
 }
 
 // The header cells of the table `id` in `dom`, as text.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "views/html_text.h"
+#include "views/outcome_glyphs.h"
 
 namespace shockmap {
 
@@ -41,46 +42,6 @@ Frame FrameOf(const MapGrid& grid) {
 
 std::string Scored(const std::optional<double>& v) {
   return v ? fmt::format("{:.4f}", *v) : "not scored";
-}
-
-// The category's marker centred on the cell (x, y, w, h in SVG units), drawn in black and
-// transparent to the pointer so that hovering reaches the cell; "" without a marker.
-std::string MarkerShape(CellMarker marker, double x, double y, double w, double h) {
-  const double cx = x + w / 2, cy = y + h / 2, r = std::min(9.0, 0.3 * std::min(w, h));
-  const char* style = "fill=\"none\" stroke=\"#000\" stroke-width=\"2\" pointer-events=\"none\"";
-  switch (marker) {
-    case CellMarker::kCross:
-      return fmt::format(
-          "<path class=\"marker\" d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}M{:.1f} {:.1f}L{:.1f} "
-          "{:.1f}\" {}/>",
-          cx - r, cy - r, cx + r, cy + r, cx - r, cy + r, cx + r, cy - r, style);
-    case CellMarker::kSquare:
-      return fmt::format(
-          "<rect class=\"marker\" x=\"{:.1f}\" y=\"{:.1f}\" width=\"{:.1f}\" height=\"{:.1f}\" "
-          "{}/>",
-          cx - r, cy - r, 2 * r, 2 * r, style);
-    case CellMarker::kCircle:
-      return fmt::format("<circle class=\"marker\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" {}/>",
-                         cx, cy, r, style);
-    case CellMarker::kNone:
-      break;
-  }
-  return "";
-}
-
-// The legend's sample of a category: its marker as a character, or its fill.
-std::string LegendSample(const OutcomeCategory& category) {
-  switch (category.marker) {
-    case CellMarker::kCross:
-      return "<b class=\"marker\">&#215;</b>";
-    case CellMarker::kSquare:
-      return "<b class=\"marker\">&#9633;</b>";
-    case CellMarker::kCircle:
-      return "<b class=\"marker\">&#9675;</b>";
-    case CellMarker::kNone:
-      break;
-  }
-  return fmt::format("<i style=\"background:{}\"></i>", category.colour);
 }
 
 // One cell: filled with `fill`; its <title> opens with `shown` (the value the fill shows, or

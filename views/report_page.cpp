@@ -35,6 +35,9 @@ svg.map { width: 100%; max-width: 1100px; height: auto; display: block; }
 svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
 svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
+svg.sweep-map { width: 100%; max-width: 860px; height: auto; display: block; }
+svg.sweep-map rect.cell { stroke: #fff; stroke-width: 1; } svg.sweep-map rect.cell:hover { stroke: #000; stroke-width: 2; }
+svg.sweep-map text { font-size: 12px; }
 svg.fig3 { width: 100%; max-width: 760px; height: auto; display: block; }
 svg.fig3 text { font-size: 11px; } svg.fig3 .axis { font-size: 12px; }
 svg.fig3 .grid { stroke: #ddd; stroke-dasharray: 2 2; } svg.fig3 .frame { fill: none; stroke: #333; }

@@ -11,6 +11,7 @@
 #include "views/html_report.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
+#include "views/sweep_outcome_map.h"
 
 namespace shockmap {
 namespace {
@@ -86,6 +87,48 @@ std::string OutcomeSentence(const Table& results, const CriteriaOptions& thresho
       by.empty() ? "" : " (" + HtmlEscaped(by) + ")", other);
 }
 
+// The swept paths, in the study's order.
+std::vector<std::string> SweptPaths(const SceneStudySpec& spec) {
+  std::vector<std::string> paths;
+  if (!spec.points.empty()) {
+    for (const auto& [path, value] : spec.points.front()) paths.push_back(path);
+  }
+  return paths;
+}
+
+// Each stored point with the swept values its parameters_json holds (a missing or non-numeric
+// one is left out, and the map says so).
+std::vector<SweepPoint> SweepPoints(const SceneStudySpec& spec, const Table& results) {
+  std::vector<SweepPoint> points;
+  for (const auto& row : results.rows) {
+    SweepPoint& p = points.emplace_back();
+    p.scored = Judged(results, row);
+    if (const auto* id = std::get_if<std::int64_t>(&row[ColumnOf(results, "point_id")])) {
+      p.scored.point_id = *id;
+    }
+    const auto parameters =
+        nlohmann::json::parse(CellText(row[ColumnOf(results, "parameters_json")]), nullptr, false);
+    for (const std::string& path : SweptPaths(spec)) {
+      if (parameters.is_object() && parameters.contains(path) && parameters[path].is_number()) {
+        p.parameters.emplace_back(path, parameters[path].get<double>());
+      }
+    }
+  }
+  return points;
+}
+
+std::string ValidityMap(const SceneStudySpec& spec, const Table& results,
+                        const CriteriaOptions& thresholds) {
+  const std::string maps =
+      HtmlSweepOutcomeMaps(SweepPoints(spec, results), thresholds, "sweep-map");
+  if (maps.empty()) return "<p>The study sweeps no parameter.</p>\n";
+  return fmt::format(
+             "<p>Every point over the swept settings, coloured by its outcome against {}; hover "
+             "a cell for its values.</p>\n",
+             HtmlEscaped(ThresholdsText(thresholds, false))) +
+         maps;
+}
+
 // The points with each swept parameter as its own column (from parameters_json), then their
 // scores and costs.
 Table PointsWithParameters(const SceneStudySpec& spec, const Table& results,
@@ -96,10 +139,7 @@ Table PointsWithParameters(const SceneStudySpec& spec, const Table& results,
                            "largest_force_zone", "n_shocks", "first_shock_peak_n", "message"}) {
     shown.emplace_back(name);
   }
-  std::vector<std::string> paths;
-  if (!spec.points.empty()) {
-    for (const auto& [path, value] : spec.points.front()) paths.push_back(path);
-  }
+  const std::vector<std::string> paths = SweptPaths(spec);
   Table out;
   out.columns.push_back("point_id");
   out.columns.insert(out.columns.end(), paths.begin(), paths.end());
@@ -158,6 +198,7 @@ std::vector<ReportSection> SceneSections(const ReportContext& ctx, const SceneSt
        OutcomeSentence(results, ctx.thresholds) + about +
            SortableTable(Outcomes(results, ctx.thresholds), "outcomes-table",
                          "Points by status and outcome")},
+      {"validity-map", "Validity map", ValidityMap(spec, results, ctx.thresholds)},
       {"points", "Points",
        SortableTable(PointsWithParameters(spec, results, ctx.thresholds), "points-table",
                      "Every stored point, its swept parameters as columns")},

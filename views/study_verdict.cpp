@@ -73,7 +73,7 @@ std::string Margin(const ValidityCriteria& c) {
   if (c.dt_ratio_max) {
     s = fmt::format(
         "Time-step margin: runs pass up to dt = {:.3g} dt_sharp, {:.3g} times below "
-        "the sharp stability bound dt_sharp = 2/omega_max",
+        "the sharp stability bound dt_sharp = 2/ω_max",
         *c.dt_ratio_max, 1.0 / *c.dt_ratio_max);
   } else {
     s = "Time-step margin: none (no studied dt passes at every R_k)";
