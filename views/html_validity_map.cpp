@@ -124,12 +124,7 @@ std::string Boundary(const ValidityCriteria& criteria, const Frame& f, MapAxis y
 std::string Legend(const MapGrid& grid, const ValidityCriteria& criteria, MapAxis y) {
   std::vector<bool> present(OutcomeCategories().size(), false);
   for (const MapCell& c : grid.cells) present[OutcomeCategoryOf(*c.point, criteria.options)] = true;
-  std::string items;
-  for (std::size_t i = 0; i < present.size(); ++i) {
-    if (!present[i]) continue;
-    items += fmt::format("<span>{}{}</span>", LegendSample(OutcomeCategories()[i]),
-                         HtmlEscaped(OutcomeCategories()[i].label));
-  }
+  std::string items = OutcomeLegendItems(present);
   if (y == MapAxis::kRFtrunc && criteria.fit) {
     items += fmt::format(
         "<span>black line: derived boundary R_ftrunc = {:.3g} R_k^{:.3f} above the knee R_k = "

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "views/html_text.h"
+
 namespace shockmap {
 
 std::string MarkerShape(CellMarker marker, double x, double y, double w, double h) {
@@ -29,6 +31,9 @@ std::string MarkerShape(CellMarker marker, double x, double y, double w, double 
   return "";
 }
 
+namespace {
+
+// The legend's sample of a category.
 std::string LegendSample(const OutcomeCategory& category) {
   switch (category.marker) {
     case CellMarker::kCross:
@@ -41,6 +46,18 @@ std::string LegendSample(const OutcomeCategory& category) {
       break;
   }
   return fmt::format("<i style=\"background:{}\"></i>", category.colour);
+}
+
+}  // namespace
+
+std::string OutcomeLegendItems(const std::vector<bool>& present) {
+  std::string items;
+  for (std::size_t i = 0; i < present.size(); ++i) {
+    if (!present[i]) continue;
+    items += fmt::format("<span>{}{}</span>", LegendSample(OutcomeCategories()[i]),
+                         HtmlEscaped(OutcomeCategories()[i].label));
+  }
+  return items;
 }
 
 }  // namespace shockmap

@@ -4,6 +4,7 @@
 // maps (views/html_validity_map.h) and the scene sweep's map (views/sweep_outcome_map.h).
 
 #include <string>
+#include <vector>
 
 #include "views/map_grid.h"
 
@@ -13,7 +14,9 @@ namespace shockmap {
 // the pointer so that hovering reaches the cell; "" for CellMarker::kNone.
 std::string MarkerShape(CellMarker marker, double x, double y, double w, double h);
 
-// The legend's sample of a category: its marker as a character, or a swatch of its fill.
-std::string LegendSample(const OutcomeCategory& category);
+// The legend's items, one <span> per category present, in legend order: its marker as a
+// character, or a swatch of its fill, and its label;
+// `present` is indexed as OutcomeCategories().
+std::string OutcomeLegendItems(const std::vector<bool>& present);
 
 }  // namespace shockmap

@@ -143,12 +143,7 @@ std::string Map(const std::vector<const SweepPoint*>& points, const Axes& axes,
 std::string Legend(const std::vector<SweepPoint>& points, const CriteriaOptions& thresholds) {
   std::vector<bool> present(OutcomeCategories().size(), false);
   for (const SweepPoint& p : points) present[OutcomeCategoryOf(p.scored, thresholds)] = true;
-  std::string items;
-  for (std::size_t i = 0; i < present.size(); ++i) {
-    if (!present[i]) continue;
-    items += fmt::format("<span>{}{}</span>", LegendSample(OutcomeCategories()[i]),
-                         HtmlEscaped(OutcomeCategories()[i].label));
-  }
+  const std::string items = OutcomeLegendItems(present);
   return "<p class=\"legend\">" + items + "</p>\n";
 }
 
