@@ -1,6 +1,7 @@
 #include "formats/parameter_path.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "formats/json_reader.h"
 
@@ -14,7 +15,8 @@ using Json = nlohmann::json;
   FailAt(file, where,
          "\"" + path +
              "\" is not a parameter path: use keys joined by dots, with [i] for list "
-             "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
+             "items (at most 9 digits), each key starting with a letter, e.g. \"solver.r_ftrunc\" "
+             "or \"zones[0].gap_m\"");
 }
 
 // A study sets the scene's end time (its window) and its outputs (what it records) itself, so
@@ -53,6 +55,11 @@ void CheckNumberAt(const Json& scene, const Json::json_pointer& pointer, const s
 
 }  // namespace
 
+// A list index longer than this could overflow the JSON pointer's index type, which the JSON
+// library reports by throwing from contains() instead of answering false; for the same reason a
+// key must start with a letter, so that no key is read as a list index.
+constexpr std::size_t kMaxIndexDigits = 9;
+
 std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
   std::string pointer;
   std::size_t start = 0;
@@ -64,9 +71,15 @@ std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
       if (segment.back() != ']' || open == 0) return std::nullopt;
       index = segment.substr(open + 1, segment.size() - open - 2);
       segment.resize(open);
-      if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return std::nullopt;
+      if (index.empty() || index.size() > kMaxIndexDigits ||
+          !std::all_of(index.begin(), index.end(), ::isdigit)) {
+        return std::nullopt;
+      }
     }
-    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos) return std::nullopt;
+    if (segment.empty() || !std::isalpha(static_cast<unsigned char>(segment.front())) ||
+        segment.find_first_of("/~]") != std::string::npos) {
+      return std::nullopt;
+    }
     pointer += "/" + segment;
     if (!index.empty()) pointer += "/" + index;
     start = dot + 1;
