@@ -7,13 +7,13 @@
 
 #include "app/flag_checks.h"
 #include "compare/comparison.h"
+#include "compare/comparison_limits.h"
 #include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/comparison_json.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
 #include "formats/study_spec.h"
-#include "reference/reference_cost.h"
 #include "views/comparison_plot.h"
 
 namespace shockmap {
@@ -56,8 +56,13 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
     fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r.scores[score.name], "{:.4f}"),
                score.source, score.meaning);
   }
-  fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
-             r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+  if (f.options.scheme == Scheme::kExplicitModal) {
+    fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
+               r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+  } else {
+    fmt::print("  model             the full FE model, {} elements, {} unknowns (no modal basis)\n",
+               r.n_elements, r.n_dofs);
+  }
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {} steps\n", r.numerical.dt_used_s,
              r.numerical.dt_requested_s, r.numerical.steps_taken);
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
@@ -73,44 +78,6 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              ref.wall_s, r.numerical.wall_s, r.numerical.cpu_s);
 }
 
-// Refuses a mesh (given, or the default for --rftrunc) whose eigenproblem exceeds the budget.
-void CheckMeshCost(const ComparisonOptions& o) {
-  const int elements = o.n_elements > 0 ? o.n_elements : DefaultElementCount(o.r_ftrunc);
-  const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1);
-  if (excess.empty()) return;
-  if (o.n_elements > 0) throw InputError(fmt::format("--elements: {}: {}", elements, excess));
-  throw InputError(fmt::format("--rftrunc: {:g} needs {} elements by default: {}", o.r_ftrunc,
-                               elements, excess));
-}
-
-// Refuses a reference (--rfref over --window) beyond the budget of reference/reference_cost.h.
-void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions& o) {
-  const std::string excess = ReferenceBudgetExcess(problem, o.reference, o.window_s);
-  if (excess.empty()) return;
-  throw InputError(fmt::format("--rfref: {:g} over the {:g} s --window: {}", o.reference.r_fref,
-                               o.window_s, excess));
-}
-
-// Refuses a step, given (--dt) or resolved on the model's bounds as the run will resolve it
-// (--dt-factor), that takes more steps over the window than a run may.
-void CheckStepCount(const CompareFlags& f) {
-  const bool given = f.options.dt.dt_s.has_value();
-  const double dt_s =
-      given ? *f.options.dt.dt_s
-            : f.options.dt.Resolve(BuildImpactModel(f.problem, f.options.scheme, f.options.r_ftrunc,
-                                                    f.options.n_elements)
-                                       .bounds);
-  const auto max_steps = TransientOptions{}.max_steps;
-  if (!(f.options.window_s / dt_s <= max_steps)) {
-    const std::string step = given ? fmt::format("--dt: {:g} s", dt_s)
-                                   : fmt::format("--dt-factor: {:g} of the {} bound, {:.4g} s,",
-                                                 f.options.dt.factor, f.dt_rule, dt_s);
-    throw InputError(
-        fmt::format("{} over the {:g} s window is {:.3g} steps; at most {} are allowed", step,
-                    f.options.window_s, f.options.window_s / dt_s, max_steps));
-  }
-}
-
 void Run(const CompareFlags& flags) {
   CompareFlags f = flags;
   if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
@@ -120,9 +87,9 @@ void Run(const CompareFlags& flags) {
   f.options.scheme = *SchemeFromString(f.scheme);
   std::string error;
   if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
-  CheckMeshCost(f.options);
-  CheckReferenceCost(f.problem, f.options);
-  CheckStepCount(f);  // After the mesh check: resolving a factor builds the model.
+  CheckComparisonAffordable(
+      f.problem, f.options,
+      {"--rftrunc", "--rfref", "--window", "--elements", "--dt", "--dt-factor"});
   // The outputs are checked before the run and written before anything is reported.
   if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
   const ComparisonResult result = RunComparison(f.problem, f.options);
@@ -188,7 +155,7 @@ void AddCompareCommand(CLI::App& app) {
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,
                 "draw the histories as the paper's Fig. 3 (PNG, needs --out)");
-  cmd->callback([flags, cmd] {
+  cmd->callback([flags] {
     if (flags->plot && flags->out_dir.empty()) {
       throw CLI::ValidationError("--plot", "needs --out DIR to write the CSV files and PNG into");
     }

@@ -27,11 +27,11 @@ struct CriteriaFlags {
 
 void Derive(const CriteriaFlags& f) {
   if (!f.out.empty()) CheckPathLength(f.out, "--out");
-  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "criteria derive");
   const CriteriaOptions options = ThresholdsFor(f.thresholds, f.database_path, study);
   std::string error;
   if (!options.IsValid(&error)) throw InputError(error);
-  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria criteria = DeriveCriteria(points, options);
   if (!f.out.empty()) {
     const std::filesystem::path file(f.out);
@@ -46,8 +46,8 @@ void Check(const CriteriaFlags& f) {
   CriteriaTolerances tolerances;
   const ValidityCriteria baseline =
       CriteriaFromJson(ReadJsonFile(f.baseline), f.baseline, &tolerances);
-  const std::string study = ResolveStudyName(f.database_path, f.study);
-  const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
+  const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "criteria check");
+  const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria current = DeriveCriteria(points, baseline.options);
   const auto problems = CheckAgainstBaseline(baseline, tolerances, current, points);
   if (problems.empty()) {

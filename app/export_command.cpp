@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "app/flag_checks.h"
@@ -37,17 +39,22 @@ StudyFileKind KindOf(const std::string& database_path, const std::string& study)
                      database_path);
 }
 
-// The one reference of the study at --rk; refused when none or several match.
-std::int64_t ReferenceAtRk(const ExportFlags& f, const std::string& study) {
-  const auto ids = ReferenceIdsAt(f.database_path, study, f.r_k);
-  if (ids.empty()) {
-    throw InputError(fmt::format("--rk: no scored point of study {} has R_k = {}", study, f.r_k));
-  }
+// The studied R_k nearest to --rk (by ratio), as `cost --rk` and `advise --rk` take it.
+double NearestScoredRk(const ExportFlags& f, const std::string& study) {
+  const std::vector<double> studied = ScoredRks(f.database_path, study);
+  if (studied.empty()) throw InputError("--rk: study " + study + " has no scored point");
+  return *std::ranges::min_element(studied, {},
+                                   [&](double r_k) { return std::abs(std::log(r_k / f.r_k)); });
+}
+
+// The one reference of the study at `r_k`; refused when several match.
+std::int64_t ReferenceAtRk(const ExportFlags& f, const std::string& study, double r_k) {
+  const auto ids = ReferenceIdsAt(f.database_path, study, r_k);
   if (ids.size() > 1) {
     throw InputError(fmt::format(
         "--rk: the points of study {} at R_k = {} are scored against {} references (windows or "
         "reference settings differ); name one point with --point ID",
-        study, f.r_k, ids.size()));
+        study, r_k, ids.size()));
   }
   return ids.front();
 }
@@ -60,8 +67,13 @@ void ExportReference(const ExportFlags& f) {
     throw InputError("--rk: study " + study + " is a scene study; name a point with --point ID");
   }
   std::int64_t id = 0;
+  std::string nearest;
   if (f.r_k > 0) {
-    id = ReferenceAtRk(f, study);
+    const double r_k = NearestScoredRk(f, study);
+    if (std::abs(r_k - f.r_k) > 1e-9 * r_k) {
+      nearest = fmt::format(" (R_k = {}, the studied value nearest to --rk {:g})", r_k, f.r_k);
+    }
+    id = ReferenceAtRk(f, study, r_k);
   } else if (const auto of_point = ReferenceOfPoint(f.database_path, study, f.point_id)) {
     id = *of_point;
   } else {
@@ -76,8 +88,8 @@ void ExportReference(const ExportFlags& f) {
   if (!signals)
     throw InputError(fmt::format("reference {} is missing from {}", id, f.database_path));
   WriteSignalsCsv(*signals, f.out);
-  fmt::print("reference {} of study {}: {} samples every {} s written to {}\n", id, study,
-             signals->values.front().size(), signals->output_dt_s, f.out);
+  fmt::print("reference {} of study {}{}: {} samples every {} s written to {}\n", id, study,
+             nearest, signals->values.front().size(), signals->output_dt_s, f.out);
 }
 
 // The folder is created once the point is computed again, so that a refusal leaves none.
@@ -141,7 +153,8 @@ void AddExportCommand(CLI::App& app) {
       "contact force), chosen by R_k or by a point scored against it");
   AddStudyArgument(reference, *flags);
   CLI::Option* rk =
-      reference->add_option("--rk", flags->r_k, "R_k of the study's points")->check(Positive());
+      reference->add_option("--rk", flags->r_k, "R_k of the study's points (the nearest studied)")
+          ->check(Positive());
   CLI::Option* point =
       reference->add_option("--point", flags->point_id, "id of a point scored against it")
           ->check(CLI::PositiveNumber);

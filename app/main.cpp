@@ -8,6 +8,7 @@
 #include "app/compare_command.h"
 #include "app/completion_command.h"
 #include "app/criteria_command.h"
+#include "app/diff_command.h"
 #include "app/error_report.h"
 #include "app/exit_codes.h"
 #include "app/export_command.h"
@@ -34,6 +35,7 @@ int main(int argc, char** argv) {
   shockmap::AddQueryCommand(app);
   shockmap::AddCriteriaCommand(app);
   shockmap::AddMapCommand(app);
+  shockmap::AddDiffCommand(app);
   shockmap::AddSimulateCommand(app);
   shockmap::AddSizingCommand(app);
   shockmap::AddViewCommands(app);
@@ -41,18 +43,21 @@ int main(int argc, char** argv) {
   shockmap::AddExportCommand(app);
   shockmap::AddCompletionCommand(app);
   // CLI11 would only say that a subcommand is required.
-  if (argc > 1 && argv[1][0] != '-') {
-    std::string known;
-    bool found = false;
-    for (const CLI::App* sub : app.get_subcommands({})) {
-      known += (known.empty() ? "" : ", ") + sub->get_name();
-      found = found || sub->get_name() == argv[1];
-    }
-    if (!found) {
-      std::cerr << "shockmap: error: unknown command \"" << argv[1] << "\"; use one of " << known
-                << '\n';
-      return shockmap::kExitBadInput;
-    }
+  std::string known;
+  bool found = false;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    known += (known.empty() ? "" : ", ") + sub->get_name();
+    found = found || (argc > 1 && sub->get_name() == argv[1]);
+  }
+  if (argc == 1) {
+    std::cerr << "shockmap: error: a command is required, one of " << known
+              << "; `shockmap --help` says what each does\n";
+    return shockmap::kExitBadInput;
+  }
+  if (argv[1][0] != '-' && !found) {
+    std::cerr << "shockmap: error: unknown command \"" << argv[1] << "\"; use one of " << known
+              << " (`shockmap --help` says what each does)\n";
+    return shockmap::kExitBadInput;
   }
   try {
     app.parse(argc, argv);

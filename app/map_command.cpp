@@ -25,7 +25,7 @@ struct MapFlags {
 
 void Draw(const MapFlags& f) {
   if (!f.out.empty()) CheckPathLength(f.out, "--out");
-  const std::string study = ResolveStudyName(f.database_path, f.study);
+  const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "map");
   const auto points = LoadScoredPoints(f.database_path, study, "explicit-modal");
   MapOptions options;
   options.metric = f.metric;

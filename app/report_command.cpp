@@ -6,11 +6,12 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <utility>
 
 #include "app/flag_checks.h"
 #include "app/sizing_command.h"
 #include "app/thresholds.h"
-#include "compare/comparison.h"
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
@@ -18,8 +19,8 @@
 #include "db/schema.h"
 #include "db/sqlite_handle.h"
 #include "db/study_database.h"
+#include "engine/point_replay.h"
 #include "engine/provenance.h"
-#include "engine/reference_store.h"
 #include "formats/history_csv.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
@@ -27,6 +28,7 @@
 #include "views/comparison_plot.h"
 #include "views/contact_force_map.h"
 #include "views/ensemble_sizing.h"
+#include "views/fig3_svg.h"
 #include "views/html_report.h"
 #include "views/scored_points.h"
 
@@ -40,22 +42,53 @@ struct ReportFlags {
   std::string out;
 };
 
-// Recomputes one stored point against its stored reference and draws its Fig. 3 into
-// ctx.dir/points/point_ID; nothing when its reference is not stored.
-std::optional<PointFigure> DrawFig3(const ReportContext& ctx, const StudySpec& spec,
-                                    std::int64_t point_id, const StoredStudyPoint& stored) {
-  const auto row = StoredReference(ctx.database_path, stored.reference_key);
-  if (!row) return std::nullopt;
-  const auto reference =
-      std::make_shared<const ReferenceRun>(FromReferenceRow(*row, ctx.database_path));
-  const ComparisonResult r = ScoreAgainstReference(ProblemOf(spec, stored.point),
-                                                   OptionsOf(spec, stored.point), reference);
-  const auto dir = ctx.dir / "points" / fmt::format("point_{}", point_id);
-  CreateOutputDirectory(dir);
-  WriteComparisonCsv(r, dir);
-  return PointFigure{
-      PlotComparison(r, ProblemOf(spec, stored.point), OptionsOf(spec, stored.point), dir),
-      r.scores};
+// Fig. 3 of a stored point, its run computed again against its stored reference; `with_files`
+// also writes its histories as CSV and the figure by gnuplot into ctx.dir/points/point_ID.
+PointFigure Fig3Of(const ReportContext& ctx, const StudySpec& spec, std::int64_t point_id,
+                   const StudyPoint& point, std::shared_ptr<const ReferenceRun> reference,
+                   bool with_files) {
+  const ReplayedPoint replay = ReplayStudyPoint(spec, point, std::move(reference));
+  const double window_s = replay.options.window_s;
+  PointFigure figure{Fig3Svg(replay.result, window_s), Fig3Note(replay.result, window_s),
+                     replay.result.scores, std::nullopt};
+  if (with_files) {
+    const auto dir = ctx.dir / "points" / fmt::format("point_{}", point_id);
+    CreateOutputDirectory(dir);
+    WriteComparisonCsv(replay.result, dir);
+    PlotComparison(replay.result, replay.problem, replay.options, dir);
+    figure.files = dir;
+  }
+  return figure;
+}
+
+// Fig. 3 of every stored point whose reference is stored, by point_id, each reference read once;
+// the points `with_files` names get theirs as files too. A corrupt stored reference spoils its
+// points only: they are in `skipped`, with the database's message.
+std::map<std::int64_t, PointFigure> DrawFigures(
+    const ReportContext& ctx, const StudySpec& spec,
+    const std::map<std::int64_t, StoredStudyPoint>& stored,
+    const std::set<std::int64_t>& with_files, std::map<std::int64_t, std::string>& skipped) {
+  StoredReferenceRuns references(ctx.database_path);
+  std::map<std::int64_t, PointFigure> figures;
+  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
+  for (const auto& [id, point] : stored) {
+    if (terminal)
+      fmt::print("  Fig. 3 of point {} ({}/{})\r", id, figures.size() + 1, stored.size());
+    std::fflush(stdout);
+    try {
+      if (auto reference = references.Find(point.reference_key)) {
+        figures[id] =
+            Fig3Of(ctx, spec, id, point.point, std::move(reference), with_files.contains(id));
+      }
+    } catch (const DbError& e) {
+      std::cerr << "shockmap: warning: Fig. 3 of point " << id << " not drawn: " << e.what()
+                << '\n';
+      skipped[id] = e.what();
+    }
+  }
+  fmt::print("  Fig. 3 drawn for {} of {} points, with files for {}\n", figures.size(),
+             stored.size(), with_files.size());
+  return figures;
 }
 
 std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::string& json) {
@@ -67,25 +100,8 @@ std::vector<ReportSection> CanonicalReport(const ReportContext& ctx, const std::
   }
   const auto stored = StudyPointsById(ctx.database_path, ctx.study, spec);
   const auto chosen = PointsWorthFig3(points, ctx.thresholds);
-  std::map<std::int64_t, PointFigure> figures;
-  std::map<std::int64_t, std::string> skipped;  // A corrupt reference spoils its points only.
-  const bool terminal = ::isatty(STDOUT_FILENO) != 0;
-  for (std::int64_t id : chosen) {
-    if (terminal)
-      fmt::print("  Fig. 3 of point {} ({}/{})\r", id, figures.size() + 1, chosen.size());
-    std::fflush(stdout);
-    const auto found = stored.find(id);
-    if (found == stored.end()) continue;
-    try {
-      if (auto figure = DrawFig3(ctx, spec, id, found->second)) figures[id] = *figure;
-    } catch (const DbError& e) {
-      std::cerr << "shockmap: warning: Fig. 3 of point " << id << " not drawn: " << e.what()
-                << '\n';
-      skipped[id] = e.what();
-    }
-  }
-  fmt::print("  Fig. 3 drawn for {} of {} points; the other points' pages give the command\n",
-             figures.size(), stored.size());
+  std::map<std::int64_t, std::string> skipped;
+  const auto figures = DrawFigures(ctx, spec, stored, {chosen.begin(), chosen.end()}, skipped);
   auto sections = CanonicalSections(ctx, spec, figures);
   if (!skipped.empty()) sections.insert(sections.begin(), SkippedFigures(skipped));
   return sections;

@@ -26,19 +26,25 @@ struct SimulateFlags {
   SceneFileAccess access;
 };
 
+// "10 modes per plane" when every beam keeps as many, "8 to 10 modes per beam and plane"
+// otherwise.
+std::string ModesKept(const std::vector<int>& modes_per_beam) {
+  const auto [fewest, most] = std::minmax_element(modes_per_beam.begin(), modes_per_beam.end());
+  if (*fewest == *most) return fmt::format("{} modes per plane", *most);
+  return fmt::format("{} to {} modes per beam and plane", *fewest, *most);
+}
+
 void PrintHuman(const Scene& scene, const SceneRun& run) {
   const RunSummary& s = run.result.summary;
-  const auto [fewest, most] =
-      std::minmax_element(run.modes_per_beam.begin(), run.modes_per_beam.end());
   fmt::print("shockmap simulate: {}, {} s simulated\n", scene.name, scene.solver.end_time_s);
   fmt::print("  status            {}{} (max energy ratio {:.4g})\n", ToString(s.status),
              s.message.empty() ? "" : " (" + s.message + ")", s.max_energy_ratio);
-  fmt::print(
-      "  model             {}, {}, {} ({}-{} modes per beam and plane, R_ftrunc = {:g}), {}\n",
-      Counted(static_cast<long long>(scene.beams.size()), "beam"),
-      Counted(static_cast<long long>(scene.zones.size()), "zone"),
-      Counted(run.coordinates, "modal coordinate"), *fewest, *most, scene.solver.r_ftrunc,
-      Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
+  fmt::print("  model             {}, {}, {} ({}, R_ftrunc = {:g}), {}\n",
+             Counted(static_cast<long long>(scene.beams.size()), "beam"),
+             Counted(static_cast<long long>(scene.zones.size()), "zone"),
+             Counted(run.coordinates, "modal coordinate"), ModesKept(run.modes_per_beam),
+             scene.solver.r_ftrunc,
+             Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {}\n", s.dt_used_s, s.dt_requested_s,
              Counted(s.steps_taken, "step"));
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",

@@ -44,13 +44,38 @@ std::string ResolveEnsemble(Connection& db, const std::string& study) {
                    listed);
 }
 
-// The hottest zone of each state and setting, then how each setting compares and what the
-// members cost.
+// Lines beneath a table fit the terminal as the table does: `text` wrapped at spaces to
+// kLineWidth columns, indented by two, its continuations by four.
+constexpr std::size_t kLineWidth = 110;
+
+void PrintWrapped(const std::string& text, std::size_t indent = 2) {
+  std::string line(indent, ' ');
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find(' ', begin);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(begin, end - begin);
+    if (line.size() > indent && line.size() + 1 + word.size() > kLineWidth) {
+      fmt::print("{}\n", line);
+      line = std::string(indent + 2, ' ');
+    } else if (line.size() > indent) {
+      line += ' ';
+    }
+    line += word;
+    begin = end + 1;
+  }
+  fmt::print("{}\n", line);
+}
+
+// The hottest zone of each family per state and setting, then how each setting compares and
+// what the members cost.
 void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
-  fmt::print(
-      "study {}: P{:g} of the largest force per zone, {:g} % intervals (order statistics; "
-      "bootstrap as a cross-check), settings agreeing within {:g} %\n",
-      s.study, 100 * s.options.quantile, 100 * s.options.confidence, 100 * s.options.tolerance);
+  PrintWrapped(
+      fmt::format("study {}: P{:g} of the largest force per zone, {:g} % intervals (order "
+                  "statistics; bootstrap as a cross-check), settings agreeing within {:g} %",
+                  s.study, 100 * s.options.quantile, 100 * s.options.confidence,
+                  100 * s.options.tolerance),
+      0);
   if (s.pending + s.failed > 0) {
     fmt::print("  {} members pending, {} not ok: not counted\n", s.pending, s.failed);
   }
@@ -58,17 +83,18 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
     fmt::print("  {} stored members the study file no longer has: not counted\n", s.superseded);
   }
   WriteTable(HottestZoneTable(s, true), TableFormat::kTable, std::cout);
+  for (const std::string& line : SizingFootnotes(s, false)) PrintWrapped(line);
   for (const GroupSizing& g : s.groups) {
     const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
     const WidthScaling scaling = MeanWidthScaling(forces, s.options);
     if (scaling.mean_width.empty()) continue;
-    fmt::print(
-        "  {} {}: the hottest zone's interval narrows as members^{:.2f} (its mean width "
-        "over 400 resamples of {} to {} members; the members in order: ^{:.2f})\n",
+    PrintWrapped(fmt::format(
+        "{} {}: the hottest zone's interval narrows as members^{:.2f} (its mean width "
+        "over 400 resamples of {} to {} members; the members in order: ^{:.2f})",
         g.state, g.setting_json, scaling.slope, scaling.mean_width.front().first,
-        scaling.mean_width.back().first, WidthSlope(SizingConvergence(forces, s.options)));
+        scaling.mean_width.back().first, WidthSlope(SizingConvergence(forces, s.options))));
   }
-  for (const std::string& line : AgreementLines(s)) fmt::print("  {}\n", line);
+  for (const std::string& line : AgreementLines(s)) PrintWrapped(line);
 }
 
 // The most worn zone of each state and setting, when the members have wear volumes (every
@@ -82,12 +108,13 @@ void PrintWearTable(const EnsembleSizing& s) {
         s.study);
     return;
   }
-  fmt::print(
-      "study {}: P{:g} of the wear volume over the scene's wear life, the most worn zone of "
-      "each state and setting, {:g} % intervals; Wilks' limit, the design value (every zone: "
-      "--format csv|json)\n",
-      s.study, 100 * s.options.quantile, 100 * s.options.confidence);
+  PrintWrapped(fmt::format("study {}: P{:g} of the wear volume over the scene's wear life, the "
+                           "most worn zone of each state and setting, {:g} % intervals; Wilks' "
+                           "limit, the design value",
+                           s.study, 100 * s.options.quantile, 100 * s.options.confidence),
+               0);
   WriteTable(table, TableFormat::kTable, std::cout);
+  for (const std::string& line : SizingFootnotes(s, true)) PrintWrapped(line);
 }
 
 void Size(const SizingFlags& f) {
@@ -136,8 +163,9 @@ void AddSizingCommand(CLI::App& app) {
   auto flags = std::make_shared<SizingFlags>();
   CLI::App* sizing = app.add_subcommand(
       "sizing",
-      "Sizing statistics of an ensemble study: per zone and for the hottest zone, per clearance "
-      "state and setting, P50/P95/P99 of the largest force with order-statistic intervals, "
+      "Sizing statistics of an ensemble study: per zone and for the hottest zone of each family "
+      "(pin-pin wire, duct pad, pin-wrapper), per clearance state and setting, P50/P95/P99 of the "
+      "largest force with order-statistic intervals, "
       "Wilks' upper tolerance limit, a bootstrap cross-check, impact statistics, and each "
       "setting against the refined one; with --wear, the same of the wear volume");
   sizing->add_option("STUDY", flags->study, "study name (default: the database's only ensemble)");
@@ -162,7 +190,7 @@ void AddSizingCommand(CLI::App& app) {
   sizing->add_option("--out", flags->out, "folder for the CSV tables and the pictures");
   sizing
       ->add_option("--format", flags->format,
-                   "standard output: the hottest zones as a table, "
+                   "standard output: each family's hottest zone as a table, "
                    "or every zone as CSV or JSON")
       ->capture_default_str()
       ->check(CLI::IsMember({"table", "csv", "json"}));

@@ -11,6 +11,7 @@
 #include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "db/study_queries.h"
+#include "engine/mpi_job.h"
 #include "engine/stop_request.h"
 #include "engine/study_run.h"
 #include "formats/counted.h"
@@ -230,7 +231,7 @@ void AddStudyCommand(CLI::App& app) {
 
   CLI::App* run = study->add_subcommand(
       "run", "Run every missing point of a study file into the database (resumable)");
-  run->add_option("STUDY", flags->spec_path, "study file (JSON)")->required();
+  run->add_option("STUDY", flags->spec_path, "study file (JSON)")->type_name("FILE")->required();
   AddDatabaseFlag(run, flags->run.database_path);
   run->add_option("--jobs", flags->run.jobs,
                   "worker threads (default: number of cores; under MPI: per worker rank, "

@@ -5,9 +5,7 @@
 #include <algorithm>
 
 #include "app/flag_checks.h"
-#include "db/report_queries.h"
-#include "formats/json_reader.h"
-#include "formats/study_file.h"
+#include "views/study_thresholds.h"
 
 namespace shockmap {
 
@@ -29,13 +27,7 @@ void AddThresholdFlags(CLI::App* command, ThresholdFlags& flags) {
 
 CriteriaOptions ThresholdsFor(const ThresholdFlags& flags, const std::string& database_path,
                               const std::string& study) {
-  CriteriaOptions options;
-  if (const auto stored = StoredStudySpec(database_path, study)) {
-    const std::string file = database_path + ": stored study " + study;
-    options.thresholds = StudyThresholds(ParseJsonText(*stored, file), file);
-  }
-  for (const auto& [name, threshold] : flags.given) options.thresholds[name] = threshold;
-  return options;
+  return StudyCriteriaOptions(database_path, study, flags.given);
 }
 
 }  // namespace shockmap

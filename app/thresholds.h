@@ -21,9 +21,8 @@ struct ThresholdFlags {
 // --NAME-min otherwise.
 void AddThresholdFlags(CLI::App* command, ThresholdFlags& flags);
 
-// The criteria options of the stored `study`: its study file's thresholds with the flags given
-// over them. Throws InputError when the stored study file's thresholds are unreadable, DbError
-// as the read-only queries do.
+// The criteria options of the stored `study` with the flags given over its own thresholds
+// (views/study_thresholds.h).
 CriteriaOptions ThresholdsFor(const ThresholdFlags& flags, const std::string& database_path,
                               const std::string& study);
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/flag_checks.h"
+#include "app/shared_data.h"
 #include "app/thresholds.h"
 #include "core/input_error.h"
 #include "db/report_queries.h"
@@ -61,12 +62,12 @@ bool IsSceneFile(const std::string& argument) {
 }
 
 // Each zone's R_k and each beam's truncation from the criteria file (docs/ensembles.md).
-void AdviseForScene(const ViewFlags& f) {
+void AdviseForScene(const ViewFlags& f, const std::string& criteria_file) {
   const Scene scene = LoadScene(f.study, f.access);
   CriteriaTolerances tolerances;
   const ValidityCriteria criteria =
-      CriteriaFromJson(ReadJsonFile(f.criteria), f.criteria, &tolerances);
-  std::cout << "criteria from " << f.criteria << '\n'
+      CriteriaFromJson(ReadJsonFile(criteria_file), criteria_file, &tolerances);
+  std::cout << "criteria from " << criteria_file << '\n'
             << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone);
 }
 
@@ -85,7 +86,8 @@ void AddPlotCommand(CLI::App& app, const Flags& flags) {
   fig4->add_option("--out", flags->out, "image, .png or .svg (default: out/STUDY_fig4.png)");
   fig4->callback([flags] {
     CheckPlotPath(flags->out);
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study =
+        ResolveCanonicalStudy(flags->database_path, flags->study, "plot fig4");
     const std::string out = flags->out.empty() ? "out/" + study + "_fig4.png" : flags->out;
     DrawFig4(study, LoadScoredPoints(flags->database_path, study, "explicit-modal"),
              LoadScoredPoints(flags->database_path, study, "implicit-full"),
@@ -111,7 +113,7 @@ void AddCostCommand(CLI::App& app, const Flags& flags) {
                                  "--rk only the table is printed");
     }
     CheckPlotPath(flags->out);
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study = ResolveCanonicalStudy(flags->database_path, flags->study, "cost");
     const auto tables =
         BuildCostTables(LoadScoredPoints(flags->database_path, study, "explicit-modal"),
                         LoadScoredPoints(flags->database_path, study, "implicit-full"),
@@ -138,21 +140,27 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
   advise->add_option("--rk", flags->r_k, "stiffness ratio to advise for (a study's advice)")
       ->check(Positive());
   advise->add_flag("--json", flags->json, "print the advice as one JSON object");
-  advise
-      ->add_option("--criteria", flags->criteria,
-                   "with a scene file for STUDY: criteria JSON written by `criteria derive "
-                   "--out`")
-      ->capture_default_str();
+  CLI::Option* criteria =
+      advise
+          ->add_option("--criteria", flags->criteria,
+                       "with a scene file for STUDY: criteria JSON written by `criteria derive "
+                       "--out`; the default is looked up in the working folder, then in the "
+                       "shared data installed with shockmap (share/shockmap)")
+          ->capture_default_str();
   advise->add_flag("--zones", flags->every_zone, "with a scene file: also list every zone");
   AddAllowPathFlag(advise, flags->access);
-  advise->callback([flags] {
-    if (IsSceneFile(flags->study)) return AdviseForScene(*flags);
+  advise->callback([flags, criteria] {
+    if (IsSceneFile(flags->study)) {
+      return AdviseForScene(*flags, criteria->count() > 0
+                                        ? flags->criteria
+                                        : DefaultDataFile(flags->criteria, "--criteria"));
+    }
     if (flags->r_k <= 0.0) {
       throw InputError(
           "--rk: required to advise from a study (or give a scene file, *.json, "
           "for STUDY)");
     }
-    const std::string study = ResolveStudyName(flags->database_path, flags->study);
+    const std::string study = ResolveCanonicalStudy(flags->database_path, flags->study, "advise");
     const auto points = LoadScoredPoints(flags->database_path, study, "explicit-modal");
     const StudySpec spec = StoredSpec(flags->database_path, study);
     const Advice a = Advise(

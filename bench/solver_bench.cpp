@@ -7,6 +7,10 @@
 //                                        acceleration, dt = (dt_tenths / 10) * sharp bound
 // Pairs of equal accuracy are read off `shockmap compare` (README, "What accuracy costs").
 //   ReferenceRun/R_fref        the piecewise-modal reference (solution + sampling, no check)
+//   CompareCall                `shockmap compare --rk 3000 --rftrunc 300` as the library runs
+//                              it (RunComparison: reference, its check, the run, the scores):
+//                              the C++ call bench/python_call_overhead.py sets the Python
+//                              module's compare() against
 //   ExplicitModalStep/R_ftrunc one central-difference step of the paper's method alone (no
 //                              recording), the state carried from step to step;
 //                              s_per_unknown_step = time / modes
@@ -94,6 +98,14 @@ void ReferenceRun(benchmark::State& state) {
   state.counters["transitions"] = transitions;
 }
 BENCHMARK(ReferenceRun)->ArgName("rfref")->Arg(1000)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+void CompareCall(benchmark::State& state) {
+  for (auto _ : state) {
+    const ComparisonResult result = RunComparison(kProblem, kDefaults);
+    benchmark::DoNotOptimize(result.scores["err"]);
+  }
+}
+BENCHMARK(CompareCall)->Unit(benchmark::kMillisecond);
 
 void ExplicitModalStep(benchmark::State& state) {
   const ImpactModel model =

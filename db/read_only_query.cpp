@@ -87,13 +87,13 @@ class Collector : public TableSink {
 }  // namespace
 
 void StreamReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                         const std::vector<std::string>& text_parameters, const QueryLimits& limits,
+                         const std::vector<TableCell>& parameters, const QueryLimits& limits,
                          TableSink& sink) {
   Connection db(database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
   Statement statement = PrepareOne(db, sql);
-  for (std::size_t i = 0; i < text_parameters.size(); ++i) {
-    statement.Bind(static_cast<int>(i + 1), text_parameters[i]);
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    statement.BindValue(static_cast<int>(i + 1), parameters[i]);
   }
   Deadline deadline{Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                        std::chrono::duration<double>(limits.timeout_s))};
@@ -115,10 +115,10 @@ void StreamReadOnlyQuery(const std::string& database_path, const std::string& sq
 }
 
 Table RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                       const std::vector<std::string>& text_parameters) {
+                       const std::vector<TableCell>& parameters) {
   Table result;
   Collector collector(result);
-  StreamReadOnlyQuery(database_path, sql, text_parameters, {}, collector);
+  StreamReadOnlyQuery(database_path, sql, parameters, {}, collector);
   return result;
 }
 

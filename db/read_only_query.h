@@ -22,17 +22,17 @@ class QueryLimitReached : public DbError {
   using DbError::DbError;
 };
 
-// Runs exactly one statement, binding `text_parameters` to its ?1, ?2, ..., and hands its rows
-// to `sink` without holding them. Throws DbError when the file does not exist or is not a
-// current shockmap database, the SQL does not compile, holds more than one statement, or could
-// write (sqlite3_stmt_readonly); QueryLimitReached when `limits` stop it. The connection is
-// read-only (see Connection::Mode::kReadOnly).
+// Runs exactly one statement, binding `parameters` (NULL, integers, reals, texts) to its ?1,
+// ?2, ..., and hands its rows to `sink` without holding them. Throws DbError when the file does not
+// exist or is not a current shockmap database, the SQL does not compile, holds more than one
+// statement, or could write (sqlite3_stmt_readonly); QueryLimitReached when `limits` stop it. The
+// connection is read-only (see Connection::Mode::kReadOnly).
 void StreamReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                         const std::vector<std::string>& text_parameters, const QueryLimits& limits,
+                         const std::vector<TableCell>& parameters, const QueryLimits& limits,
                          TableSink& sink);
 
 // StreamReadOnlyQuery without limits, its rows collected.
 Table RunReadOnlyQuery(const std::string& database_path, const std::string& sql,
-                       const std::vector<std::string>& text_parameters = {});
+                       const std::vector<TableCell>& parameters = {});
 
 }  // namespace shockmap

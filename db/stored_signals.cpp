@@ -59,6 +59,17 @@ std::vector<std::int64_t> ReferenceIdsAt(const std::string& database_path, const
   return ids;
 }
 
+std::vector<double> ScoredRks(const std::string& database_path, const std::string& study) {
+  const auto db = OpenReadOnly(database_path);
+  Statement s = db->Prepare(
+      "SELECT DISTINCT p.r_k FROM points p JOIN studies st USING (study_id) "
+      "JOIN scores sc USING (point_id) WHERE st.name = ?1 ORDER BY p.r_k");
+  s.BindAll(study);
+  std::vector<double> r_k;
+  while (s.Step()) r_k.push_back(s.GetDouble(0));
+  return r_k;
+}
+
 std::optional<ReferenceRow> ReadReference(const std::string& database_path,
                                           std::int64_t reference_id) {
   const auto r =

@@ -25,6 +25,10 @@ struct StoredSignals {
 std::vector<std::int64_t> ReferenceIdsAt(const std::string& database_path, const std::string& study,
                                          double r_k);
 
+// The distinct R_k of the scored points of `study` (the paper's problem), ascending. Throws
+// DbError as RunReadOnlyQuery.
+std::vector<double> ScoredRks(const std::string& database_path, const std::string& study);
+
 // A reference of the paper's problem (table reference_runs), or nothing for an unknown id.
 std::optional<ReferenceRow> ReadReference(const std::string& database_path,
                                           std::int64_t reference_id);

@@ -70,9 +70,11 @@ PointParameters ParametersOf(const StudyPoint& p) {
 CanonicalStudy::CanonicalStudy(StudySpec spec)
     : spec_(std::move(spec)), header_{spec_.file, spec_.name, spec_.spec_json} {}
 
-bool CanonicalStudy::KeepsSettingsOf(const nlohmann::json& stored,
-                                     const std::string& database_path) const {
-  return SettingsKey(ParseStudySpec(stored, database_path)) == SettingsKey(spec_);
+std::optional<SettingChange> CanonicalStudy::ChangedSetting(
+    const nlohmann::json& stored, const std::string& database_path) const {
+  return FirstChangedSetting(
+      nlohmann::json::parse(SettingsKey(ParseStudySpec(stored, database_path))),
+      nlohmann::json::parse(SettingsKey(spec_)));
 }
 
 NewPoint CanonicalStudy::Describe(const Point& point) const {

@@ -28,9 +28,9 @@ class CanonicalStudy {
   const StudyHeader& Header() const { return header_; }
   const PointTable& Table() const { return kCanonicalPoints; }
   static constexpr StudyFileKind kFileKind = StudyFileKind::kCanonical;
-  static constexpr std::string_view kLifelongSettings = "other problem or scoring settings";
   static constexpr std::string_view kChangeableSettings = "grid axes";
-  bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
+  std::optional<SettingChange> ChangedSetting(const nlohmann::json& stored,
+                                              const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
   // Keyed by its parameters; its reference by the problem, window and reference settings.
   NewPoint Describe(const Point& point) const;

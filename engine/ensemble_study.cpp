@@ -31,18 +31,23 @@ std::string ZonesJson(const Scene& scene) {
 EnsembleStudy::EnsembleStudy(EnsembleStudySpec spec)
     : spec_(std::move(spec)), header_{spec_.file, spec_.name, spec_.spec_json} {}
 
-bool EnsembleStudy::KeepsSettingsOf(const Json& stored, const std::string&) const {
+// Clearance states may be added; one of the same name keeps its settings.
+std::optional<SettingChange> EnsembleStudy::ChangedSetting(const Json& stored,
+                                                           const std::string&) const {
   const Json was = stored.value("settings_key", Json());
   const Json now = Json::parse(EnsembleSettingsKey(spec_));
-  if (!was.is_object()) return false;
+  if (!was.is_object()) return FirstChangedSetting(was, now, "settings");
   for (const char* key : {"scene", "seed", "draws", "window_s", "impact_counting"}) {
-    if (was.value(key, Json()) != now.at(key)) return false;
+    if (auto change = FirstChangedSetting(was.value(key, Json()), now.at(key), key)) return change;
   }
   const Json was_states = was.value("states", Json::object());
   for (const auto& [name, state] : now.at("states").items()) {
-    if (was_states.contains(name) && was_states.at(name) != state) return false;
+    if (!was_states.contains(name)) continue;
+    if (auto change = FirstChangedSetting(was_states.at(name), state, "states." + name)) {
+      return change;
+    }
   }
-  return true;
+  return std::nullopt;
 }
 
 NewPoint EnsembleStudy::Describe(const Point& m) const {

@@ -21,11 +21,10 @@ class EnsembleStudy {
   const StudyHeader& Header() const { return header_; }
   const PointTable& Table() const { return kEnsembleMembers; }
   static constexpr StudyFileKind kFileKind = StudyFileKind::kSceneEnsemble;
-  static constexpr std::string_view kLifelongSettings =
-      "another scene, seed, draws, window or clearance state of the same name";
   static constexpr std::string_view kChangeableSettings =
       "the member count, the settings and new clearance states";
-  bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
+  std::optional<SettingChange> ChangedSetting(const nlohmann::json& stored,
+                                              const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
   // Keyed by state, setting and index; its reference key is its state's name, a few bytes in
   // each of up to a million rows (the nominal run's own key, NominalKey, holds the whole scene

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "engine/remote_workers.h"
+#include "engine/mpi_job.h"
 
 namespace shockmap {
 

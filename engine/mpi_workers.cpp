@@ -26,7 +26,7 @@
 #include <thread>
 
 #include "engine/byte_codec.h"
-#include "engine/remote_workers.h"
+#include "engine/mpi_job.h"
 
 namespace shockmap {
 namespace {

@@ -1,6 +1,7 @@
 #include "engine/point_replay.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/input_error.h"
 #include "db/report_queries.h"
@@ -34,11 +35,25 @@ ReplayedPoint ReplayCanonicalPoint(const std::string& database_path, const std::
   }
   const auto reference = ReadReference(database_path, *reference_id);
   if (!reference) throw InputError(what + ": its reference is missing from " + database_path);
-  ReplayedPoint replay{{}, ProblemOf(spec, *point), OptionsOf(spec, *point)};
-  replay.result = ScoreAgainstReference(
-      replay.problem, replay.options,
+  return ReplayStudyPoint(
+      spec, *point,
       std::make_shared<const ReferenceRun>(FromReferenceRow(*reference, database_path)));
+}
+
+ReplayedPoint ReplayStudyPoint(const StudySpec& spec, const StudyPoint& point,
+                               std::shared_ptr<const ReferenceRun> reference) {
+  ReplayedPoint replay{{}, ProblemOf(spec, point), OptionsOf(spec, point)};
+  replay.result = ScoreAgainstReference(replay.problem, replay.options, std::move(reference));
   return replay;
+}
+
+std::shared_ptr<const ReferenceRun> StoredReferenceRuns::Find(const std::string& reference_key) {
+  if (const auto found = runs_.find(reference_key); found != runs_.end()) return found->second;
+  std::shared_ptr<const ReferenceRun> run;
+  if (const auto row = StoredReference(database_path_, reference_key)) {
+    run = std::make_shared<const ReferenceRun>(FromReferenceRow(*row, database_path_));
+  }
+  return runs_[reference_key] = run;
 }
 
 }  // namespace shockmap

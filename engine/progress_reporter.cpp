@@ -25,27 +25,31 @@ std::string FormatDuration(double seconds) {
 }
 
 ProgressReporter::ProgressReporter(std::string phase, std::string unit, double total,
-                                   std::FILE* out, bool enabled)
+                                   std::FILE* out, bool enabled, ProgressListener listener)
     : phase_(std::move(phase)),
       unit_(std::move(unit)),
       total_(total),
       out_(out),
       enabled_(enabled && total > 0),
       terminal_(isatty(fileno(out)) != 0),
+      listener_(total > 0 ? std::move(listener) : ProgressListener{}),
       start_(std::chrono::steady_clock::now()),
       last_print_(start_) {}
 
 void ProgressReporter::Update(double done, std::string_view detail) {
-  if (!enabled_) return;
+  if (!enabled_ && !listener_) return;
   const auto now = std::chrono::steady_clock::now();
   const double since = std::chrono::duration<double>(now - last_print_).count();
-  if (since < (terminal_ ? kBarInterval_s : kLineInterval_s)) return;
+  if (since < (terminal_ || listener_ ? kBarInterval_s : kLineInterval_s)) return;
   last_print_ = now;
-  Print(done, detail, false);
+  Report(done, detail, false);
 }
 
-void ProgressReporter::Finish(double done, std::string_view detail) {
-  if (enabled_) Print(done, detail, true);
+void ProgressReporter::Finish(double done, std::string_view detail) { Report(done, detail, true); }
+
+void ProgressReporter::Report(double done, std::string_view detail, bool final_line) {
+  if (listener_) listener_(phase_, done, total_);
+  if (enabled_) Print(done, detail, final_line);
 }
 
 void ProgressReporter::Print(double done, std::string_view detail, bool final_line) {

@@ -6,17 +6,23 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <string_view>
 
 namespace shockmap {
 
+// A caller following a phase in its own way (the Python module's callback): the phase's name,
+// the work done and the total, at most every 0.1 s and once at the phase's end.
+using ProgressListener = std::function<void(std::string_view phase, double done, double total)>;
+
 class ProgressReporter {
  public:
-  // `phase` names the work ("references", "points", "simulate bundle_hex"), `unit` what
-  // done and total count ("references", "points", "s simulated"); writes to `out`, nothing
-  // when `enabled` is false or total <= 0.
-  ProgressReporter(std::string phase, std::string unit, double total, std::FILE* out, bool enabled);
+  // `phase` names the work ("references", "points", "simulate bundle_hex"), `unit` follows the
+  // numbers ("done" where the phase names what is counted, "s simulated"); writes to `out`, nothing
+  // when `enabled` is false or total <= 0; `listener`, when given, is told too.
+  ProgressReporter(std::string phase, std::string unit, double total, std::FILE* out, bool enabled,
+                   ProgressListener listener = {});
   // `detail` follows the numbers ("diverged 3, failed 0"). Prints at most every 0.1 s on a
   // terminal and every 5 s otherwise, so a caller may call it after every item.
   void Update(double done, std::string_view detail = {});
@@ -24,6 +30,7 @@ class ProgressReporter {
   void Finish(double done, std::string_view detail = {});
 
  private:
+  void Report(double done, std::string_view detail, bool final_line);
   void Print(double done, std::string_view detail, bool final_line);
 
   std::string phase_;
@@ -32,6 +39,7 @@ class ProgressReporter {
   std::FILE* out_;
   bool enabled_;
   bool terminal_;
+  ProgressListener listener_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
 };

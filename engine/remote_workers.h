@@ -68,8 +68,9 @@ class RemoteWorkers {
                                          const std::function<bool()>& poll,
                                          const Describe& describe) = 0;
 
-  // The exit code of a job that lost a rank, which ends in MPI_Abort (see JoinMpiJob): 1 unless
-  // set, on rank 0, before the object is destroyed (the code of the error that ends the run).
+  // The exit code of a job that lost a rank, which ends in MPI_Abort (see engine/mpi_job.h): 1
+  // unless set, on rank 0, before the object is destroyed (the code of the error that ends the
+  // run).
   virtual void SetExitCode(int exit_code) = 0;
 
   // On ranks 1..N-1: runs every task rank 0 sends on ThreadsPerRank() threads and sends back
@@ -82,16 +83,5 @@ class RemoteWorkers {
 // tasks take.
 inline constexpr double kDefaultRankTimeoutS = 60.0;
 inline constexpr double kWorkerHeartbeatPeriodS = 0.5;
-
-// The workers of this process's MPI job when it was started by an MPI launcher (mpirun, srun)
-// with more than one rank, else null (a local run). `threads` is the threads per worker rank,
-// `rank_timeout_s` the silence after which rank 0 counts a worker rank as lost.
-// Ends the job on every rank when the returned object is destroyed (rank 0 first tells the
-// workers). A job that lost a rank cannot end normally (MPI_Finalize would wait for it): once
-// the live workers have quit (a worker rank silent for the rank timeout while rank 0 waits for
-// its goodbye is lost too), rank 0 ends it with MPI_Abort, exit code 1 or the one set by
-// SetExitCode, stdout and stderr flushed; by then the caller has closed the database. Throws
-// InputError when launched on several ranks by a build without MPI.
-std::unique_ptr<RemoteWorkers> JoinMpiJob(int threads, double rank_timeout_s);
 
 }  // namespace shockmap

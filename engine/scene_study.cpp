@@ -9,9 +9,10 @@ namespace shockmap {
 SceneStudy::SceneStudy(SceneStudySpec spec)
     : spec_(std::move(spec)), header_{spec_.file, spec_.name, spec_.spec_json} {}
 
-bool SceneStudy::KeepsSettingsOf(const nlohmann::json& stored, const std::string&) const {
-  return stored.value("settings", nlohmann::json()) ==
-         nlohmann::json::parse(SceneSettingsKey(spec_));
+std::optional<SettingChange> SceneStudy::ChangedSetting(const nlohmann::json& stored,
+                                                        const std::string&) const {
+  return FirstChangedSetting(stored.value("settings", nlohmann::json()),
+                             nlohmann::json::parse(SceneSettingsKey(spec_)), "settings");
 }
 
 NewPoint SceneStudy::Describe(const Point& point) const {

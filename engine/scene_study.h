@@ -20,9 +20,9 @@ class SceneStudy {
   const StudyHeader& Header() const { return header_; }
   const PointTable& Table() const { return kScenePoints; }
   static constexpr StudyFileKind kFileKind = StudyFileKind::kSceneSweep;
-  static constexpr std::string_view kLifelongSettings = "another scene, reference or scoring";
   static constexpr std::string_view kChangeableSettings = "the sweep";
-  bool KeepsSettingsOf(const nlohmann::json& stored, const std::string& database_path) const;
+  std::optional<SettingChange> ChangedSetting(const nlohmann::json& stored,
+                                              const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
   // Keyed by its parameters' JSON; its reference by the scene with the refined settings over it.
   NewPoint Describe(const Point& point) const;

@@ -9,6 +9,18 @@ namespace shockmap {
 // nohup goes on through SIGHUP. The CLI calls it before a study run.
 void InstallStopHandlers();
 
+// For a process that runs several studies and keeps its own handlers between them (the Python
+// module): while at least one of these lives, the stop handlers are installed; the first to
+// live forgets the signal that stopped an earlier run, the last to die puts the handlers it
+// found back. Safe to hold from several threads at once.
+class StopHandlersDuringRun {
+ public:
+  StopHandlersDuringRun();
+  ~StopHandlersDuringRun();
+  StopHandlersDuringRun(const StopHandlersDuringRun&) = delete;
+  StopHandlersDuringRun& operator=(const StopHandlersDuringRun&) = delete;
+};
+
 // The signal that asked to stop, or 0.
 int StopSignal();
 

@@ -35,7 +35,8 @@ struct StudyRunOptions {
   std::string database_path = kDefaultDatabasePath;
   int jobs = 0;  // 0: one worker per hardware thread.
   bool retry_failed = false;
-  bool progress = true;  // On stderr.
+  bool progress = true;          // On stderr.
+  ProgressListener on_progress;  // Told of each phase's progress too, when given.
   // The worker ranks of an MPI job (rank 0 runs the engine), or null: this process's threads.
   RemoteWorkers* remote = nullptr;
 };
@@ -202,8 +203,8 @@ class StudyRun {
   using ComputedReference = typename W::ComputedReference;
   using ReferenceSlot = typename W::ReferenceSlot;
 
-  // Throws InputError when the study is stored as another kind, or with other lifelong settings
-  // (its stored scores would no longer match its spec).
+  // Throws InputError when the study is stored as another kind, or with another value of a
+  // lifelong setting (its stored scores would no longer match its spec), naming the setting.
   void CheckStoredSpec(const std::string& text) const {
     const StudyHeader& h = kind_.Header();
     const std::string& db = options_.database_path;
@@ -212,9 +213,11 @@ class StudyRun {
     if (StudyKindOf(stored, db) != Kind::kFileKind) {
       throw InputError(exists + " as a study of another kind; give this one a new name");
     }
-    if (!kind_.KeepsSettingsOf(stored, db)) {
-      throw InputError(exists + " with " + std::string(Kind::kLifelongSettings) +
-                       "; its stored scores depend on them. Give the study a new name (" +
+    if (const auto change = kind_.ChangedSetting(stored, db)) {
+      throw InputError(exists + " with " + change->key + " = " + change->stored +
+                       ", where this file gives " + change->given +
+                       ": its stored scores depend on that setting, which may not change under "
+                       "the same name. Give the study a new name to run it with the new value (" +
                        std::string(Kind::kChangeableSettings) + " may change freely).");
     }
   }
@@ -294,8 +297,8 @@ class StudyRun {
     std::ranges::stable_sort(missing, std::greater{},
                              [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
     const CpuTimer timer;
-    ProgressReporter progress("references", "references", static_cast<double>(missing.size()),
-                              stderr, options_.progress);
+    ProgressReporter progress("references", "done", static_cast<double>(missing.size()), stderr,
+                              options_.progress, options_.on_progress);
     auto detail = [&] {
       return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
              std::to_string(summary_.references_failed);
@@ -343,8 +346,8 @@ class StudyRun {
     std::vector<std::int64_t> ids;
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
-    ProgressReporter progress("points", "points", static_cast<double>(to_compute_.size()), stderr,
-                              options_.progress);
+    ProgressReporter progress("points", "done", static_cast<double>(to_compute_.size()), stderr,
+                              options_.progress, options_.on_progress);
     using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
     Distribute<Scored>(
         to_compute_.size(),

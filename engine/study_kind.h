@@ -21,6 +21,7 @@
 #include "core/run_status.h"
 #include "db/study_database.h"
 #include "engine/byte_codec.h"
+#include "formats/setting_change.h"
 #include "formats/study_file.h"
 
 namespace shockmap {
@@ -63,14 +64,14 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
                              ByteReader& reader, const nlohmann::json& stored) {
   { kind.Header() } -> std::same_as<const StudyHeader&>;
   { kind.Table() } -> std::same_as<const PointTable&>;
-  // The study file kind it reads, what a stored study keeps for life (its scores depend on
-  // it: "other problem or scoring settings") and what may change ("grid axes").
+  // The study file kind it reads and what may change under a study's name ("grid axes").
   { K::kFileKind } -> std::convertible_to<StudyFileKind>;
-  { K::kLifelongSettings } -> std::convertible_to<std::string_view>;
   { K::kChangeableSettings } -> std::convertible_to<std::string_view>;
-  // True when a stored spec of this kind (parsed JSON; `text` names the database) keeps the
-  // lifelong settings of this one. May throw InputError when the stored spec is unreadable.
-  { kind.KeepsSettingsOf(stored, text) } -> std::convertible_to<bool>;
+  // The first lifelong setting (what the stored scores depend on, declared as the kind's
+  // settings key; formats/setting_change.h) in which a stored spec of this kind (parsed JSON;
+  // `text` names the database) differs from this one; nullopt when it keeps them all. May
+  // throw InputError when the stored spec is unreadable.
+  { kind.ChangedSetting(stored, text) } -> std::same_as<std::optional<SettingChange>>;
   { kind.Points() } -> std::same_as<const std::vector<typename K::Point>&>;
   // The point's keys and parameter row.
   { kind.Describe(point) } -> std::same_as<NewPoint>;

@@ -1,6 +1,7 @@
 #include "formats/parameter_path.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "formats/json_reader.h"
 
@@ -14,7 +15,8 @@ using Json = nlohmann::json;
   FailAt(file, where,
          "\"" + path +
              "\" is not a parameter path: use keys joined by dots, with [i] for list "
-             "items, e.g. \"solver.r_ftrunc\" or \"zones[0].gap_m\"");
+             "items (at most 9 digits), each key starting with a letter, e.g. \"solver.r_ftrunc\" "
+             "or \"zones[0].gap_m\"");
 }
 
 // A study sets the scene's end time (its window) and its outputs (what it records) itself, so
@@ -35,7 +37,28 @@ void CheckStudyMayVary(const Json::json_pointer& pointer, const std::string& pat
   }
 }
 
+Json::json_pointer PointerOf(const std::string& path, const std::string& file,
+                             const std::string& where) {
+  const auto pointer = ParameterPointer(path);
+  if (!pointer) FailPath(path, file, where);
+  return *pointer;
+}
+
+void CheckNumberAt(const Json& scene, const Json::json_pointer& pointer, const std::string& path,
+                   const std::string& file, const std::string& where) {
+  if (!scene.contains(pointer) || !scene.at(pointer).is_number()) {
+    FailAt(file, where,
+           "the scene has no number at \"" + path +
+               "\"; only numbers the scene file sets can be swept (write the default there)");
+  }
+}
+
 }  // namespace
+
+// A list index longer than this could overflow the JSON pointer's index type, which the JSON
+// library reports by throwing from contains() instead of answering false; for the same reason a
+// key must start with a letter, so that no key is read as a list index.
+constexpr std::size_t kMaxIndexDigits = 9;
 
 std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
   std::string pointer;
@@ -48,9 +71,15 @@ std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
       if (segment.back() != ']' || open == 0) return std::nullopt;
       index = segment.substr(open + 1, segment.size() - open - 2);
       segment.resize(open);
-      if (index.empty() || !std::all_of(index.begin(), index.end(), ::isdigit)) return std::nullopt;
+      if (index.empty() || index.size() > kMaxIndexDigits ||
+          !std::all_of(index.begin(), index.end(), ::isdigit)) {
+        return std::nullopt;
+      }
     }
-    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos) return std::nullopt;
+    if (segment.empty() || !std::isalpha(static_cast<unsigned char>(segment.front())) ||
+        segment.find_first_of("/~]") != std::string::npos) {
+      return std::nullopt;
+    }
     pointer += "/" + segment;
     if (!index.empty()) pointer += "/" + index;
     start = dot + 1;
@@ -60,32 +89,34 @@ std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
 
 Json::json_pointer NumericParameter(const Json& scene, const std::string& path,
                                     const std::string& file, const std::string& where) {
-  const auto pointer = ParameterPointer(path);
-  if (!pointer) FailPath(path, file, where);
-  CheckStudyMayVary(*pointer, path, file, where);
-  if (!scene.contains(*pointer) || !scene.at(*pointer).is_number()) {
-    FailAt(file, where,
-           "the scene has no number at \"" + path +
-               "\"; only numbers the scene file sets can be swept (write the default there)");
-  }
-  return *pointer;
+  const Json::json_pointer pointer = PointerOf(path, file, where);
+  CheckStudyMayVary(pointer, path, file, where);
+  CheckNumberAt(scene, pointer, path, file, where);
+  return pointer;
 }
 
-Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path, const Json& value,
-                                     const std::string& file, const std::string& where) {
-  if (value.is_number()) return NumericParameter(scene, path, file, where);
-  const auto pointer = ParameterPointer(path);
-  if (!pointer) FailPath(path, file, where);
-  CheckStudyMayVary(*pointer, path, file, where);
+Json::json_pointer SceneParameter(const Json& scene, const std::string& path, const Json& value,
+                                  const std::string& file, const std::string& where) {
+  const Json::json_pointer pointer = PointerOf(path, file, where);
+  if (value.is_number()) {
+    CheckNumberAt(scene, pointer, path, file, where);
+    return pointer;
+  }
   if (!value.is_boolean()) {
     FailAt(file, where, "expected a number or true/false, got " + Shown(value));
   }
-  if (!scene.contains(*pointer) || !scene.at(*pointer).is_boolean()) {
+  if (!scene.contains(pointer) || !scene.at(pointer).is_boolean()) {
     FailAt(file, where,
            "the scene has no true/false at \"" + path +
                "\"; only values the scene file sets can be set (write the default there)");
   }
-  return *pointer;
+  return pointer;
+}
+
+Json::json_pointer SameTypeParameter(const Json& scene, const std::string& path, const Json& value,
+                                     const std::string& file, const std::string& where) {
+  CheckStudyMayVary(PointerOf(path, file, where), path, file, where);
+  return SceneParameter(scene, path, value, file, where);
 }
 
 }  // namespace shockmap

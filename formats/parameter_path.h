@@ -19,7 +19,13 @@ nlohmann::json::json_pointer NumericParameter(const nlohmann::json& scene, const
                                               const std::string& file, const std::string& where);
 
 // Where the parameter `path` sits in the scene when it holds a value of the same JSON type as
-// `value` (a number, or true/false); InputError naming `file` and `where` otherwise.
+// `value` (a number, or true/false), any path (a scene set on its own, as the Python module's
+// Scene.set does); InputError naming `file` and `where` otherwise.
+nlohmann::json::json_pointer SceneParameter(const nlohmann::json& scene, const std::string& path,
+                                            const nlohmann::json& value, const std::string& file,
+                                            const std::string& where);
+
+// SceneParameter, refused also where a study sets the value itself (as NumericParameter).
 nlohmann::json::json_pointer SameTypeParameter(const nlohmann::json& scene, const std::string& path,
                                                const nlohmann::json& value, const std::string& file,
                                                const std::string& where);

@@ -45,8 +45,6 @@ struct Range {
   bool Contains(double v) const { return (lo_strict ? v > lo : v >= lo) && v <= hi; }
 };
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
 // An axis: a number, a non-empty list of numbers, {"logspace": [a, b, n]} (n values from 10^a
 // to 10^b) or {"linspace": [a, b, n]}.
 std::vector<double> ParseAxis(const Json& value, const std::string& file, const std::string& path,
@@ -465,23 +463,23 @@ std::string ReferenceKey(const StudySpec& spec, const StudyPoint& p) {
 
 std::string SettingsKey(const StudySpec& spec) {
   const ScoringSpec& s = spec.scoring;
-  Json key{{"problem", ProblemJson(spec.problem)},
-           {"psd",
-            {{"n_samples", s.psd.n_samples},
-             {"window", ToString(s.psd.window)},
-             {"zero_padding_factor", s.psd.zero_padding_factor}}},
-           {"rest_duration_t1", s.rest_duration_t1},
-           {"reference",
-            {{"r_fref_min", s.reference.r_fref_min},
-             {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
-             {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
-             {"tolerance", s.reference.tolerance}}}};
-  // Only when not the default, so that studies stored before the settings keep their key.
-  if (!s.psd.one_sided) key["psd"]["scaling"] = "two_sided";
-  if (s.srf_definition != SrfDefinition::kFirstShock) {
-    key["srf_definition"] = ToString(s.srf_definition);
-  }
-  return key.dump();
+  return Json{{"problem", ProblemJson(spec.problem)},
+              {"scoring",
+               {{"window_s", s.window_s},
+                {"psd",
+                 {{"n_samples", s.psd.n_samples},
+                  {"window", ToString(s.psd.window)},
+                  {"zero_padding_factor", s.psd.zero_padding_factor},
+                  {"scaling", s.psd.one_sided ? "one_sided" : "two_sided"}}},
+                {"shocks",
+                 {{"rest_duration_t1", s.rest_duration_t1},
+                  {"srf_definition", ToString(s.srf_definition)}}},
+                {"reference",
+                 {{"r_fref_min", s.reference.r_fref_min},
+                  {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
+                  {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
+                  {"tolerance", s.reference.tolerance}}}}}}
+      .dump();
 }
 
 }  // namespace shockmap

@@ -96,8 +96,11 @@ std::string PointKey(const StudyPoint& point);
 // Identifies the reference a point is scored against; equal keys share one reference, across
 // studies of the same database.
 std::string ReferenceKey(const StudySpec& spec, const StudyPoint& point);
-// The problem and scoring settings: a study keeps them for life, since its stored scores
-// depend on them.
+// The lifelong settings, by their keys in the study file: the problem and every scoring
+// setting ("scoring.window_s", "scoring.psd.*", "scoring.shocks.*", "scoring.reference.*") but
+// the thresholds. A study keeps them for life, since its stored scores depend on them (a
+// changed window would add points whose scores criteria then pool with the old ones); grid
+// axes and thresholds may change.
 std::string SettingsKey(const StudySpec& spec);
 
 }  // namespace shockmap

@@ -14,7 +14,8 @@ SHOCKMAP_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
-  gnuplot-nox
+  gnuplot-nox help2man
+  python3-dev pybind11-dev python3-numpy python3-pandas
 )
 
 install_missing_packages() {

@@ -140,6 +140,19 @@ TEST_F(QuickStudyAdvice, OutsideTheStudiedRangeWarns) {
   const Advice below = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_, 0.1);
   ASSERT_EQ(below.warnings.size(), 1u);
   EXPECT_DOUBLE_EQ(below.r_ftrunc, *criteria_.boundary.front().r_ftrunc_min);
+  // Where the criteria know least the time step is no larger than between the two studied R_k
+  // at that edge, and one studied step below the edge's largest passing one (0.9 -> 0.5 at
+  // both edges of quick; the advice was 0.9 beyond, 0.5 inside).
+  const auto& all = criteria_.boundary;
+  const std::pair<const Advice*, std::pair<double, double>> outside[] = {
+      {&beyond, {all[all.size() - 2].r_k, all.back().r_k}}, {&below, {all[0].r_k, all[1].r_k}}};
+  for (const auto& [advice, edge] : outside) {
+    const Advice inside = Advise(spec_.problem, spec_.scoring.window_s, criteria_, points_,
+                                 std::sqrt(edge.first * edge.second));
+    EXPECT_LE(advice->dt_ratio, inside.dt_ratio) << advice->r_k;
+    EXPECT_NEAR(advice->dt_ratio, 0.5, 1e-9) << advice->r_k;
+    EXPECT_NE(advice->warnings[0].find("dt/dt_sharp is one studied step finer"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Command-line conventions: --version names the release of CHANGELOG.md, SHOCKMAP_DB, the bash
-// completion names every command and option, ignored options are refused.
+// completion names every command and option and completes their values, ignored options are
+// refused, default data files are found beside the binary.
 
 #include <gtest/gtest.h>
 
@@ -115,6 +116,72 @@ TEST(CliCompletion, TheBashScriptNamesEveryCommandAndOptionAndCompletes) {
   EXPECT_EQ(completes("shockmap study r", 2), "run\n");
   EXPECT_EQ(completes("shockmap study run --ret", 3), "--retry-failed\n");
   EXPECT_EQ(completes("shockmap map --db \"\"", 3), "\n");  // A file name follows --db.
+  // After a flag, the next word completes.
+  EXPECT_EQ(completes("shockmap study run --quiet --ret", 4), "--retry-failed\n");
+  EXPECT_EQ(completes("shockmap advise --json --zo", 3), "--zones\n");
+}
+
+// The values `command --help` lists for `option` ("--metric TEXT:{err,srf}" gives "err srf").
+std::string ListedValues(const std::string& command, const std::string& option) {
+  const std::string help = RunShockmap(command + " --help").output;
+  std::smatch m;
+  if (!std::regex_search(help, m, std::regex("  " + option + R"( TEXT:\{([a-z,-]+)\})"))) return "";
+  return std::regex_replace(m[1].str(), std::regex(","), " ");
+}
+
+class CliCompletionValues : public testing::TempDirTest {
+ protected:
+  void SetUp() override {
+    TempDirTest::SetUp();
+    const auto script = RunShockmap("completion bash");
+    ASSERT_EQ(script.exit_code, 0);
+    WriteText(Path("completion.bash"), script.output);
+  }
+  // COMPREPLY for the words typed (the binary's path first) with the cursor on word `cword`.
+  std::string Completes(const std::string& words, int cword, const std::string& env = "") {
+    return RunShell(env + "bash -c 'source " + Path("completion.bash") + "; COMP_WORDS=(" +
+                    SHOCKMAP_BIN + " " + words + "); COMP_CWORD=" + std::to_string(cword) +
+                    "; _shockmap; echo \"${COMPREPLY[*]}\"'")
+        .output;
+  }
+};
+
+TEST_F(CliCompletionValues, ListedOptionsCompleteTheValuesTheCommandAccepts) {
+  const std::vector<std::pair<std::string, std::string>> listed = {
+      {"map", "--metric"},      {"map", "--y"},        {"compare", "--scheme"},
+      {"compare", "--dt-rule"}, {"query", "--format"}, {"sizing", "--format"}};
+  for (const auto& [command, option] : listed) {
+    const std::string values = ListedValues(command, option);
+    ASSERT_NE(values, "") << command << " " << option << " lists no values in --help";
+    EXPECT_EQ(Completes(command + " " + option + " \"\"", 3), values + "\n")
+        << command << " " << option;
+  }
+  EXPECT_NE(ListedValues("map", "--metric").find("status"), std::string::npos);
+  EXPECT_EQ(Completes("compare --dt-rule s", 3), "sharp\n");
+  EXPECT_EQ(Completes("query --format c", 3), "csv\n");
+  EXPECT_EQ(Completes("compare --scheme = i", 4), "implicit-full\n");  // --scheme=i
+  // After the value, options again.
+  EXPECT_EQ(Completes("map --y dt --met", 4), "--metric\n");
+  // --allow-path takes a folder.
+  std::filesystem::create_directories(Path("data_folder"));
+  WriteText(Path("data_file"), "");
+  EXPECT_EQ(Completes("advise --allow-path " + Path("data_"), 3), Path("data_folder") + "\n");
+}
+
+TEST_F(CliCompletionValues, StudyArgumentsCompleteTheStoredStudiesOfTheDatabase) {
+  WriteText(Path("g.json"), kStudy);
+  ASSERT_EQ(
+      RunShockmap("study run " + Path("g.json") + " --db " + Path("s.db") + " --quiet").exit_code,
+      0);
+  EXPECT_EQ(Completes("map --db " + Path("s.db") + " \"\"", 4).rfind("g --help", 0), 0u);
+  EXPECT_EQ(Completes("report --db " + Path("s.db") + " g", 4), "g\n");
+  EXPECT_EQ(Completes("advise --json --db " + Path("s.db") + " g", 5), "g\n");
+  // The default database, as the command opens it: $SHOCKMAP_DB.
+  EXPECT_EQ(Completes("criteria derive g", 3, "SHOCKMAP_DB=" + Path("s.db") + " "), "g\n");
+  // A study file, not a name, follows `study run`; no database, no names.
+  EXPECT_EQ(Completes("study run --db " + Path("s.db") + " g", 5), "\n");
+  EXPECT_EQ(Completes("map --db " + Path("none.db") + " g", 4), "\n");
+  EXPECT_FALSE(std::filesystem::exists(Path("none.db")));
 }
 
 TEST_F(CliConventions, OptionsThatWouldBeIgnoredAreRefused) {
@@ -151,6 +218,51 @@ TEST_F(CliConventions, DefaultFileNamesCarryNoFloatNoise) {
   EXPECT_NE(o.output.find("plot written to out/g_cost_rk3162.28.png"), std::string::npos)
       << o.output;
   EXPECT_TRUE(std::filesystem::exists(Path("out/g_cost_rk3162.28.png")));
+}
+
+// `advise SCENE.json` reads its default criteria from the working folder, else from the shared
+// data beside the binary (<bin>/../share/shockmap); a path the user gives is used as given.
+TEST_F(CliConventions, AdviseFindsItsDefaultCriteriaBesideTheBinary) {
+  const std::string source = SHOCKMAP_SOURCE_DIR;
+  const std::string scene = source + "/scenes/bundle_hex_7.json";
+  const std::string baseline = "studies/baselines/paper_fig4.json";
+  std::filesystem::create_directories(Path("work"));
+  std::filesystem::create_directories(Path("prefix/bin"));
+  std::filesystem::copy_file(SHOCKMAP_BIN, Path("prefix/bin/shockmap"));
+  const auto advise = [&](const std::string& binary, const std::string& flags = "") {
+    return RunShell("cd " + Path("work") + " && " + binary + " advise " + scene + flags);
+  };
+  // The build's binary finds the sources' baseline through build/share/shockmap.
+  const auto built = advise(SHOCKMAP_BIN);
+  EXPECT_EQ(built.exit_code, 0) << built.output;
+  EXPECT_NE(built.output.find("/share/shockmap/" + baseline), std::string::npos) << built.output;
+
+  const std::string shared = Path("prefix/share/shockmap/" + baseline);
+  const auto missing = advise(Path("prefix/bin/shockmap"));
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("--criteria"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find(Path("work/" + baseline)), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find(shared), std::string::npos) << missing.output;
+
+  std::filesystem::create_directories(Path("prefix/share/shockmap/studies/baselines"));
+  std::filesystem::copy_file(source + "/" + baseline, shared);
+  const auto found = advise(Path("prefix/bin/shockmap"));
+  EXPECT_EQ(found.exit_code, 0) << found.output;
+  EXPECT_EQ(found.output.rfind("criteria from " + shared + "\n", 0), 0u) << found.output;
+  std::string same_advice = built.output;
+  same_advice.replace(0, same_advice.find('\n'), "criteria from " + shared);
+  EXPECT_EQ(found.output, same_advice);
+
+  // Given, the same relative path is read from the working folder only.
+  const auto given = advise(Path("prefix/bin/shockmap"), " --criteria " + baseline);
+  EXPECT_EQ(given.exit_code, 2) << given.output;
+  EXPECT_NE(given.output.find(baseline), std::string::npos) << given.output;
+  EXPECT_EQ(given.output.find(shared), std::string::npos) << given.output;
+  // A copy in the working folder comes first.
+  std::filesystem::create_directories(Path("work/studies/baselines"));
+  std::filesystem::copy_file(source + "/" + baseline, Path("work/" + baseline));
+  EXPECT_EQ(advise(Path("prefix/bin/shockmap")).output.rfind("criteria from " + baseline + "\n", 0),
+            0u);
 }
 
 }  // namespace

@@ -77,6 +77,18 @@ TEST(CompareCommand, JsonCarriesEveryDocumentedKey) {
   EXPECT_LT(j["err"].get<double>(), 0.10);
 }
 
+// The full FE scheme has no modal basis: its model line says so instead of "modes kept".
+TEST(CompareCommand, FullFeSchemePrintsItsModelNotModes) {
+  const Outcome modal = RunShockmap("compare --rk 3000 --rftrunc 30 --window 0.02");
+  ASSERT_EQ(modal.exit_code, 0) << modal.output;
+  EXPECT_NE(modal.output.find("modes kept"), std::string::npos) << modal.output;
+  const Outcome full =
+      RunShockmap("compare --rk 3000 --rftrunc 30 --window 0.02 --scheme implicit-full");
+  ASSERT_EQ(full.exit_code, 0) << full.output;
+  EXPECT_EQ(full.output.find("modes kept"), std::string::npos) << full.output;
+  EXPECT_NE(full.output.find("the full FE model"), std::string::npos) << full.output;
+}
+
 TEST(CompareCommand, HelpExitsZero) {
   const Outcome o = RunShockmap("compare --help");
   EXPECT_EQ(o.exit_code, 0);

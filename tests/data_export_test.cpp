@@ -112,6 +112,14 @@ TEST_F(DataExport, AReferenceIsWrittenAsStoredAndAPointIsComputedAgainAsStored) 
     ASSERT_TRUE(SameBits(std::strtod(r[2].c_str(), nullptr), stored->force_n[i])) << i;
   }
   EXPECT_GT(*std::max_element(stored->force_n.begin(), stored->force_n.end()), 0.0);
+  // --rk as a person types it: the nearest studied R_k, said, and the same file.
+  const auto typed =
+      RunShockmap("export reference --rk 3162" + Db() + " --out " + Path("out/ref_typed.csv"));
+  ASSERT_EQ(typed.exit_code, 0) << typed.output;
+  EXPECT_NE(typed.output.find("(R_k = 3162.2776601683795, the studied value nearest to --rk 3162)"),
+            std::string::npos)
+      << typed.output;
+  EXPECT_EQ(testing::ReadBytes(Path("out/ref_typed.csv")), testing::ReadBytes(Path("out/ref.csv")));
 
   const Table point = RunReadOnlyQuery(
       Path("s.db"),

@@ -9,13 +9,17 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include "db/sqlite_handle.h"
 #include "engine/ensemble_study.h"
 #include "formats/study_file.h"
+#include "formats/zone_family.h"
 #include "statistics/quantile_interval.h"
 #include "statistics/wilks.h"
 #include "tests/database_rows.h"
@@ -50,6 +54,9 @@ json SmallEnsemble(int members) {
              {"pin_gap_m", {{"mean", 1e-5}, {"std", 3e-5}, {"min", -4e-5}}},
              {"wrapper_gap_m", {{"mean", 1e-4}, {"std", 5e-5}}}}}}};
 }
+
+// Long enough for the shock to reach every family of the hexagonal bundle.
+constexpr double kHexWindowS = 0.05;
 
 class EnsembleStudyTest : public testing::TempDirTest {
  protected:
@@ -200,6 +207,58 @@ TEST_F(EnsembleStudyTest, SizingIsTheStatisticsOfTheStoredMaxima) {
     ++checked;
   }
   EXPECT_EQ(checked, 2);
+}
+
+TEST(ZoneFamilyTest, FamiliesComeFromTheBeamsTheBundleGeneratorNames) {
+  EXPECT_EQ(FamilyOfZone("pin_0", "pin_12"), ZoneFamily::kPinPinWire);
+  EXPECT_EQ(FamilyOfZone("pin_3", "wrapper"), ZoneFamily::kPinWrapper);
+  EXPECT_EQ(FamilyOfZone("wrapper", "pin_3"), ZoneFamily::kPinWrapper);
+  EXPECT_EQ(FamilyOfZone("wrapper", "stop"), ZoneFamily::kDuctPad);
+  // Listed beams of other names, a pin against a stop, a name that is no generated pin's.
+  EXPECT_EQ(FamilyOfZone("pin_3", "stop"), ZoneFamily::kOther);
+  EXPECT_EQ(FamilyOfZone("pin_a", "pin_1"), ZoneFamily::kOther);
+  EXPECT_EQ(FamilyOfZone("pin_", "wrapper"), ZoneFamily::kOther);
+  EXPECT_EQ(FamilyOfZone("beam", "stop"), ZoneFamily::kOther);
+  EXPECT_EQ(FamilyName(ZoneFamily::kDuctPad), "duct pad");
+}
+
+// The shipped hexagonal ensemble over a shorter window: every family of the bundle is sized,
+// and each family's hottest zone is the highest sizing estimate among that family's zones.
+TEST_F(EnsembleStudyTest, EachFamilysHottestZoneIsTheHighestOfItsZones) {
+  json spec = json::parse(
+      std::ifstream(std::string(SHOCKMAP_SOURCE_DIR) + "/studies/bundle_hex_ensemble.json"));
+  spec["scene"] = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex_7.json";
+  spec["window_s"] = kHexWindowS;
+  const std::string db = Path("hex.db");
+  ASSERT_EQ(Run(Write(spec), db).exit_code, 0);
+  // (state, family) -> the highest p95 of the family's zones, and the row marked its hottest.
+  std::map<std::pair<std::string, std::string>, double> highest;
+  std::map<std::pair<std::string, std::string>, std::vector<json>> marked;
+  for (const json& row : SizingOf(db)) {
+    const std::pair key{row["state"].get<std::string>(), row["family"].get<std::string>()};
+    const double p95 = row["p95_n"];
+    highest[key] = std::max(highest.contains(key) ? highest[key] : p95, p95);
+    if (row["family_hottest"] == 1) marked[key].push_back(row);
+  }
+  std::set<std::string> families;
+  for (const auto& [key, value] : highest) {
+    families.insert(key.second);
+    ASSERT_EQ(marked[key].size(), 1u) << key.first << " " << key.second;
+    EXPECT_EQ(marked[key].front()["p95_n"].get<double>(), value) << key.first << " " << key.second;
+  }
+  EXPECT_EQ(families, (std::set<std::string>{"pin-pin wire", "duct pad", "pin-wrapper"}));
+  EXPECT_EQ(highest.size(), 6u);  // Two states by three families.
+  // The terminal's table: one row per state and family, within 120 characters.
+  const auto table = RunShockmap("sizing --db " + db);
+  ASSERT_EQ(table.exit_code, 0) << table.output;
+  std::istringstream lines(table.output);
+  int family_rows = 0;
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_LE(line.size(), 120u) << line;
+    for (const std::string& family : families)
+      family_rows += line.find("  " + family + " ") != std::string::npos;
+  }
+  EXPECT_EQ(family_rows, 6) << table.output;
 }
 
 TEST_F(EnsembleStudyTest, BadStudyFilesAreRefusedWithExitCode2) {

@@ -79,6 +79,7 @@ TEST_F(HostileInput, CommandLineFlags) {
       {"reference over 10 min", "compare --rk 3000 --rftrunc 300 --window 600", "--window"},
       {"unknown flag", "compare --rk 3000 --rftrunc 300 --turbo", "--turbo"},
       {"unknown command", "simulte x.json", "simulte"},
+      {"no command", "", "shockmap --help"},
       {"missing argument", "simulate", "scene"},
       {"zero workers", "study run SRC/studies/quick.json --jobs 0", "--jobs"},
       {"unknown format", "query \"SELECT 1\" --format xml", "--format"},

@@ -6,15 +6,22 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <regex>
+#include <set>
+#include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
 #include "tests/run_command.h"
+#include "views/cost_front.h"
+#include "views/fig3_svg.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
 
@@ -51,6 +58,56 @@ std::size_t Count(const std::string& text, const std::string& what) {
   return n;
 }
 
+// The number of stored points with `status`, as `query --format csv` prints it.
+std::string StatusCount(const Place& at, const std::string& status) {
+  const auto q =
+      RunShockmap("query --db " + at.db +
+                  " --format csv \"SELECT count(*) FROM results WHERE status = '" + status + "'\"");
+  EXPECT_EQ(q.exit_code, 0) << q.output;
+  const auto line = q.output.find('\n');
+  return q.output.substr(line + 1, q.output.find('\n', line + 1) - line - 1);
+}
+
+// The body rows of the table `id` in `dom`.
+std::size_t TableRowCount(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  if (start == std::string::npos) return 0;
+  const auto body = dom.find("<tbody>", start);
+  return Count(dom.substr(body, dom.find("</tbody>", body) - body), "<tr");
+}
+
+// The values of the data rows of block `index` (blocks separated by two blank lines) of a
+// gnuplot data file, comments skipped.
+std::vector<std::vector<double>> DataBlock(const std::string& file, int index) {
+  std::vector<std::vector<double>> rows;
+  std::stringstream in(ReadBytes(file));
+  int block = 0, blank = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty()) {
+      if (++blank == 2) ++block;
+      continue;
+    }
+    blank = 0;
+    if (line[0] == '#' || block != index) continue;
+    std::stringstream fields(line);
+    std::vector<double>& row = rows.emplace_back();
+    for (std::string f; fields >> f;) row.push_back(f == "NaN" ? NAN : std::stod(f));
+  }
+  return rows;
+}
+
+// The plot clauses of a gnuplot script whose text contains `what`.
+std::vector<std::string> ClausesWith(const std::string& script, const std::string& what) {
+  const std::string plot = script.substr(script.rfind("\nplot "));
+  const std::regex clause("(?:plot |, \\\\\n +)([^\n]*?)(?=, \\\\\n|\n|$)");
+  std::vector<std::string> found;
+  for (auto it = std::sregex_iterator(plot.begin(), plot.end(), clause);
+       it != std::sregex_iterator(); ++it) {
+    if ((*it)[1].str().find(what) != std::string::npos) found.push_back((*it)[1]);
+  }
+  return found;
+}
+
 // The stored value of one column of a point, as `query --format csv` prints it.
 std::string Stored(const Place& at, const std::string& column, const std::string& point_id) {
   const auto q = RunShockmap("query --db " + at.db + " --format csv \"SELECT " + column +
@@ -69,7 +126,7 @@ void CheckIndex(const Place& at) {
   const std::string dom = Dom(at, page);
   const std::size_t images = Count(html, "<img ");
   const std::size_t tables = Count(html, "<table class=\"sortable\"");
-  EXPECT_GE(images, 7u);  // Five maps, Fig. 4 and the cost front.
+  EXPECT_EQ(images, 2u);  // Fig. 4 and the cost front; the maps are inline SVG.
   EXPECT_NE(dom.find(fmt::format("data-images-loaded=\"{0}/{0}\"", images)), std::string::npos)
       << dom.substr(0, dom.find("<h1>"));
   EXPECT_NE(dom.find(fmt::format("data-sortable-tables=\"{}\"", tables)), std::string::npos);
@@ -80,8 +137,22 @@ void CheckIndex(const Place& at) {
   for (const char* section : {"criteria", "maps", "fig4", "cost", "study-file"}) {
     EXPECT_NE(dom.find(std::string("href=\"#") + section + "\""), std::string::npos) << section;
   }
-  // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second.
-  EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u);
+  // quick: 11 R_k by 7 R_ftrunc on the first map, 11 R_k by 4 dt factors on the second, and
+  // the first's grid again on each metric map (Err, SRf, cost at least).
+  const std::size_t metric_maps = Count(dom, "<div class=\"metric-map\"");
+  EXPECT_GE(metric_maps, 3u);
+  EXPECT_EQ(Count(dom, "<rect class=\"cell\""), 11u * 7u + 11u * 4u + metric_maps * 11u * 7u);
+  // Each map's gnuplot figure is still written, and linked.
+  for (const char* png : {"map_err.png", "map_srf.png", "map_cost.png", "map_status_dt.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / png)) << png;
+    EXPECT_NE(html.find(std::string("href=\"") + png + "\""), std::string::npos) << png;
+  }
+  // Every diverged cell carries a cross, every unstable one a square; the dt map's bound names
+  // omega itself.
+  EXPECT_GT(Count(html, "data-status=\"diverged\""), 0u);
+  EXPECT_EQ(Count(html, "<path class=\"marker\""), Count(html, "data-status=\"diverged\""));
+  EXPECT_EQ(Count(html, "<rect class=\"marker\""), Count(html, "data-status=\"unstable\""));
+  EXPECT_NE(html.find("dt = 2 / \u03c9<sub>max</sub>"), std::string::npos);
 }
 
 void CheckMapCells(const Place& at) {
@@ -109,7 +180,45 @@ void CheckMapCells(const Place& at) {
     }
     EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / m[1].str())) << m[1];
   }
-  EXPECT_EQ(checked, 11 * 7 + 11 * 4);
+  const int metric_maps = static_cast<int>(Count(dom, "<div class=\"metric-map\""));
+  EXPECT_EQ(checked, 11 * 7 + 11 * 4 + metric_maps * 11 * 7);
+}
+
+// The metric switch shows one metric map at a time, and the Err map's cells title the stored
+// Err of their points.
+void CheckMetricSwitch(const Place& at) {
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  const std::string chooser = R"(<script>
+function shown() {
+  return Array.from(document.querySelectorAll('.metric-map')).filter(function (m) {
+    return m.getBoundingClientRect().height > 0;
+  }).map(function (m) { return m.dataset.metric; }).join(',');
+}
+var choice = document.querySelector('select.metric-switch[data-maps="map-metric"]');
+document.body.dataset.before = shown();
+choice.value = 'srf';
+choice.dispatchEvent(new Event('change'));
+document.body.dataset.after = shown();
+</script></body>)";
+  html.replace(html.rfind("</body>"), 7, chooser);
+  const auto copy = at.dir / "report" / "switch_check.html";
+  WriteText(copy.string(), html);
+  const std::string dom = Dom(at, copy);
+  EXPECT_NE(dom.find("data-before=\"err\""), std::string::npos) << dom.substr(0, 400);
+  EXPECT_NE(dom.find("data-after=\"srf\""), std::string::npos) << dom.substr(0, 400);
+
+  const auto start = dom.find("<svg class=\"map\" id=\"map-metric-err\"");
+  ASSERT_NE(start, std::string::npos);
+  const std::string err_map = dom.substr(start, dom.find("</svg>", start) - start);
+  const std::regex cell("data-point-id=\"(\\d+)\"[^>]*><title>Err = ([^;]+);");
+  int checked = 0;
+  for (auto it = std::sregex_iterator(err_map.begin(), err_map.end(), cell);
+       it != std::sregex_iterator() && checked < 5; ++it, ++checked) {
+    const std::string id = (*it)[1];
+    EXPECT_NEAR(std::stod((*it)[2]), std::stod(Stored(at, "err", id)), 1e-5 * std::stod((*it)[2]))
+        << id;
+  }
+  EXPECT_EQ(checked, 5) << "no Err in the cells' titles";
 }
 
 void CheckSortOnClick(const Place& at) {
@@ -149,8 +258,86 @@ document.body.dataset.descending = headers[column].getAttribute('aria-sort') + '
   }
 }
 
+// The numbers of an attribute of `element` ("x y w h").
+std::vector<double> Numbers(const std::string& element, const std::string& attribute) {
+  const auto start = element.find(attribute + "=\"") + attribute.size() + 2;
+  std::stringstream in(element.substr(start, element.find('"', start) - start));
+  std::vector<double> out;
+  for (std::string v; in >> v;) out.push_back(std::stod(v));
+  return out;
+}
+
+// A panel's polyline of `cls` as (t_s, value) pairs, mapped back through its data-box and
+// data-range.
+std::vector<std::pair<double, double>> DrawnCurve(const std::string& panel,
+                                                  const std::string& cls) {
+  const auto box = Numbers(panel, "data-box"), range = Numbers(panel, "data-range");
+  const auto line = panel.find("<polyline class=\"" + cls + "\"");
+  EXPECT_NE(line, std::string::npos) << cls;
+  const std::string polyline = panel.substr(line);
+  const auto points = polyline.find("points=\"") + 8;
+  std::stringstream vertices(polyline.substr(points, polyline.find('"', points) - points));
+  std::vector<std::pair<double, double>> curve;
+  for (std::string v; vertices >> v;) {
+    const double x = std::stod(v.substr(0, v.find(','))), y = std::stod(v.substr(v.find(',') + 1));
+    curve.emplace_back(range[0] + (x - box[0]) / box[2] * (range[1] - range[0]),
+                       range[2] + (box[1] + box[3] - y) / box[3] * (range[3] - range[2]));
+  }
+  return curve;
+}
+
+// The panel of `quantity` in a page's Fig. 3.
+std::string Panel(const std::string& page, const std::string& quantity) {
+  const auto start = page.find("<g class=\"panel\" data-quantity=\"" + quantity + "\"");
+  EXPECT_NE(start, std::string::npos) << quantity;
+  return page.substr(start, page.find("\n</g>\n", start) - start);
+}
+
+// The drawn reference force of a point's Fig. 3 against its stored reference: the first sample
+// and the largest force, within the rounding of the SVG's coordinates (0.05 units); every curve
+// within 2 * kFig3Columns vertices.
+void CheckFigureAgainstStoredReference(const Place& at, const std::string& page,
+                                       const std::string& id) {
+  const auto csv = at.dir / ("reference_" + id + ".csv");
+  const auto exported =
+      RunShockmap("export reference --db " + at.db + " --point " + id + " --out " + csv.string());
+  ASSERT_EQ(exported.exit_code, 0) << exported.output;
+  std::stringstream rows(ReadBytes(csv.string()));
+  std::string line;
+  std::getline(rows, line);
+  double first_tip = NAN, max_force = -INFINITY;
+  while (std::getline(rows, line)) {
+    std::stringstream fields(line);
+    std::string t, tip, force;
+    std::getline(fields, t, ',');
+    std::getline(fields, tip, ',');
+    std::getline(fields, force, ',');
+    if (std::isnan(first_tip)) first_tip = std::stod(tip);
+    max_force = std::max(max_force, std::stod(force));
+  }
+  const std::string force_panel = Panel(page, "force"), tip_panel = Panel(page, "tip");
+  const auto range = Numbers(force_panel, "data-range"), box = Numbers(force_panel, "data-box");
+  const auto force = DrawnCurve(force_panel, "reference");
+  ASSERT_FALSE(force.empty());
+  double drawn_max = -INFINITY;
+  for (const auto& v : force) drawn_max = std::max(drawn_max, v.second);
+  EXPECT_GT(max_force, 0.0) << "the point's reference has no contact";
+  EXPECT_NEAR(drawn_max, max_force / 1e3, 0.05 / box[3] * (range[3] - range[2]) + 1e-12);
+  const auto tip = DrawnCurve(tip_panel, "reference");
+  const auto tip_range = Numbers(tip_panel, "data-range"), tip_box = Numbers(tip_panel, "data-box");
+  EXPECT_NEAR(tip.front().first, 0.0, 0.05 / tip_box[2] * tip_range[1]);
+  EXPECT_NEAR(tip.front().second, first_tip * 1e3,
+              0.05 / tip_box[3] * (tip_range[3] - tip_range[2]) + 1e-12);
+  for (const std::string& p : {force_panel, tip_panel}) {
+    for (const std::string cls : {"reference", "numerical"}) {
+      EXPECT_LE(DrawnCurve(p, cls).size(), 2 * shockmap::kFig3Columns) << cls;
+    }
+  }
+}
+
 void CheckPointPage(const Place& at) {
-  // A point with a drawn Fig. 3: its page embeds it and names the command.
+  // A point whose Fig. 3 is also written as files: its page links them, and its command
+  // recomputes the stored Err.
   std::string page_path;
   for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
     if (entry.is_directory() && std::filesystem::exists(entry.path() / "fig3.png")) {
@@ -158,19 +345,106 @@ void CheckPointPage(const Place& at) {
       break;
     }
   }
-  ASSERT_FALSE(page_path.empty()) << "no Fig. 3 was drawn";
+  ASSERT_FALSE(page_path.empty()) << "no Fig. 3 was written as files";
   const std::string page = ReadBytes(page_path);
-  EXPECT_NE(page.find("data:image/png;base64,"), std::string::npos);
+  const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
+  EXPECT_NE(page.find("href=\"point_" + id + "/fig3.png\""), std::string::npos);
+  EXPECT_NE(page.find("href=\"point_" + id + "/numerical.csv\""), std::string::npos);
+  // In the browser, the page shows its figure: two panels, each with both curves.
+  const std::string dom = Dom(at, page_path);
+  EXPECT_EQ(Count(dom, "<svg class=\"fig3\""), 1u);
+  EXPECT_EQ(Count(dom, "<g class=\"panel\""), 2u);
+  EXPECT_EQ(Count(dom, "<polyline class=\"reference\""), 2u);
+  EXPECT_EQ(Count(dom, "<polyline class=\"numerical\""), 2u);
   std::smatch command;
   ASSERT_TRUE(std::regex_search(page, command, std::regex("shockmap compare ([^<]*) --out ")))
       << page;
-  const std::string id = std::filesystem::path(page_path).stem().string().substr(6);
   const auto run = RunShockmap("compare " + command[1].str() + " --json");
   ASSERT_EQ(run.exit_code, 0) << run.output;
   std::smatch err;
   ASSERT_TRUE(std::regex_search(run.output, err, std::regex("\"err\": ([0-9.e+-]+)")))
       << run.output;
   EXPECT_NEAR(std::stod(err[1]), std::stod(Stored(at, "err", id)), 1e-9) << command[1];
+  CheckFigureAgainstStoredReference(at, page, id);
+
+  // Every point page draws its Fig. 3, two panels, from a run whose recomputed scores are the
+  // stored ones; prints its command once; a diverged run says where it stopped.
+  std::size_t pages = 0, diverged = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "points")) {
+    if (entry.path().extension() != ".html") continue;
+    const std::string p = ReadBytes(entry.path().string());
+    ++pages;
+    EXPECT_EQ(Count(p, "<svg class=\"fig3\""), 1u) << entry.path();
+    EXPECT_EQ(Count(p, "<g class=\"panel\""), 2u) << entry.path();
+    EXPECT_EQ(Count(p, "the stored scores, exactly"), 1u) << entry.path();
+    EXPECT_EQ(Count(p, "shockmap compare "), 1u) << entry.path();
+    EXPECT_EQ(p.find("fig3-absent"), std::string::npos) << entry.path();
+    diverged += Count(p, "The run stopped (diverged");
+  }
+  EXPECT_EQ(pages, 308u);
+  EXPECT_EQ(std::to_string(diverged), StatusCount(at, "diverged"));
+}
+
+// The verdict opens the report and its counts are the database's.
+void CheckVerdict(const Place& at) {
+  const std::string dom = Dom(at, at.dir / "report" / "index.html");
+  const auto verdict = dom.find("id=\"verdict-text\"");
+  ASSERT_NE(verdict, std::string::npos);
+  EXPECT_LT(verdict, dom.find("id=\"outcomes\"")) << "the verdict is not at the top";
+  const std::string text = dom.substr(verdict, dom.find("</p>", verdict) - verdict);
+  EXPECT_NE(text.find("judged by Err &lt;= 0.1, SRf &gt;= 0.8"), std::string::npos) << text;
+  EXPECT_NE(text.find("Validity rule: R_ftrunc &gt;= "), std::string::npos) << text;
+  EXPECT_NE(text.find("Time-step margin: runs pass up to dt = "), std::string::npos) << text;
+  auto count = [&](const std::string& status) { return StatusCount(at, status); };
+  EXPECT_NE(text.find("Of 308 points, " + count("ok") + " ran to the end"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("; " + count("diverged") + " diverged ("), std::string::npos) << text;
+  // The criteria are a table, one row per studied R_k.
+  EXPECT_EQ(TableRowCount(dom, "criteria-table"), 11u);
+}
+
+// Typing into the points table's filter hides the other rows; its CSV link then holds the header
+// and the rows shown, reals at full precision.
+void CheckFilterAndCsv(const Place& at) {
+  std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  const std::string typist = R"(<script>
+var box = document.querySelector('input.table-filter[data-table="points-table"]');
+box.value = 'diverged';
+box.dispatchEvent(new Event('input'));
+var rows = Array.from(document.getElementById('points-table').tBodies[0].rows);
+document.body.dataset.shown = rows.filter(function (r) { return !r.hidden; }).length;
+document.addEventListener('click', function (e) { e.preventDefault(); });
+var link = document.querySelector('a.table-csv[data-table="points-table"]');
+link.click();
+var out = document.createElement('pre');
+out.id = 'csv-out';
+out.textContent = decodeURIComponent(link.href.slice(link.href.indexOf(',') + 1));
+document.body.appendChild(out);
+</script></body>)";
+  html.replace(html.rfind("</body>"), 7, typist);
+  const auto copy = at.dir / "report" / "filter_check.html";
+  WriteText(copy.string(), html);
+  const std::string dom = Dom(at, copy);
+  const std::string diverged = StatusCount(at, "diverged");
+  EXPECT_NE(dom.find("data-shown=\"" + diverged + "\""), std::string::npos) << diverged;
+  const auto start = dom.find("<pre id=\"csv-out\">");
+  ASSERT_NE(start, std::string::npos);
+  std::stringstream csv(dom.substr(start + 18, dom.find("</pre>", start) - start - 18));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 1 + std::stoul(diverged));
+  EXPECT_EQ(lines[0].rfind("point_id,r_k,r_ftrunc,scheme,", 0), 0u) << lines[0];
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    EXPECT_NE(lines[i].find(",diverged,"), std::string::npos) << lines[i];
+    // Each row's R_ftrunc at full precision, as stored.
+    std::stringstream fields(lines[i]);
+    std::string id, r_k, r_ftrunc;
+    std::getline(fields, id, ',');
+    std::getline(fields, r_k, ',');
+    std::getline(fields, r_ftrunc, ',');
+    EXPECT_EQ(std::stod(r_ftrunc), std::stod(Stored(at, "r_ftrunc", id))) << lines[i];
+    if (i >= 3) break;  // A few rows against the database.
+  }
 }
 
 class QuickStudyViews : public ::testing::Test {
@@ -197,6 +471,9 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   CheckIndex(at_);
   CheckMapCells(at_);
   CheckSortOnClick(at_);
+  CheckMetricSwitch(at_);
+  CheckVerdict(at_);
+  CheckFilterAndCsv(at_);
   CheckPointPage(at_);
   // The maps' scripts run from their own folder.
   std::filesystem::remove(at_.dir / "report" / "map_err.png");
@@ -205,8 +482,31 @@ TEST_F(QuickStudyViews, ReportOpensInHeadlessChromiumSortsAndLinksItsPoints) {
   EXPECT_TRUE(std::filesystem::exists(at_.dir / "report" / "map_err.png"));
 }
 
+// The cells of each body row of the table `id` in `dom`: (attributes, text) per cell.
+using Cells = std::vector<std::pair<std::string, std::string>>;
+std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
+  const auto start = dom.find("id=\"" + id + "\"");
+  EXPECT_NE(start, std::string::npos) << id;
+  if (start == std::string::npos) return {};
+  const auto body = dom.find("<tbody>", start);
+  const std::string rows = dom.substr(body, dom.find("</tbody>", body) - body);
+  const std::regex row("<tr>(.*?)</tr>"), cell("<td([^>]*)>(.*?)</td>");
+  std::vector<Cells> out;
+  for (auto r = std::sregex_iterator(rows.begin(), rows.end(), row); r != std::sregex_iterator();
+       ++r) {
+    const std::string text = (*r)[1];
+    auto& cells = out.emplace_back();
+    for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator();
+         ++c) {
+      cells.emplace_back((*c)[1], std::regex_replace((*c)[2].str(), std::regex("&quot;"), "\""));
+    }
+  }
+  return out;
+}
+
 // A scene study named with markup: the report has its sections, the points with their swept
-// parameter as a column, the contact-force map, and shows the name as text.
+// parameters as columns, the validity map over them, the contact-force map, and shows the name
+// as text.
 TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   Place at{std::filesystem::temp_directory_path() /
                ("shockmap_scene_report_" + std::to_string(getpid())),
@@ -217,7 +517,7 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   const nlohmann::json study = {
       {"name", "<b>spring</b> & \"q\""},
       {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
-      {"sweep", {{"solver.r_ftrunc", {10, 300}}}},
+      {"sweep", {{"solver.r_ftrunc", {10, 300}}, {"solver.dt.factor", {0.1, 0.5}}}},
       {"reference", {{"solver.r_ftrunc", 1000}}},
       {"scoring", {{"displacement", "tip"}, {"zone", "tip_spring"}, {"rest_duration_s", 0.0052}}}};
   WriteText((at.dir / "study.json").string(), study.dump());
@@ -241,32 +541,37 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   const auto points_table = dom.find("id=\"points-table\"");
   const std::string rows =
       dom.substr(points_table, dom.find("</table>", points_table) - points_table);
-  EXPECT_EQ(Count(rows, "<tr>"), 1u + 2u);  // The header and the two points.
+  EXPECT_EQ(Count(rows, "<tr>"), 1u + 4u);  // The header and the four points.
+  // Passes and fails counted apart from the run status, each point's outcome beside its status.
+  std::smatch counts;
+  ASSERT_TRUE(std::regex_search(
+      dom, counts,
+      std::regex("(\\d+) of 4 points pass Err &lt;= 0.1, SRf &gt;= 0.8; (\\d+) ran to the end "
+                 "and fail them.*; (\\d+) did not run to the end")));
+  EXPECT_EQ(std::stoi(counts[1]) + std::stoi(counts[2]) + std::stoi(counts[3]), 4);
+  EXPECT_EQ(std::stoi(counts[1]), static_cast<int>(Count(rows, "<td>passes</td>")));
+  EXPECT_EQ(std::stoi(counts[2]), static_cast<int>(Count(rows, "<td>fails thresholds</td>")));
+  // The validity map over the swept settings: a cell per point, R_ftrunc across and dt up, each
+  // cell's outcome the one the points table gives that point.
+  std::map<std::string, std::string> outcome_of;  // By point id, from the table.
+  for (const Cells& row : TableRows(dom, "points-table")) {
+    outcome_of[row[0].second] = row[3].second;
+  }
+  const std::regex cell(
+      "<rect class=\"cell\"[^>]* data-point-id=\"(\\d+)\" "
+      "data-parameters=\"solver.dt.factor=([0-9.]+);solver.r_ftrunc=(\\d+)\" "
+      "data-outcome=\"([^\"]+)\"");
+  std::set<std::string> drawn;
+  for (auto c = std::sregex_iterator(html.begin(), html.end(), cell); c != std::sregex_iterator();
+       ++c) {
+    EXPECT_EQ((*c)[4].str(), outcome_of[(*c)[1].str()]) << "point " << (*c)[1];
+    drawn.insert((*c)[3].str() + "/" + (*c)[2].str());
+  }
+  EXPECT_EQ(drawn, (std::set<std::string>{"10/0.1", "10/0.5", "300/0.1", "300/0.5"}));
+  EXPECT_EQ(Count(html, "<svg class=\"sweep-map\""), 1u);
   EXPECT_NE(dom.find("href=\"#contact-forces\""), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / "contact_forces_1.png"));
   std::filesystem::remove_all(at.dir);
-}
-
-// The cells of each body row of the table `id` in `dom`: (attributes, text) per cell.
-using Cells = std::vector<std::pair<std::string, std::string>>;
-std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
-  const auto start = dom.find("id=\"" + id + "\"");
-  EXPECT_NE(start, std::string::npos) << id;
-  if (start == std::string::npos) return {};
-  const auto body = dom.find("<tbody>", start);
-  const std::string rows = dom.substr(body, dom.find("</tbody>", body) - body);
-  const std::regex row("<tr>(.*?)</tr>"), cell("<td([^>]*)>(.*?)</td>");
-  std::vector<Cells> out;
-  for (auto r = std::sregex_iterator(rows.begin(), rows.end(), row); r != std::sregex_iterator();
-       ++r) {
-    const std::string text = (*r)[1];
-    auto& cells = out.emplace_back();
-    for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator();
-         ++c) {
-      cells.emplace_back((*c)[1], std::regex_replace((*c)[2].str(), std::regex("&quot;"), "\""));
-    }
-  }
-  return out;
 }
 
 // The header cells of the table `id` in `dom`, as text.
@@ -318,11 +623,49 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   ASSERT_EQ(report.exit_code, 0) << report.output;
   const auto sizing = RunShockmap("sizing --db " + at.db + " --format json");
   ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
-  std::map<std::pair<std::string, std::string>, nlohmann::json> hottest;  // (state, setting)
+  // (state, setting, family) -> the family's hottest zone.
+  std::map<std::tuple<std::string, std::string, std::string>, nlohmann::json> hottest;
   for (const auto& row : nlohmann::json::parse(sizing.output)) {
-    if (row["hottest"] == 1) hottest[{row["state"], row["setting"]}] = row;
+    if (row["family_hottest"] != 1) continue;
+    // The report names a setting by its values: {"solver.r_ftrunc":1000} (refined) is
+    // solver.r_ftrunc = 1000 (refined).
+    std::string setting = row["setting"];
+    const std::string refined = " (refined)";
+    const bool is_refined = setting.ends_with(refined);
+    if (is_refined) setting.resize(setting.size() - refined.size());
+    std::string name;
+    const nlohmann::json values = nlohmann::json::parse(setting);
+    for (const auto& [path, value] : values.items()) {
+      name += (name.empty() ? "" : ", ") + path + " = " + value.dump();
+    }
+    hottest[{row["state"], name + (is_refined ? refined : ""), row["family"]}] = row;
   }
-  ASSERT_EQ(hottest.size(), 4u);  // Two states by two settings.
+  ASSERT_EQ(hottest.size(), 12u);  // Two states by two settings by three zone families.
+
+  // The terminal's table: 12 members have no Wilks limit and cannot bound a P95 from above; it
+  // says how many would, shows no infinity and fits 120 characters.
+  const auto table = RunShockmap("sizing --db " + at.db);
+  ASSERT_EQ(table.exit_code, 0) << table.output;
+  EXPECT_NE(table.output.find("a one-sided P95 at 95 % confidence needs at least 59 members"),
+            std::string::npos)
+      << table.output;
+  EXPECT_EQ(table.output.find("inf"), std::string::npos) << table.output;
+  std::istringstream lines(table.output);
+  for (std::string line; std::getline(lines, line);) EXPECT_LE(line.size(), 120u) << line;
+  // An ensemble is no study of the paper's problem: map and criteria say so and what to use.
+  for (const std::string command : {"map", "criteria derive"}) {
+    const auto named =
+        RunShockmap(command + " --db " + at.db + " '" + study["name"].get<std::string>() + "'");
+    EXPECT_EQ(named.exit_code, 2) << named.output;
+    EXPECT_NE(named.output.find("is of kind \"scene_ensemble\""), std::string::npos)
+        << named.output;
+    EXPECT_NE(named.output.find("shockmap sizing"), std::string::npos) << named.output;
+    const auto unnamed = RunShockmap(command + " --db " + at.db);
+    EXPECT_EQ(unnamed.exit_code, 2) << unnamed.output;
+    EXPECT_NE(unnamed.output.find("0 studies of the paper's problem"), std::string::npos)
+        << unnamed.output;
+    EXPECT_EQ(unnamed.output.find("small"), std::string::npos) << "listed as eligible";
+  }
 
   const auto page = at.dir / "report" / "index.html";
   const std::string html = ReadBytes(page.string());
@@ -340,7 +683,7 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   ASSERT_EQ(rows.size(), hottest.size());
   for (const Cells& row : rows) {
     ASSERT_GT(row.size(), static_cast<std::size_t>(p95));
-    const auto expected = hottest.find({row[0].second, row[1].second});
+    const auto expected = hottest.find({row[0].second, row[1].second, row[4].second});
     ASSERT_NE(expected, hottest.end()) << row[0].second << " " << row[1].second;
     EXPECT_EQ(row[3].second, expected->second["zone"]);
     std::smatch full;
@@ -352,7 +695,43 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
         << id;
   }
   EXPECT_EQ(Count(dom, "against the refined setting:"), 2u);  // One line per state.
+  // The pictures' legends name only what is drawn: a band where some interval is bounded on
+  // both sides, an upward arrow where some upper side is open; states are never joined.
+  for (const std::string state : {"new", "worn"}) {
+    const auto dir = at.dir / "report" / "sizing";
+    const auto rows = DataBlock((dir / ("convergence_" + state + ".dat")).string(), 0);
+    const std::string script = ReadBytes((dir / ("convergence_" + state + ".gp")).string());
+    const bool closed = std::ranges::any_of(rows, [](auto& r) { return r[4] > 0 && r[5] > 0; });
+    const bool open_up = std::ranges::any_of(rows, [](auto& r) { return r[5] == 0; });
+    EXPECT_EQ(script.find("both sides bounded") != std::string::npos, closed) << script;
+    EXPECT_EQ(script.find("open upward") != std::string::npos, open_up) << script;
+    EXPECT_EQ(script.find("set key below"), script.find("set key")) << script;
+  }
+  const std::string states = ReadBytes((at.dir / "report" / "sizing" / "states.gp").string());
+  EXPECT_EQ(states.find("lines"), std::string::npos) << states;
   std::filesystem::remove_all(at.dir);
+}
+
+// Min/max per column keeps every column's extremes in time order, at most two a column, and
+// stops at the first non-finite sample (where a diverged run stopped).
+TEST(Fig3Svg, MinMaxPerColumnKeepsThePeaksAndStopsWhereTheRunDid) {
+  UniformSignal s{0.0, 1e-4, {}};
+  for (int i = 0; i < 10000; ++i) s.values.push_back(std::sin(0.01 * i) + (i == 4321 ? 5.0 : 0.0));
+  const auto curve = MinMaxPerColumn(s, 0.0, s.EndTime(), 100);
+  EXPECT_LE(curve.size(), 200u);
+  EXPECT_GE(curve.size(), 100u);
+  const auto top = std::ranges::max_element(curve, {}, &CurveVertex::value);
+  EXPECT_EQ(top->value, s.values[4321]);
+  EXPECT_DOUBLE_EQ(top->t_s, s.TimeAt(4321));
+  EXPECT_EQ(std::ranges::min_element(curve, {}, &CurveVertex::value)->value,
+            *std::ranges::min_element(s.values));
+  EXPECT_TRUE(std::ranges::is_sorted(curve, {}, &CurveVertex::t_s));
+  EXPECT_EQ(curve.front().t_s, 0.0);
+  EXPECT_DOUBLE_EQ(curve.back().t_s, s.EndTime());
+
+  s.values[5000] = NAN;
+  const auto cut = MinMaxPerColumn(s, 0.0, s.EndTime(), 100);
+  EXPECT_DOUBLE_EQ(cut.back().t_s, s.TimeAt(4999));
 }
 
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {
@@ -398,17 +777,147 @@ TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
   }
 }
 
+// A point that passes while a finer time step at the same R_k and R_ftrunc fails is flagged and
+// kept off the front, however fast; its finer neighbours passing, it is on it.
+TEST(CostFront, IsBuiltFromPointsWhoseFinerTimeStepsPassToo) {
+  auto point = [](double r_ftrunc, double dt_ratio, double err, double cpu_s) {
+    ScoredPoint p;
+    p.r_k = 3162.0;
+    p.r_ftrunc = r_ftrunc;
+    p.status = RunStatus::kOk;
+    p.dt_sharp_s = 1e-6;
+    p.dt_s = dt_ratio * p.dt_sharp_s;
+    p.cpu_s = cpu_s;
+    p.scores.Set("err", err);
+    p.scores.Set("srf", 1.0);
+    return p;
+  };
+  const std::vector<ScoredPoint> points = {
+      point(100, 0.1, 0.108, 0.5), point(100, 0.9, 0.089, 0.05),  // Passes by cancellation.
+      point(316, 0.1, 0.020, 1.0), point(316, 0.9, 0.030, 0.1)};  // Passes at both steps.
+  const auto tables = BuildCostTables(points, {}, std::nullopt);
+  ASSERT_EQ(tables.size(), 1u);
+  std::map<std::pair<double, long>, CostRow> rows;  // By R_ftrunc and 10 dt/dt_sharp.
+  for (const CostRow& r : tables[0].rows)
+    rows[{r.point.r_ftrunc, std::lround(10 * r.point.DtRatio())}] = r;
+  const CostRow& cancelled = rows.at({100, 9});
+  EXPECT_TRUE(cancelled.passes);
+  EXPECT_TRUE(cancelled.fragile);
+  EXPECT_FALSE(cancelled.pareto);
+  EXPECT_FALSE(rows.at({100, 1}).passes);
+  EXPECT_FALSE(rows.at({316, 9}).fragile);
+  EXPECT_TRUE(rows.at({316, 9}).pareto);  // The fastest robust point heads the front.
+  EXPECT_TRUE(rows.at({316, 1}).pareto);  // More accurate at a higher cost.
+  EXPECT_NE(CostSummary(tables).find("fragile"), std::string::npos);
+}
+
+// The cells of a dt map: each reaches from the next finer studied ratio up to its own, and the
+// cell above the sharp bound starts at the bound.
+TEST(MapGrid, DtCellsEndAtTheirStepAndNeverStraddleTheSharpBound) {
+  std::vector<ScoredPoint> points;
+  for (double ratio : {0.1, 0.5, 0.9, 1.5}) {
+    ScoredPoint& p = points.emplace_back();
+    p.r_k = 100.0, p.r_ftrunc = 30.0, p.dt_sharp_s = 1e-4, p.dt_s = ratio * 1e-4;
+  }
+  const MapGrid grid = BuildMapGrid(points, MapAxis::kDt);
+  ASSERT_EQ(grid.cells.size(), 4u);
+  const std::vector<std::pair<double, double>> expected = {
+      {0.1 / std::sqrt(5.0), 0.1}, {0.1, 0.5}, {0.5, 0.9}, {1.0, 1.5}};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_NEAR(grid.cells[i].y_low, expected[i].first, 1e-9) << grid.cells[i].y;
+    EXPECT_NEAR(grid.cells[i].y_high, expected[i].second, 1e-9) << grid.cells[i].y;
+  }
+}
+
+// The dt map of quick, where runs at 1.5 dt_sharp diverge: diverged cells are white under a
+// cross (never a colour of the Err palette), no cell straddles the bound, the bound names omega.
+TEST_F(QuickStudyViews, DtMapMarksDivergedRunsAndKeepsCellsOnTheirSideOfTheBound) {
+  const auto image = at_.dir / "map_err_dt.png";
+  const auto map =
+      RunShockmap("map --db " + at_.db + " --metric err --y dt --out " + image.string());
+  ASSERT_EQ(map.exit_code, 0) << map.output;
+  const std::string script = ReadBytes((at_.dir / "map_err_dt.gp").string());
+  const auto crosses = ClausesWith(script, "pt 2 ");
+  ASSERT_EQ(crosses.size(), 1u) << script;
+  EXPECT_NE(crosses[0].find("title 'diverged (no score)'"), std::string::npos) << crosses[0];
+  std::smatch palette;
+  ASSERT_TRUE(std::regex_search(script, palette, std::regex("set palette defined \\(([^\n]*)\\)")));
+  for (const std::string& fill : ClausesWith(script, "fc rgb")) {
+    const std::string colour = fill.substr(fill.find("fc rgb '") + 8, 7);
+    EXPECT_EQ(palette[1].str().find(colour), std::string::npos)
+        << "a status cell is filled with a colour of the score palette: " << fill;
+  }
+  EXPECT_NE(script.find("2/\u03c9_{max}"), std::string::npos);
+  EXPECT_EQ(script.find("Symbol"), std::string::npos);
+  int above = 0, below = 0;
+  for (const auto& cell : DataBlock((at_.dir / "map_err_dt.dat").string(), 0)) {
+    ASSERT_EQ(cell.size(), 9u);
+    EXPECT_DOUBLE_EQ(cell[5], cell[1]) << "a cell reaches above its own dt " << cell[1];
+    if (cell[1] > 1.0) {
+      EXPECT_GE(cell[4], 1.0) << "a cell above the bound reaches below it";
+      ++above;
+    } else {
+      ++below;
+    }
+  }
+  EXPECT_EQ(above, 11);
+  EXPECT_EQ(below, 33);
+}
+
+// The cost plot's Pareto line is its own data block, joined without breaks, in the order of
+// CPU time; its legend names the schemes present and every dt / dt_sharp shown.
+TEST_F(QuickStudyViews, CostPlotJoinsTheWholeFrontAndNamesOnlyWhatItDraws) {
+  const auto cost =
+      RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());
+  ASSERT_EQ(cost.exit_code, 0) << cost.output;
+  const std::string script = ReadBytes((at_.dir / "cost.gp").string());
+  const auto front = ClausesWith(script, "Pareto");
+  ASSERT_EQ(front.size(), 1u) << script;
+  EXPECT_NE(front[0].find("index 1"), std::string::npos) << front[0];
+  EXPECT_EQ(front[0].find("1/0"), std::string::npos) << front[0];
+  const auto front_rows = DataBlock((at_.dir / "cost.dat").string(), 1);
+  EXPECT_EQ(front_rows.size(), Count(cost.output, " *\n")) << cost.output;
+  EXPECT_GE(front_rows.size(), 4u);
+  for (std::size_t i = 1; i < front_rows.size(); ++i) {
+    EXPECT_GE(front_rows[i][0], front_rows[i - 1][0]);
+    EXPECT_LT(front_rows[i][1], front_rows[i - 1][1]);
+  }
+  EXPECT_EQ(script.find("implicit"), std::string::npos) << "quick has no implicit point";
+  std::set<std::string> ratios;
+  for (const auto& row : DataBlock((at_.dir / "cost.dat").string(), 0)) {
+    ratios.insert(fmt::format("{:.3g}", row[6]));
+  }
+  EXPECT_GE(ratios.size(), 2u);
+  for (const std::string& ratio : ratios) {
+    EXPECT_EQ(ClausesWith(script, "dt = " + ratio + " dt_{sharp}").size(), 1u) << ratio;
+  }
+}
+
 TEST_F(QuickStudyViews, Fig4CostAndAdviceAnswer) {
   const auto fig4 =
       RunShockmap("plot fig4 --db " + at_.db + " --out " + (at_.dir / "fig4.svg").string());
   ASSERT_EQ(fig4.exit_code, 0) << fig4.output;
   EXPECT_GT(std::filesystem::file_size(at_.dir / "fig4.svg"), 1000u);
+  // The SRf panel spans its data (0.81 to 1 on quick) and the threshold, not 0 to 1.
+  const std::string fig4_script = ReadBytes((at_.dir / "fig4.gp").string());
+  const std::regex srf_range("set ylabel 'SRf[^\n]*\nset yrange \\[([^:]+):([^\\]]+)\\]");
+  std::smatch srf;
+  ASSERT_TRUE(std::regex_search(fig4_script, srf, srf_range)) << fig4_script;
+  EXPECT_GT(std::stod(srf[1]), 0.7);
+  EXPECT_LT(std::stod(srf[1]), 0.8);  // Below the threshold line.
+  EXPECT_GT(std::stod(srf[2]), 1.0);
+  EXPECT_LT(std::stod(srf[2]), 1.05);
 
   const auto cost =
       RunShockmap("cost --db " + at_.db + " --rk 3000 --out " + (at_.dir / "cost.png").string());
   ASSERT_EQ(cost.exit_code, 0) << cost.output;
   EXPECT_NE(cost.output.find("R_k = 3162"), std::string::npos) << cost.output;
   EXPECT_NE(cost.output.find("*"), std::string::npos) << "no Pareto point marked";
+  // R_ftrunc 100 passes at 0.9 dt_sharp (Err 0.089) and fails at 0.1 (Err 0.108): by error
+  // cancellation, shown as such and off the front.
+  const std::regex fragile_row(R"( explicit-modal +100 +0\.9 .* fragile *\n)");
+  EXPECT_TRUE(std::regex_search(cost.output, fragile_row)) << cost.output;
+  EXPECT_NE(cost.output.find("only by error cancellation"), std::string::npos) << cost.output;
 
   const auto inside = RunShockmap("advise --db " + at_.db + " --rk 5000");
   ASSERT_EQ(inside.exit_code, 0) << inside.output;

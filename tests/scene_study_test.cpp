@@ -91,6 +91,14 @@ TEST_F(SceneStudy, BadStudiesAreRefusedBeforeTheDatabaseIsTouched) {
        },
        "not a parameter path"},
       {[](Json& s) {
+         s["sweep"] = {{"zones[2222222222222222222222].gap_m", {1e-4}}};
+       },
+       "not a parameter path"},
+      {[](Json& s) {
+         s["sweep"] = {{"zones.2222222222222222222222.gap_m", {1e-4}}};
+       },
+       "not a parameter path"},
+      {[](Json& s) {
          s["sweep"] = {{"solver.r_ftrunc", Json::array()}};
        },
        "non-empty list"},

@@ -180,7 +180,7 @@ TEST_F(Security, RepeatedNamesAreRefusedWithTheirPath) {
   WriteText(Path("heights.json"), heights.dump());
   Refused("simulate DIR/heights.json", {"bundle.wire.heights_m", "twice"});
   Json wrapper = bundle;
-  wrapper["beams"] = {CanonicalScene()["beams"][0]};
+  wrapper["beams"] = Json::array({CanonicalScene()["beams"][0]});
   wrapper["beams"][0]["name"] = "wrapper";
   WriteText(Path("wrapper.json"), wrapper.dump());
   Refused("simulate DIR/wrapper.json", {"bundle", "\"wrapper\"", "unique"});

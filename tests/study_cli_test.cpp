@@ -164,8 +164,20 @@ TEST_F(StudyProcess, BadStudyFilesLeaveTheDatabaseByteForByteUnchanged) {
       {R"({"name": "g", "grids": [{"rk": 1e400, "rftrunc": 10}]})", "number overflow"},
       {R"({"name": "g", "scoring": {"window_s": 0.03, "shocks": {"rest_duration_t1": 0.2}},
            "grids": [{"rk": 100, "rftrunc": 10}]})",
-       "other problem or scoring settings"},
+       "scoring.shocks.rest_duration_t1 = 0.1, where this file gives 0.2"},
+      // Another window would add points that criteria pool with the stored ones.
+      {R"({"name": "g", "scoring": {"window_s": 0.05}, "grids": [{"rk": 100, "rftrunc": 10}]})",
+       "study \"g\" already exists in " + db +
+           " with scoring.window_s = 0.03, where this file "
+           "gives 0.05"},
+      {R"({"name": "g", "scoring": {"window_s": 0.03, "reference": {"r_fref_min": 1000}},
+           "grids": [{"rk": 100, "rftrunc": 10}]})",
+       "scoring.reference.r_fref_min = 3000, where this file gives 1000"},
   };
+  const std::string counts =
+      "SELECT (SELECT count(*) FROM studies) || ' ' || (SELECT count(*) FROM points) || ' ' || "
+      "(SELECT count(*) FROM runs) || ' ' || (SELECT count(*) FROM reference_runs)";
+  const auto rows = testing::Rows(db, counts);
   for (std::size_t i = 0; i < bad.size(); ++i) {
     const std::string file = Path("bad" + std::to_string(i) + ".json");
     WriteText(file, bad[i].first);
@@ -174,7 +186,10 @@ TEST_F(StudyProcess, BadStudyFilesLeaveTheDatabaseByteForByteUnchanged) {
     EXPECT_NE(o.output.find(bad[i].second), std::string::npos) << o.output;
     EXPECT_NE(o.output.find(file), std::string::npos) << o.output;
     EXPECT_TRUE(ReadBytes(db) == bytes) << "case " << i;
+    EXPECT_EQ(testing::Rows(db, counts), rows) << "case " << i;
   }
+  const auto renamed = RunShockmap("study run " + Path("bad6.json") + " --db " + db + " --quiet");
+  EXPECT_NE(renamed.output.find("Give the study a new name"), std::string::npos) << renamed.output;
   // A bad file never creates a database either.
   const std::string fresh = Path("fresh.db");
   EXPECT_EQ(RunShockmap("study run " + Path("bad2.json") + " --db " + fresh).exit_code, 2);

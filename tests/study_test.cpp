@@ -14,6 +14,7 @@
 #include "db/read_only_query.h"
 #include "engine/progress_reporter.h"
 #include "engine/study_run.h"
+#include "formats/setting_change.h"
 #include "tests/run_command.h"
 
 namespace shockmap {
@@ -42,8 +43,6 @@ TEST_P(StudySpecRejects, NamingTheKeyPath) {
     EXPECT_NE(message.find(GetParam().path), std::string::npos) << message;
   }
 }
-
-constexpr const char* kGrid = R"("grids": [{"rk": [100], "rftrunc": [10]}])";
 
 INSTANTIATE_TEST_SUITE_P(
     Malformed, StudySpecRejects,
@@ -134,7 +133,7 @@ TEST(StudySpec, ModesAxisPlacesOneTruncationJustAboveEachModeFrequency) {
   }
 }
 
-TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
+TEST(StudySpec, ScoringSettingsEnterTheSettingsKeyByTheirValue) {
   auto spec = [](const std::string& shocks) {
     return ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {"shocks": {)" + shocks +
                                       R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
@@ -145,7 +144,6 @@ TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
   const StudySpec contact = spec(R"("srf_definition": "first_contact")");
   const StudySpec window = spec(R"("srf_definition": "reference_window")");
   EXPECT_EQ(SettingsKey(plain), SettingsKey(shock));
-  EXPECT_EQ(SettingsKey(plain).find("srf_definition"), std::string::npos);
   EXPECT_NE(SettingsKey(plain), SettingsKey(contact));
   EXPECT_NE(SettingsKey(contact), SettingsKey(window));
   EXPECT_EQ(OptionsOf(window, window.points[0]).srf_definition, SrfDefinition::kReferenceWindow);
@@ -157,6 +155,37 @@ TEST(StudySpec, NewScoringSettingsEnterTheSettingsKeyOnlyWhenNotTheDefault) {
                                                            "x.json")));
   // The reference does not depend on how SRf reads it.
   EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
+}
+
+// Each scoring and reference setting is lifelong and named by its key in the study file, with
+// the stored and the given value; thresholds and grid axes are not.
+TEST(StudySpec, AChangedLifelongSettingIsNamedByItsFileKey) {
+  auto key = [](const std::string& scoring) {
+    return Json::parse(
+        SettingsKey(ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {)" + scoring +
+                                               R"(}, "grids": [{"rk": [1, 10], "rftrunc": 10}]})"),
+                                   "x.json")));
+  };
+  const Json plain = key(R"("window_s": 0.03)");
+  const std::pair<const char*, const char*> changes[] = {
+      {R"("window_s": 0.05)", "scoring.window_s"},
+      {R"("window_s": 0.03, "psd": {"n_samples": 2048})", "scoring.psd.n_samples"},
+      {R"("window_s": 0.03, "psd": {"window": "rectangular"})", "scoring.psd.window"},
+      {R"("window_s": 0.03, "psd": {"zero_padding_factor": 2})", "scoring.psd.zero_padding_factor"},
+      {R"("window_s": 0.03, "shocks": {"rest_duration_t1": 1})", "scoring.shocks.rest_duration_t1"},
+      {R"("window_s": 0.03, "reference": {"r_fref_min": 1000})", "scoring.reference.r_fref_min"},
+      {R"("window_s": 0.03, "reference": {"tolerance": 0.05})", "scoring.reference.tolerance"},
+  };
+  for (const auto& [scoring, setting] : changes) {
+    const auto change = FirstChangedSetting(plain, key(scoring));
+    ASSERT_TRUE(change.has_value()) << scoring;
+    EXPECT_EQ(change->key, setting);
+  }
+  const auto window = FirstChangedSetting(plain, key(R"("window_s": 0.05)"));
+  EXPECT_EQ(window->stored, "0.03");
+  EXPECT_EQ(window->given, "0.05");
+  EXPECT_FALSE(
+      FirstChangedSetting(plain, key(R"("window_s": 0.03, "thresholds": {"err_max": 0.2})")));
 }
 
 class StudyDatabaseRuns : public ::testing::Test {
@@ -287,14 +316,14 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
 TEST(ProgressReporter, PrintsAPlainFinalLineOffATerminal) {
   std::FILE* out = std::tmpfile();
   ASSERT_NE(out, nullptr);
-  ProgressReporter progress("references", "references", 3, out, true);
+  ProgressReporter progress("references", "done", 3, out, true);
   progress.Update(1, "unconverged 0");
   progress.Finish(3, "unconverged 1, failed 0");
   std::rewind(out);
   char line[512] = {};
   ASSERT_NE(std::fgets(line, sizeof line, out), nullptr);
   const std::string text = line;
-  EXPECT_EQ(text.rfind("progress: references 3/3 references, ", 0), 0u) << text;
+  EXPECT_EQ(text.rfind("progress: references 3/3 done, ", 0), 0u) << text;
   EXPECT_NE(text.find("/s, took 0 s, unconverged 1, failed 0\n"), std::string::npos) << text;
   EXPECT_EQ(std::fgets(line, sizeof line, out), nullptr) << "one line only: " << line;
   std::fclose(out);
@@ -318,10 +347,9 @@ TEST(StudyRunCli, ReportsEveryPhaseAndARerunThatFindsEveryPointStored) {
   const std::string run = "study run " + spec + " --db " + (dir / "s.db").string();
   const auto first = testing::RunShockmap(run + " --jobs 1");
   ASSERT_EQ(first.exit_code, 0) << first.output;
-  EXPECT_NE(first.output.find("progress: references 2/2 references"), std::string::npos)
-      << first.output;
+  EXPECT_NE(first.output.find("progress: references 2/2 done"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("unconverged 0, failed 0"), std::string::npos) << first.output;
-  EXPECT_NE(first.output.find("progress: points 4/4 points"), std::string::npos) << first.output;
+  EXPECT_NE(first.output.find("progress: points 4/4 done"), std::string::npos) << first.output;
   EXPECT_NE(first.output.find("4 points in the study, 4 computed now (1 job"), std::string::npos)
       << first.output;
   const auto again = testing::RunShockmap(run + " --jobs 1");
@@ -340,7 +368,8 @@ TEST(SimulateCli, ReportsSimulatedTimeAndCountsInTheSingular) {
   EXPECT_NE(run.output.find("progress: simulate cantilever_spring 0.06/0.06 s simulated"),
             std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("1 beam, 1 zone, 10 modal coordinates"), std::string::npos)
+  EXPECT_NE(run.output.find("1 beam, 1 zone, 10 modal coordinates (10 modes per plane,"),
+            std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("1 distinct modal basis"), std::string::npos) << run.output;
   const auto quiet = testing::RunShockmap("simulate --quiet " + std::string(SHOCKMAP_SOURCE_DIR) +

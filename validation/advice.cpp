@@ -72,9 +72,32 @@ Basis Between(const RkBoundary& below, const RkBoundary& above, double r_k,
   return b;
 }
 
+// Outside the studied R_k, where the criteria know least, a time step never less conservative
+// than inside: the studied dt / dt_sharp one finer than the smaller of the largest passing ones
+// at the edge of the studied range and its studied neighbour, as Between takes it.
+double OutsideRatio(const std::vector<RkBoundary>& all, bool above,
+                    const std::vector<ScoredPoint>& points) {
+  const RkBoundary& edge = above ? all.back() : all.front();
+  double ratio = *edge.dt_ratio_max;
+  if (all.size() > 1) {
+    const RkBoundary& neighbour = above ? all[all.size() - 2] : all[1];
+    if (neighbour.dt_ratio_max) ratio = std::min(ratio, *neighbour.dt_ratio_max);
+  }
+  return FinerStudiedRatio(points, ratio);
+}
+
+std::string OutsideWarning(double r_k, const std::vector<RkBoundary>& all, const char* side) {
+  return fmt::format(
+      "R_k = {:g} lies outside the studied range [{:g}, {:g}], {}: the criteria know least "
+      "there, so dt/dt_sharp is one studied step finer than the largest passing at the edge of "
+      "the range (as between studied values); study R_k out there to refine it",
+      r_k, all.front().r_k, all.back().r_k, side);
+}
+
 // Past the largest studied R_k: the fitted envelope C R_k^p, never below the largest studied
-// boundary.
-Basis Beyond(const ValidityCriteria& c, const RkBoundary& last, double r_k) {
+// boundary, and OutsideRatio's time step.
+Basis Beyond(const ValidityCriteria& c, const RkBoundary& last, double r_k,
+             const std::vector<ScoredPoint>& points) {
   if (!c.fit) {
     throw InputError(fmt::format(
         "R_k = {:g} lies above the largest studied R_k = {:g} and the study has no fitted "
@@ -83,14 +106,13 @@ Basis Beyond(const ValidityCriteria& c, const RkBoundary& last, double r_k) {
   }
   const double envelope = c.fit->c_envelope * std::pow(r_k, c.fit->p);
   return {std::max(*last.r_ftrunc_min, envelope),
-          *last.dt_ratio_max,
+          OutsideRatio(c.boundary, true, points),
           {last.r_k},
           fmt::format("the fitted envelope {:.3g} R_k^{:.3f}, at least the R_ftrunc_min of the "
-                      "largest studied R_k = {:g}",
+                      "largest studied R_k = {:g}, and the studied dt/dt_sharp one finer than the "
+                      "largest passing there",
                       c.fit->c_envelope, c.fit->p, last.r_k),
-          {fmt::format("R_k = {:g} lies outside the studied range [{:g}, {:g}]: the truncation is "
-                       "extrapolated",
-                       r_k, c.boundary.front().r_k, last.r_k)}};
+          {OutsideWarning(r_k, c.boundary, "above it (the truncation is extrapolated)")}};
 }
 
 // Throws InputError when the study has no scored points.
@@ -99,7 +121,7 @@ Basis Choose(const ValidityCriteria& c, const std::vector<ScoredPoint>& points, 
   if (all.empty()) throw InputError("the study has no scored explicit-modal points to advise from");
   const auto above =
       std::ranges::find_if(all, [&](const RkBoundary& b) { return b.r_k >= r_k * (1 - kSame); });
-  if (above == all.end()) return Beyond(c, Passing(all.back()), r_k);
+  if (above == all.end()) return Beyond(c, Passing(all.back()), r_k, points);
   if (Same(above->r_k, r_k)) {
     const RkBoundary& b = Passing(*above);
     return {*b.r_ftrunc_min,
@@ -111,13 +133,13 @@ Basis Choose(const ValidityCriteria& c, const std::vector<ScoredPoint>& points, 
   if (above == all.begin()) {
     const RkBoundary& b = Passing(*above);
     return {*b.r_ftrunc_min,
-            *b.dt_ratio_max,
+            OutsideRatio(all, false, points),
             {b.r_k},
-            fmt::format("the boundary of the smallest studied R_k = {:g} (a softer contact needs "
-                        "no more)",
+            fmt::format("the R_ftrunc_min of the smallest studied R_k = {:g} (a softer contact "
+                        "needs no more) and the studied dt/dt_sharp one finer than the largest "
+                        "passing there",
                         b.r_k),
-            {fmt::format("R_k = {:g} lies outside the studied range [{:g}, {:g}], below it", r_k,
-                         b.r_k, all.back().r_k)}};
+            {OutsideWarning(r_k, all, "below it")}};
   }
   return Between(Passing(*std::prev(above)), Passing(*above), r_k, points);
 }

@@ -20,6 +20,8 @@ std::filesystem::path PlotComparison(const ComparisonResult& result,
 set output {png}
 set datafile separator ','
 set multiplot layout 2,1 title {title}
+set lmargin 10
+set rmargin 3
 set grid
 set key top right
 set xrange [0:{window}]

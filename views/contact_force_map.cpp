@@ -135,7 +135,7 @@ set xlabel 'lateral position y (mm)'
 set ylabel 'height (m)'
 set xrange [{x0}:{x1}]
 set yrange [0:{top}]
-set key top right opaque box font ',10'
+set key below font ',10'
 plot {clauses}
 )",
       fmt::arg("x0", e.y_min - margin), fmt::arg("x1", e.y_max + margin),

@@ -250,20 +250,10 @@ std::string StabilityLine(const ValidityCriteria& c, const std::vector<ScoredPoi
                  Num(c.smallest_diverged_dt_ratio), diverged, at, unstable);
 }
 
-}  // namespace
-
-std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
-                            const std::vector<ScoredPoint>& points) {
-  std::string s = fmt::format("criteria of study {} (explicit-modal; {}; {} stored)\n", study,
-                              ThresholdsText(c.options, false),
-                              Counted(static_cast<long long>(points.size()), "point"));
-  s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
-                   "dt/dt_sharp max", "passing");
-  for (const auto& b : c.boundary) {
-    s += fmt::format("  {:>10.4g}  {:>12}  {:>9.4g}  {:>15}  {:>4}/{:<3}\n", b.r_k,
-                     Num(b.r_ftrunc_min), std::sqrt(b.r_k), Num(b.dt_ratio_max), b.n_passing,
-                     b.n_points);
-  }
+// The lines after the table, each indented by two spaces: the fit, the paper's rules, the time
+// step.
+std::string RuleLines(const ValidityCriteria& c, const std::vector<ScoredPoint>& points) {
+  std::string s;
   if (c.fit) {
     const PowerLawFit& f = *c.fit;
     const bool inside = f.p_low <= 0.5 && 0.5 <= f.p_high;
@@ -300,6 +290,37 @@ std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
   s += PaperStepLine(points);
   s += StabilityLine(c, points);
   return s;
+}
+
+}  // namespace
+
+std::string CriteriaSummary(const std::string& study, const ValidityCriteria& c,
+                            const std::vector<ScoredPoint>& points) {
+  std::string s = fmt::format("criteria of study {} (explicit-modal; {}; {} stored)\n", study,
+                              ThresholdsText(c.options, false),
+                              Counted(static_cast<long long>(points.size()), "point"));
+  s += fmt::format("  {:>10}  {:>12}  {:>9}  {:>15}  {:>8}\n", "R_k", "R_ftrunc_min", "sqrt(R_k)",
+                   "dt/dt_sharp max", "passing");
+  for (const auto& b : c.boundary) {
+    s += fmt::format("  {:>10.4g}  {:>12}  {:>9.4g}  {:>15}  {:>4}/{:<3}\n", b.r_k,
+                     Num(b.r_ftrunc_min), std::sqrt(b.r_k), Num(b.dt_ratio_max), b.n_passing,
+                     b.n_points);
+  }
+  return s + RuleLines(c, points);
+}
+
+std::vector<std::string> CriteriaRuleLines(const ValidityCriteria& c,
+                                           const std::vector<ScoredPoint>& points) {
+  std::vector<std::string> lines;
+  const std::string text = RuleLines(c, points);
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = text.find('\n', at);
+    const std::string line = text.substr(at, end - at);
+    lines.push_back(line.substr(line.find_first_not_of(' ')));
+    if (end == std::string::npos) break;
+    at = end + 1;
+  }
+  return lines;
 }
 
 std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,

@@ -29,6 +29,11 @@ ValidityCriteria CriteriaFromJson(const nlohmann::json& json, const std::string&
 std::string CriteriaSummary(const std::string& study, const ValidityCriteria& criteria,
                             const std::vector<ScoredPoint>& points);
 
+// The lines of CriteriaSummary after its table (the fit, the paper's rules, the time step),
+// unindented: "paper eq. 10  R_ftrunc > sqrt(R_k), ...", its label first.
+std::vector<std::string> CriteriaRuleLines(const ValidityCriteria& criteria,
+                                           const std::vector<ScoredPoint>& points);
+
 // Empty when the new criteria agree with the baseline within its tolerances and no stored point
 // contradicts the baseline's criteria; else one line per disagreement, naming the criterion,
 // the old and new values, or the offending point.

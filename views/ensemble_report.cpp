@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "db/report_queries.h"
 #include "views/html_report.h"
@@ -15,8 +17,48 @@
 namespace shockmap {
 namespace {
 
-std::string Scrolling(const std::string& table) {
-  return "<div class=\"scroll\">" + table + "</div>\n";
+// A setting as an engineer names it: the scene's own solver settings when the study has one
+// setting ("the scene's own: R_ftrunc = 300, dt = 0.1 dt_sharp"), else its swept values, the
+// refined one marked.
+std::string SettingName(const GroupSizing& g, const Scene& scene, bool several) {
+  const auto setting = nlohmann::json::parse(g.setting_json, nullptr, false);
+  std::string name;
+  if (setting.is_object()) {
+    for (const auto& [path, value] : setting.items()) {
+      name += fmt::format("{}{} = {}", name.empty() ? "" : ", ", path, value.dump());
+    }
+  }
+  if (name.empty()) {
+    const SceneSolver& solver = scene.solver;
+    const std::string truncation = solver.f_trunc_hz
+                                       ? fmt::format("f_trunc = {:g} Hz", *solver.f_trunc_hz)
+                                       : fmt::format("R_ftrunc = {:g}", solver.r_ftrunc);
+    const std::string dt =
+        solver.dt.dt_s ? fmt::format("dt = {:g} s", *solver.dt.dt_s)
+                       : fmt::format("dt = {:g} dt_{}", solver.dt.factor, ToString(solver.dt.rule));
+    name = "the scene's own: " + truncation + ", " + dt;
+  }
+  return several && g.refined ? name + " (refined)" : name;
+}
+
+// `table` with its "setting" cells (the stored setting, " (refined)" after the refined one)
+// named by SettingName.
+Table WithSettingNames(Table table, const EnsembleSizing& s, const Scene& scene) {
+  const auto column = std::ranges::find(table.columns, "setting") - table.columns.begin();
+  if (static_cast<std::size_t>(column) == table.columns.size()) return table;
+  std::set<std::string> settings;
+  for (const GroupSizing& g : s.groups) settings.insert(g.setting_json);
+  std::map<std::string, std::string> names;
+  for (const GroupSizing& g : s.groups) {
+    names[g.setting_json + (g.refined ? " (refined)" : "")] =
+        SettingName(g, scene, settings.size() > 1);
+  }
+  for (auto& row : table.rows) {
+    if (const auto name = names.find(CellText(row[column])); name != names.end()) {
+      row[column] = name->second;
+    }
+  }
+  return table;
 }
 
 // What the study is and what the tables count, from the stored study file.
@@ -30,8 +72,11 @@ std::string About(const EnsembleSizing& s, const std::string& spec_json) {
       "<p>P{0:g} of the members' largest force per zone, with {1:g} % intervals from order "
       "statistics (an empty end: too few members to bound that side), Wilks' upper tolerance "
       "limit and a bootstrap interval as a cross-check: the numbers of <code>shockmap sizing "
-      "--quantile {2:g} --confidence {3:g}</code>. The hottest zone of a clearance state has the "
-      "highest estimate at its refined setting.</p>\n",
+      "--quantile {2:g} --confidence {3:g}</code>. The zones come in the families an engineer "
+      "sizes: the pin-pin wires, the duct pad, the pins against the wrapper (and any other); the "
+      "hottest zone of a family has the family's highest estimate at the state's refined "
+      "setting, so that the duct pad does not hide the wires. Its design value is Wilks' limit, "
+      "which needs the members given beside it.</p>\n",
       100 * s.options.quantile, 100 * s.options.confidence, s.options.quantile,
       s.options.confidence);
   if (s.pending + s.failed > 0) {
@@ -85,20 +130,20 @@ Table ImpactTable(const EnsembleSizing& s) {
   return t;
 }
 
-std::string Impacts(const EnsembleSizing& s) {
-  const Table table = ImpactTable(s);
+std::string Impacts(const EnsembleSizing& s, const Scene& scene) {
+  const Table table = WithSettingNames(ImpactTable(s), s, scene);
   if (table.rows.empty()) {
     return "<p>No member streamed impact statistics (the study file has no "
            "<code>impact_statistics</code>).</p>\n";
   }
   return "<p>Each zone's impact statistics (docs/physics.md §6), averaged over the members; "
          "the wear work rate where the scene bends in both planes.</p>\n" +
-         Scrolling(SortableTable(table, "impacts-table",
-                                 "Mean impact statistics per clearance state, setting and zone"));
+         SortableTable(table, "impacts-table",
+                       "Mean impact statistics per clearance state, setting and zone");
 }
 
-std::string Wear(const EnsembleSizing& s) {
-  const Table table = WearTable(s);
+std::string Wear(const EnsembleSizing& s, const Scene& scene) {
+  const Table table = WithSettingNames(WearTable(s), s, scene);
   if (table.rows.empty()) {
     return "<p>No member has a wear volume (the scene has no <code>wear</code> law, or its "
            "zones do not slide: it bends in one plane, or the study file has no "
@@ -110,8 +155,7 @@ std::string Wear(const EnsembleSizing& s) {
              "upper tolerance limit (the design value) and the mean, beside the P{0:g} of the "
              "largest force: the numbers of <code>shockmap sizing --wear</code>.</p>\n",
              100 * s.options.quantile, 100 * s.options.confidence) +
-         Scrolling(SortableTable(table, "wear-table",
-                                 "Wear volume per clearance state, setting and zone"));
+         SortableTable(table, "wear-table", "Wear volume per clearance state, setting and zone");
 }
 
 std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
@@ -130,16 +174,17 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
   const EnsembleSizing sizing = SizeEnsemble(stored, ctx.study, SizingOptions{});
   const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
   return {
-      {"sizing-hottest", "Sizing force of the hottest zone",
+      {"sizing-hottest", "Sizing force of the hottest zone of each family",
        About(sizing, stored.spec_json) +
-           Scrolling(SortableTable(HottestZoneTable(sizing, false), "sizing-hottest-table",
-                                   "The hottest zone per clearance state and setting"))},
+           SortableTable(WithSettingNames(HottestZoneTable(sizing, false), sizing, scene),
+                         "sizing-hottest-table",
+                         "The hottest zone of each family per clearance state and setting")},
       {"sizing-zones", "Sizing statistics per zone",
-       Scrolling(SortableTable(ZoneTable(sizing), "sizing-zones-table",
-                               "Every zone per clearance state and setting"))},
+       SortableTable(WithSettingNames(ZoneTable(sizing), sizing, scene), "sizing-zones-table",
+                     "Every zone per clearance state and setting")},
       {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
-      {"impacts", "Impact statistics", Impacts(sizing)},
-      {"wear-sizing", "Wear sizing", Wear(sizing)},
+      {"impacts", "Impact statistics", Impacts(sizing, scene)},
+      {"wear-sizing", "Wear sizing", Wear(sizing, scene)},
       {"sizing-pictures", "Sizing pictures", Pictures(ctx, sizing, stored, scene)},
       {"provenance", "Provenance",
        SortableTable(tables.provenance, "provenance-table", "Runs of the study")},

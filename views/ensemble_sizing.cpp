@@ -5,6 +5,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <tuple>
 
 #include "core/input_error.h"
 #include "db/stored_json.h"
@@ -80,12 +81,17 @@ CurrentSpec ReadCurrentSpec(const StoredEnsemble& stored) {
   });
 }
 
-std::vector<std::string> ZoneNames(const StoredEnsemble& stored) {
+// Each zone's name and family (from the beams it joins, as the nominal run stored them).
+std::pair<std::vector<std::string>, std::vector<ZoneFamily>> ZoneNames(
+    const StoredEnsemble& stored) {
   for (const EnsembleReferenceRow& r : stored.references) {
     if (r.zones_json.empty()) continue;
-    std::vector<std::string> names;
-    for (const Json& z : Json::parse(r.zones_json)) names.push_back(z.at("name"));
-    return names;
+    std::pair<std::vector<std::string>, std::vector<ZoneFamily>> zones;
+    for (const Json& z : Json::parse(r.zones_json)) {
+      zones.first.push_back(z.at("name"));
+      zones.second.push_back(FamilyOfZone(z.value("beam_a", ""), z.value("beam_b", "")));
+    }
+    return zones;
   }
   throw InputError("the study's nominal runs are not stored: run the study again");
 }
@@ -162,7 +168,7 @@ std::optional<double> NominalForce(const StoredEnsemble& stored, const std::stri
 
 GroupSizing SizeGroup(GroupSizing g, const std::vector<const StoredMember*>& members,
                       const StoredEnsemble& stored, const std::vector<std::string>& names,
-                      const SizingOptions& options) {
+                      const std::vector<ZoneFamily>& families, const SizingOptions& options) {
   g.members = static_cast<int>(members.size());
   for (const StoredMember* m : members) {
     if (m->zones.size() != names.size()) {
@@ -180,6 +186,7 @@ GroupSizing SizeGroup(GroupSizing g, const std::vector<const StoredMember*>& mem
     ZoneSizing z = SizeZone(forces, options);
     z.zone = zone;
     z.name = names[zone];
+    z.family = families[zone];
     z.nominal_n = NominalForce(stored, g.state, zone);
     z.impacts = MeanOf(members, zone);
     z.wear = WearOf(members, zone, options);
@@ -198,6 +205,21 @@ int HighestSizing(const GroupSizing& g, const std::string& among) {
   return hottest;
 }
 
+// The hottest zone of each family among the zones whose name holds `among`.
+std::vector<FamilyHottest> HottestPerFamily(const GroupSizing& g, const std::string& among) {
+  std::vector<FamilyHottest> families;
+  for (const ZoneFamily family : {ZoneFamily::kPinPinWire, ZoneFamily::kDuctPad,
+                                  ZoneFamily::kPinWrapper, ZoneFamily::kOther}) {
+    int hottest = -1;
+    for (const ZoneSizing& z : g.zones) {
+      if (z.family != family || z.name.find(among) == std::string::npos) continue;
+      if (hottest < 0 || z.sizing.estimate > g.zones[hottest].sizing.estimate) hottest = z.zone;
+    }
+    if (hottest >= 0) families.push_back({family, hottest, std::nullopt});
+  }
+  return families;
+}
+
 const GroupSizing* RefinedOf(const std::vector<GroupSizing>& groups, const std::string& state) {
   for (const GroupSizing& r : groups) {
     if (r.refined && r.state == state) return &r;
@@ -211,6 +233,7 @@ void JudgeAgainstRefined(std::vector<GroupSizing>& groups, const SizingOptions& 
   for (GroupSizing& g : groups) {
     const GroupSizing* refined = RefinedOf(groups, g.state);
     g.hottest = HighestSizing(refined != nullptr ? *refined : g, options.hottest_among);
+    g.families = HottestPerFamily(refined != nullptr ? *refined : g, options.hottest_among);
   }
   for (GroupSizing& g : groups) {
     const GroupSizing* refined = RefinedOf(groups, g.state);
@@ -220,6 +243,8 @@ void JudgeAgainstRefined(std::vector<GroupSizing>& groups, const SizingOptions& 
       if (agrees) ++(*agrees ? g.zones_agreeing : g.zones_disagreeing);
     }
     g.hottest_agrees = Agrees(g.zones[g.hottest], refined->zones[g.hottest], options.tolerance);
+    for (FamilyHottest& f : g.families)
+      f.agrees = Agrees(g.zones[f.zone], refined->zones[f.zone], options.tolerance);
   }
 }
 
@@ -287,11 +312,11 @@ EnsembleSizing SizeEnsemble(const StoredEnsemble& stored, const std::string& stu
   sizing.pending = stored.pending;
   sizing.failed = stored.failed;
   sizing.superseded = stored.superseded;
-  sizing.zone_names = ZoneNames(stored);
+  std::tie(sizing.zone_names, sizing.zone_families) = ZoneNames(stored);
   const Json spec = Json::parse(stored.spec_json);
   for (auto& [group, members] : Groups(stored, RefinedSetting(spec, stored.members))) {
-    sizing.groups.push_back(
-        SizeGroup(std::move(group), members, stored, sizing.zone_names, options));
+    sizing.groups.push_back(SizeGroup(std::move(group), members, stored, sizing.zone_names,
+                                      sizing.zone_families, options));
   }
   JudgeAgainstRefined(sizing.groups, options);
   return sizing;

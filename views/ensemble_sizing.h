@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "db/ensemble_members.h"
+#include "formats/zone_family.h"
 #include "statistics/bootstrap.h"
 #include "statistics/quantile_interval.h"
 #include "statistics/wilks.h"
@@ -50,6 +51,7 @@ struct WearSizing {
 struct ZoneSizing {
   int zone = 0;
   std::string name;
+  ZoneFamily family = ZoneFamily::kOther;
   int members = 0;
   QuantileInterval p50, p95, p99, sizing;  // sizing: at SizingOptions::quantile.
   int wilks_order = 0;                     // 0: too few members for order 1.
@@ -58,6 +60,14 @@ struct ZoneSizing {
   std::optional<double> nominal_n;     // The state's nominal run.
   std::optional<MeanImpacts> impacts;  // Over the members.
   std::optional<WearSizing> wear;      // When every member has the zone's wear volume.
+};
+
+// The hottest zone of one family (docs/ensembles.md, "Sizing by zone family"): the highest
+// sizing estimate among the family's zones at the state's refined setting.
+struct FamilyHottest {
+  ZoneFamily family = ZoneFamily::kOther;
+  int zone = 0;                // Index in GroupSizing::zones.
+  std::optional<bool> agrees;  // With the state's refined setting, as hottest_agrees.
 };
 
 // One clearance state at one numerical setting.
@@ -71,6 +81,8 @@ struct GroupSizing {
   // Against the state's refined setting (absent for the refined one itself, or while either
   // interval is unbounded: too few members to judge).
   std::optional<bool> hottest_agrees;
+  // One per family the scene has (among the zones --hottest-among keeps), in ZoneFamily order.
+  std::vector<FamilyHottest> families;
   int zones_agreeing = 0, zones_disagreeing = 0;  // The others are undecided.
 };
 
@@ -78,7 +90,8 @@ struct EnsembleSizing {
   std::string study;
   SizingOptions options;
   std::vector<std::string> zone_names;
-  std::vector<GroupSizing> groups;  // States in the file's order, then settings.
+  std::vector<ZoneFamily> zone_families;  // Of each zone, from the beams it joins.
+  std::vector<GroupSizing> groups;        // States in the file's order, then settings.
   std::int64_t pending = 0, failed = 0, superseded = 0;
 };
 

@@ -71,6 +71,24 @@ std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>,
   return range;
 }
 
+// The SRf axis: the curves' values and the threshold, with a twentieth of their span (at
+// least 0.01) around them; [0, 1.05] when nothing is scored.
+std::string SrfRange(const std::map<std::pair<std::string, double>, Curve>& curves,
+                     double threshold) {
+  double low = threshold, high = threshold;
+  bool scored = false;
+  for (const auto& [key, curve] : curves) {
+    for (const auto& [rk, p] : curve.by_rk) {
+      if (const auto srf = p->scores["srf"]) {
+        low = std::min(low, *srf), high = std::max(high, *srf), scored = true;
+      }
+    }
+  }
+  if (!scored) return "[0:1.05]";
+  const double margin = std::max(0.01, 0.05 * (high - low));
+  return fmt::format("[{:.4g}:{:.4g}]", low - margin, high + margin);
+}
+
 // Writes one data block per curve (columns r_k err srf status) and returns the plot clauses
 // of the Err and the SRf panels.
 std::pair<std::string, std::string> WriteCurves(
@@ -129,7 +147,7 @@ set key below font ',10' maxrows 4
 set yrange [0:*]
 plot {err_plot}, {err_max} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {err_max:g}'{unconverged_key}
 set ylabel 'SRf (paper eq. 9)'
-set yrange [0:1.05]
+set yrange {srf_range}
 plot {srf_plot}, {srf_min} with lines lw 1 dt 3 lc rgb '#d73027' title 'threshold {srf_min:g}'{unconverged_key}
 unset multiplot
 )gp",
@@ -139,6 +157,7 @@ unset multiplot
       fmt::arg("err_plot", err_plot), fmt::arg("srf_plot", srf_plot),
       fmt::arg("err_max", thresholds.thresholds.at("err")),
       fmt::arg("srf_min", thresholds.thresholds.at("srf")),
+      fmt::arg("srf_range", SrfRange(curves, thresholds.thresholds.at("srf"))),
       fmt::arg("unconverged", UnconvergedMarks(UnconvergedRk(curves))),
       fmt::arg("unconverged_key", UnconvergedKey(UnconvergedRk(curves))));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);

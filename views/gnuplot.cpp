@@ -210,6 +210,14 @@ std::string GnuplotOutputName(const std::filesystem::path& image) {
   return fmt::format("(exists('{0}') ? {0} : {1})", kOutputVariable, GnuplotFileName(image));
 }
 
+std::string GnuplotTics(const char* axis, std::vector<double> values) {
+  std::ranges::sort(values);
+  std::string tics;
+  for (double v : values) tics += fmt::format("{}'{:.4g}' {}", tics.empty() ? "" : ", ", v, v);
+  return fmt::format("set {}tics ({}){}\n", axis, tics,
+                     std::string(axis) == "x" ? " rotate by -35 offset 0,0" : "");
+}
+
 void RunGnuplot(const std::string& script, const std::filesystem::path& script_file,
                 const std::filesystem::path& image) {
   WriteFileAtomically(script_file, script);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace shockmap {
 
@@ -33,6 +34,10 @@ std::string GnuplotFileName(const std::filesystem::path& file);
 // RunGnuplot's choosing when RunGnuplot runs the script, `image` (as GnuplotFileName) when
 // someone runs it by hand.
 std::string GnuplotOutputName(const std::filesystem::path& image);
+
+// "set xtics (...)" (axis "x") or "set ytics (...)": one tick per value, in ascending order,
+// labelled with 4 significant digits; x labels are turned so that close values stay legible.
+std::string GnuplotTics(const char* axis, std::vector<double> values);
 
 // Writes `script` to script_file (in full or not at all) and runs gnuplot on it from the
 // script's folder, without a shell: its file names are relative to that folder. `image` is the

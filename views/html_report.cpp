@@ -16,6 +16,7 @@
 #include "views/html_text.h"
 #include "views/html_validity_map.h"
 #include "views/scored_points.h"
+#include "views/study_verdict.h"
 #include "views/validity_map.h"
 
 namespace shockmap {
@@ -44,25 +45,41 @@ std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
       "<p>Hover a cell for its R_k, R_ftrunc, dt, scores and status; click it to open the "
       "point: its stored values, its Fig. 3 and the <code>compare</code> command that "
       "recomputes it.</p>\n<h3>Outcome over R_k and R_ftrunc, {}</h3>\n{}"
-      "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}",
+      "<h3>Outcome over R_k and dt at R_ftrunc = {:g}</h3>\n{}"
+      "<h3>Scores and cost over R_k and R_ftrunc, {}</h3>\n{}",
       HtmlEscaped(DtShown(by_rft)),
       HtmlValidityMap(by_rft, MapAxis::kRFtrunc, criteria, "map-rftrunc"), by_dt.fixed_r_ftrunc,
-      HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"));
+      HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"), HtmlEscaped(DtShown(by_rft)),
+      HtmlMetricMaps(by_rft, criteria, "map-metric"));
 }
 
-// The gnuplot maps, Fig. 4 and the cost front, drawn into ctx.dir.
-std::string MapFigures(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
-                       const ValidityCriteria& criteria) {
-  std::string figures;
+// One line of links to a drawn map's image, data and script.
+std::string MapFileLinks(const std::filesystem::path& png, const std::string& caption,
+                         const std::filesystem::path& dir) {
+  std::string links;
+  for (const FileLink& l : PlotFiles(png, dir)) {
+    links += fmt::format(" <a href=\"{}\">{}</a>", HtmlEscaped(l.relative.generic_string()),
+                         HtmlEscaped(l.label));
+  }
+  return fmt::format("<li>{}:{}</li>\n", HtmlEscaped(caption), links);
+}
+
+// The gnuplot maps, drawn into ctx.dir for papers and linked (the page shows the interactive
+// maps).
+std::string MapFiles(const ReportContext& ctx, const std::vector<ScoredPoint>& points,
+                     const ValidityCriteria& criteria) {
+  std::string items;
   for (const std::string& metric : MapMetrics()) {
     const auto png = ctx.dir / ("map_" + metric + ".png");
     DrawValidityMap(ctx.study, points, criteria, {metric, MapAxis::kRFtrunc, {}}, png);
-    figures += Figure(png, "Validity map: " + metric + " over R_k and R_ftrunc", ctx.dir);
+    items += MapFileLinks(png, metric + " over R_k and R_ftrunc", ctx.dir);
   }
   const auto dt_png = ctx.dir / "map_status_dt.png";
   DrawValidityMap(ctx.study, points, criteria, {"status", MapAxis::kDt, {}}, dt_png);
-  return figures +
-         Figure(dt_png, "Outcome over R_k and dt / dt_sharp at the largest truncation", ctx.dir);
+  items += MapFileLinks(dt_png, "outcome over R_k and dt / dt_sharp", ctx.dir);
+  return "<p>The maps as gnuplot figures, with their data and scripts:</p>\n<ul "
+         "class=\"files\">\n" +
+         items + "</ul>\n";
 }
 
 // The cost front of the paper's Fig. 3 case when studied, else of the nearest R_k, with its
@@ -76,6 +93,24 @@ std::string CostSection(const ReportContext& ctx, const std::vector<ScoredPoint>
   return Figure(cost_png, fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k),
                 ctx.dir) +
          Preformatted(CostSummary(tables));
+}
+
+// The criteria per R_k as a table, then the fit and the paper's rules, each line its label in
+// bold.
+std::string CriteriaHtml(const ValidityCriteria& criteria, const std::vector<ScoredPoint>& points) {
+  std::string rules;
+  for (const std::string& line : CriteriaRuleLines(criteria, points)) {
+    const std::size_t gap = line.find("  ");
+    const std::size_t text = line.find_first_not_of(' ', gap);
+    rules += gap == std::string::npos || text == std::string::npos
+                 ? "<li>" + HtmlEscaped(line) + "</li>\n"
+                 : fmt::format("<li><strong>{}</strong>: {}</li>\n",
+                               HtmlEscaped(line.substr(0, gap)), HtmlEscaped(line.substr(text)));
+  }
+  return SortableTable(CriteriaTable(criteria), "criteria-table",
+                       "Per studied R_k (explicit-modal; " +
+                           ThresholdsText(criteria.options, false) + "); an empty cell: none") +
+         "<ul class=\"rules\">\n" + rules + "</ul>\n";
 }
 
 // The points table (a chosen set of the results view's columns), each row linking its page.
@@ -101,10 +136,7 @@ std::string PointsTable(const Table& results) {
     links.push_back(
         PointPagePath(std::get<std::int64_t>(row[PointIdColumn(results)])).generic_string());
   }
-  return "<div class=\"scroll\">" +
-         SortableTable(shown, "points-table", "Every stored point (click a header to sort)",
-                       links) +
-         "</div>\n";
+  return SortableTable(shown, "points-table", "Every stored point (click a header to sort)", links);
 }
 
 // Writes points/point_ID.html for every row of `results`.
@@ -141,7 +173,9 @@ std::vector<std::pair<std::string, std::string>> HeaderFacts(const ReportContext
       {"report written", UtcNow() + " (UTC)"},
       {"by code version", fmt::format("{} ({}, {})", ctx.writer.code_version, ctx.writer.compiler,
                                       ctx.writer.build_type)},
-      {"points computed by", computed.empty() ? "no run yet" : computed},
+      {ctx.kind == ToString(StudyFileKind::kSceneEnsemble) ? "members computed by"
+                                                           : "points computed by",
+       computed.empty() ? "no run yet" : computed},
       {"database", ctx.database_path}};
   // An ensemble's members are not scored: the scores' thresholds judge nothing there.
   if (ctx.kind != ToString(StudyFileKind::kSceneEnsemble)) {
@@ -191,12 +225,15 @@ std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const Stu
   const auto fig4_png = ctx.dir / "fig4.png";
   DrawFig4(ctx.study, explicit_points, implicit_points, ctx.thresholds, fig4_png);
   return {
+      {"verdict", "Verdict",
+       "<p class=\"verdict\" id=\"verdict-text\">" +
+           HtmlEscaped(StudyVerdict(ctx.study, criteria, explicit_points, results)) + "</p>\n"},
       {"outcomes", "Outcomes",
        SortableTable(tables.outcomes, "outcomes-table", "Points by scheme and status")},
       {"criteria", "Validity criteria and the paper's rules",
-       Preformatted(CriteriaSummary(ctx.study, criteria, explicit_points))},
+       CriteriaHtml(criteria, explicit_points)},
       {"maps", "Validity maps", InteractiveMaps(explicit_points, criteria)},
-      {"map-figures", "Validity maps as figures", MapFigures(ctx, explicit_points, criteria)},
+      {"map-files", "Validity maps as files", MapFiles(ctx, explicit_points, criteria)},
       {"fig4", "The paper's Fig. 4",
        Figure(fig4_png, "Err and SRf against R_k, as the paper's Fig. 4", ctx.dir)},
       {"cost", "What accuracy costs", CostSection(ctx, explicit_points, implicit_points)},

@@ -34,7 +34,8 @@ struct ReportContext {
   std::filesystem::path dir;
 };
 
-// The points of a canonical study worth a drawn Fig. 3, by point_id: at every studied R_k and
+// The points of a canonical study whose Fig. 3 the report also writes as files (histories as
+// CSV, the figure by gnuplot), by point_id: at every studied R_k and
 // its finest time step, the smallest passing truncation and the one below it (where the study
 // turns from failing to passing), and at the R_k nearest the paper's Fig. 3 (3000) the smallest
 // and largest truncation. At most two per R_k and two more.
@@ -43,7 +44,7 @@ std::vector<std::int64_t> PointsWorthFig3(const std::vector<ScoredPoint>& points
 
 // A canonical study: outcomes, criteria, interactive maps, the gnuplot maps, Fig. 4, the cost
 // front, the points table, provenance and the study file; writes the figures into ctx.dir and
-// the point pages into ctx.dir/points. `figures`: the Fig. 3 drawn, by point_id.
+// the point pages into ctx.dir/points. `figures`: every point's Fig. 3, by point_id.
 std::vector<ReportSection> CanonicalSections(const ReportContext& ctx, const StudySpec& spec,
                                              const std::map<std::int64_t, PointFigure>& figures);
 

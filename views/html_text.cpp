@@ -91,8 +91,13 @@ std::string Cell(const TableCell& cell) {
 
 std::string SortableTable(const Table& result, const std::string& id, const std::string& caption,
                           const std::vector<std::string>& row_links) {
-  std::string html = fmt::format("<table class=\"sortable\" id=\"{}\"><caption>{}</caption>\n",
-                                 HtmlEscaped(id), HtmlEscaped(caption));
+  const std::string safe_id = HtmlEscaped(id);
+  std::string html = fmt::format(
+      "<div class=\"table-tools\"><input type=\"search\" class=\"table-filter\" "
+      "data-table=\"{0}\" placeholder=\"filter rows\" aria-label=\"filter the rows of {1}\"> "
+      "<a class=\"table-csv\" data-table=\"{0}\" href=\"#\" download=\"{0}.csv\">CSV</a></div>\n"
+      "<div class=\"table-wrap\"><table class=\"sortable\" id=\"{0}\"><caption>{1}</caption>\n",
+      safe_id, HtmlEscaped(caption));
   html += "<thead><tr>";
   for (std::size_t c = 0; c < result.columns.size(); ++c) {
     html +=
@@ -113,7 +118,7 @@ std::string SortableTable(const Table& result, const std::string& id, const std:
     }
     html += "</tr>\n";
   }
-  return html + "</tbody></table>\n";
+  return html + "</tbody></table></div>\n";
 }
 
 std::string EmbeddedFigure(const std::filesystem::path& png, const std::string& caption,

@@ -28,7 +28,10 @@ std::string CellText(const TableCell& cell);
 // A <table class="sortable"> of `result` with a <caption>: a click on a header sorts by that
 // column (the page's vendored tablesort), numerically where every value of the column is a
 // number. `id` names the table in the page. With `row_links` (one per row), each row's first
-// cell links to its entry.
+// cell links to its entry. Above the table, a filter box (class table-filter: the rows not
+// holding every word typed are hidden) and a CSV link (class table-csv: the rows shown, reals
+// at full precision, built by the page's script on a click); the table sits in a
+// <div class="table-wrap"> that scrolls sideways only when wider than the page.
 std::string SortableTable(const Table& result, const std::string& id, const std::string& caption,
                           const std::vector<std::string>& row_links = {});
 

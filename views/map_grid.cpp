@@ -21,20 +21,30 @@ std::optional<MapAxis> MapAxisFromString(std::string_view s) {
 
 namespace {
 
-// Colours of the categories in order: passes, fails thresholds, then the other statuses; a
-// status added to kAllRunStatuses takes the next colour.
-constexpr const char* kCategoryColours[] = {"#1a9850", "#fdae61", "#d73027", "#000000",
-                                            "#bdbdbd", "#7b3294", "#2166ac", "#8c510a"};
+// A non-ok status's look: a white cell under a marker for runs that ended badly, grey for a
+// reference that did not converge.
+OutcomeCategory StatusCategory(RunStatus s) {
+  std::string label = ToString(s);
+  std::ranges::replace(label, '_', ' ');
+  switch (s) {
+    case RunStatus::kDiverged:
+      return {label, "#ffffff", CellMarker::kCross};
+    case RunStatus::kUnstable:
+      return {label, "#ffffff", CellMarker::kSquare};
+    case RunStatus::kFailed:
+      return {label, "#ffffff", CellMarker::kCircle};
+    case RunStatus::kReferenceUnconverged:
+    case RunStatus::kOk:
+      break;
+  }
+  return {label, "#bdbdbd", CellMarker::kNone};
+}
 
 std::vector<OutcomeCategory> MakeCategories() {
-  std::vector<OutcomeCategory> categories = {{"passes", kCategoryColours[0]},
-                                             {"fails thresholds", kCategoryColours[1]}};
+  std::vector<OutcomeCategory> categories = {{"passes", "#1a9850"},
+                                             {"fails thresholds", "#fdae61"}};
   for (RunStatus s : kAllRunStatuses) {
-    if (s == RunStatus::kOk) continue;
-    const std::size_t i = categories.size() % std::size(kCategoryColours);
-    std::string label = ToString(s);
-    std::ranges::replace(label, '_', ' ');
-    categories.push_back({label, kCategoryColours[i]});
+    if (s != RunStatus::kOk) categories.push_back(StatusCategory(s));
   }
   return categories;
 }
@@ -47,6 +57,19 @@ std::map<double, std::pair<double, double>> LogCells(const std::vector<double>& 
                                : (values.size() > 1 ? std::sqrt(values[1] / values[0]) : 1.5);
     const double above = i + 1 < values.size() ? std::sqrt(values[i + 1] / values[i]) : below;
     cells[values[i]] = {values[i] / below, values[i] * above};
+  }
+  return cells;
+}
+
+// The dt / dt_sharp cells: each from the next finer studied ratio (the finest: a geometric
+// step below it) up to its own; a cell above the sharp bound starts at the bound.
+std::map<double, std::pair<double, double>> DtCells(const std::vector<double>& ratios) {
+  std::map<double, std::pair<double, double>> cells;
+  for (std::size_t i = 0; i < ratios.size(); ++i) {
+    double low = i > 0 ? ratios[i - 1]
+                       : ratios[0] / (ratios.size() > 1 ? std::sqrt(ratios[1] / ratios[0]) : 1.5);
+    if (ratios[i] > 1.0) low = std::max(low, 1.0);
+    cells[ratios[i]] = {low, ratios[i]};
   }
   return cells;
 }
@@ -97,7 +120,7 @@ MapGrid BuildMapGrid(const std::vector<ScoredPoint>& points, MapAxis y_axis, dou
   grid.r_k_values = Sorted(xs);
   grid.y_values = Sorted(ys);
   const auto xcells = LogCells(grid.r_k_values);
-  const auto ycells = LogCells(grid.y_values);
+  const auto ycells = y_axis == MapAxis::kDt ? DtCells(grid.y_values) : LogCells(grid.y_values);
   for (const auto& [key, p] : chosen) {
     const auto [xl, xh] = xcells.at(key.first);
     const auto [yl, yh] = ycells.at(key.second);

@@ -16,12 +16,19 @@ enum class MapAxis { kRFtrunc, kDt };
 std::string ToString(MapAxis a);
 std::optional<MapAxis> MapAxisFromString(std::string_view s);
 
+// The glyph drawn over a cell whose run did not end well, whatever the map's metric: a cell's
+// colour alone never tells a run that blew up from a finished bad one.
+enum class CellMarker { kNone, kCross, kSquare, kCircle };
+
 // The outcome categories of the status map, in legend order: "passes" and "fails thresholds"
 // (status ok, split by the thresholds), then every other status of kAllRunStatuses
-// (core/run_status.h) by its stored name, so that a new status gets its own category.
+// (core/run_status.h) by its stored name. Diverged (x), unstable (open square) and failed (open
+// circle) cells are white under their marker, which no score palette uses; cells whose
+// reference did not converge are grey, unmarked (nothing was judged there).
 struct OutcomeCategory {
   std::string label;   // "passes", "fails thresholds", "diverged", ...
-  std::string colour;  // "#rrggbb".
+  std::string colour;  // "#rrggbb": the cell's fill where the map has no value for it.
+  CellMarker marker = CellMarker::kNone;
 };
 const std::vector<OutcomeCategory>& OutcomeCategories();
 // The index of p's category in OutcomeCategories().
@@ -30,7 +37,9 @@ int OutcomeCategoryOf(const ScoredPoint& p, const CriteriaOptions& thresholds);
 struct MapCell {
   const ScoredPoint* point = nullptr;
   double r_k = 0.0, y = 0.0;  // y: R_ftrunc, or dt / dt_sharp rounded (see MapAxis).
-  double x_low = 0.0, x_high = 0.0, y_low = 0.0, y_high = 0.0;  // The box, geometric halves.
+  // The box: geometric halves around R_k and R_ftrunc. A dt / dt_sharp cell reaches from the
+  // next finer studied dt up to its own dt, never across dt_sharp (see BuildMapGrid).
+  double x_low = 0.0, x_high = 0.0, y_low = 0.0, y_high = 0.0;
 };
 
 struct MapGrid {
@@ -40,8 +49,10 @@ struct MapGrid {
 };
 
 // kRFtrunc: each (R_k, R_ftrunc) cell shows its finest time step. kDt: dt / dt_sharp against
-// R_k at truncation `r_ftrunc` (the largest studied when 0). Throws InputError when no point
-// matches.
+// R_k at truncation `r_ftrunc` (the largest studied when 0); a dt cell's top edge is its own
+// dt, so that nothing is painted beyond a studied step and no cell straddles the sharp bound
+// dt = dt_sharp (a cell above it starts at the bound, leaving unstudied ground blank). Throws
+// InputError when no point matches.
 MapGrid BuildMapGrid(const std::vector<ScoredPoint>& points, MapAxis y, double r_ftrunc = 0.0);
 
 // The dt / dt_sharp of the cells, as the map's title states it: "dt = 0.1 dt_sharp" when every

@@ -2,6 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <string_view>
+#include <utility>
+#include <variant>
+
 #include "db/corrupt_rows.h"
 #include "db/report_queries.h"
 #include "views/html_text.h"
@@ -56,27 +61,63 @@ std::string StoredValues(const PointPageInput& in) {
   return SortableTable(values, "stored-table", "Its row of the results view");
 }
 
-std::string FigureSection(const PointPageInput& in, const std::string& command) {
-  if (!in.figure) {
-    return "<p>The report draws Fig. 3 for the points around the derived boundary only. To draw "
-           "this one, run (from the report's folder):</p><pre>" +
-           HtmlEscaped(command) + "</pre>\n";
+// The point's stored value of `score` (NULL: none).
+std::optional<double> StoredScore(const PointPageInput& in, std::string_view score) {
+  for (std::size_t i = 0; i < in.columns->size(); ++i) {
+    if ((*in.columns)[i] != score) continue;
+    if (const double* v = std::get_if<double>(&(*in.row)[i])) return *v;
   }
+  return std::nullopt;
+}
+
+// "Err = 0.0123, SRf = 0.9876: the stored scores, exactly", or each recomputed score beside its
+// stored value where they differ.
+std::string RecomputedScores(const PointPageInput& in) {
   std::string scores;
+  bool same = true;
   for (const ScoreDefinition& score : Scores()) {
     const std::optional<double> v = in.figure->scores[score.name];
+    const std::optional<double> stored = StoredScore(in, score.name);
+    same = same && v == stored;
     scores += fmt::format("{}{} = {}", scores.empty() ? "" : ", ", score.label,
                           v ? fmt::format("{:.4f}", *v) : std::string("not scored"));
+    if (v != stored) {
+      scores += fmt::format(" (stored: {})",
+                            stored ? fmt::format("{}", *stored) : std::string("not scored"));
+    }
   }
-  const auto dir = in.figure->png.parent_path();
-  return EmbeddedFigure(in.figure->png,
-                        "Tip displacement and contact force against the stored reference, "
-                        "recomputed: " +
-                            scores,
-                        {{"image", dir.filename() / "fig3.png"},
-                         {"numerical history (CSV)", dir.filename() / "numerical.csv"},
-                         {"reference history (CSV)", dir.filename() / "reference.csv"},
-                         {"gnuplot script", dir.filename() / "fig3.gp"}});
+  return HtmlEscaped(scores) +
+         (same ? ": <span class=\"scores-agree\">the stored scores, exactly</span>"
+               : ": <span class=\"scores-differ\">not the stored scores</span>");
+}
+
+std::string FigureLinks(const std::filesystem::path& files) {
+  const std::string dir = files.filename().generic_string();
+  std::string links;
+  constexpr std::array<std::pair<const char*, const char*>, 4> kFiles = {
+      {{"numerical history (CSV)", "numerical.csv"},
+       {"reference history (CSV)", "reference.csv"},
+       {"the figure by gnuplot (PNG)", "fig3.png"},
+       {"gnuplot script", "fig3.gp"}}};
+  for (const auto& [label, file] : kFiles) {
+    links += fmt::format(" <a href=\"{}/{}\">{}</a>", HtmlEscaped(dir), file, label);
+  }
+  return " <span class=\"files\">files:" + links + "</span>";
+}
+
+std::string FigureSection(const PointPageInput& in) {
+  if (!in.figure) {
+    return "<p id=\"fig3-absent\">No Fig. 3 for this point: the database stores each run's "
+           "scores and shocks, not its histories, and the point or its reference is not stored "
+           "any more, so the report could not compute it again.</p>\n";
+  }
+  const std::string note =
+      in.figure->note.empty() ? "" : "<p class=\"fig3-note\">" + in.figure->note + "</p>\n";
+  return fmt::format(
+      "{}<figure class=\"fig3\">{}<figcaption>Tip displacement and contact force against the "
+      "stored reference, the run computed again: {}{}</figcaption></figure>\n",
+      note, in.figure->svg, RecomputedScores(in),
+      in.figure->files ? FigureLinks(*in.figure->files) : "");
 }
 
 }  // namespace
@@ -122,7 +163,7 @@ std::string PointPage(const PointPageInput& in) {
                              &unmatched);
     for (const std::string& u : unmatched) caveats += "<li>" + HtmlEscaped(u) + "</li>";
   }
-  sections.push_back({"fig3", "Fig. 3: the run against its reference", FigureSection(in, command)});
+  sections.push_back({"fig3", "Fig. 3: the run against its reference", FigureSection(in)});
   sections.push_back(
       {"reproduce", "Reproduce it",
        "<pre>" + HtmlEscaped(command) + "</pre>\n" +
@@ -130,8 +171,7 @@ std::string PointPage(const PointPageInput& in) {
                             : "<p>compare has no flag for these settings of the study; its "
                               "result can differ from the stored one by them:</p><ul>" +
                                   caveats + "</ul>\n")});
-  sections.push_back(
-      {"values", "Stored values", "<div class=\"scroll\">" + StoredValues(in) + "</div>"});
+  sections.push_back({"values", "Stored values", StoredValues(in)});
   ReportHeader header{fmt::format("{}: point {}", in.study, in.point_id),
                       {{"study", in.study}, {"point", std::to_string(in.point_id)}}};
   std::string page = ReportPage(header, sections);

@@ -1,7 +1,8 @@
 #pragma once
-// The report's page of one stored point of a canonical study (points/point_ID.html): its stored
-// values, the `shockmap compare` command that recomputes it, and its Fig. 3 (tip displacement
-// and contact force against the reference) when the report drew it.
+// The report's page of one stored point of a canonical study (points/point_ID.html): its Fig. 3
+// (tip displacement and contact force against the reference, inline SVG drawn from the run the
+// report computed again), the `shockmap compare` command that recomputes it, and its stored
+// values.
 
 #include <cstdint>
 #include <filesystem>
@@ -16,11 +17,15 @@
 
 namespace shockmap {
 
-// A Fig. 3 the report drew for a point, from the stored reference: the image (CSV histories and
-// script beside it) and the scores of that recomputation.
+// The Fig. 3 the report drew for a point, from its run computed again against the stored
+// reference (runs' histories are not stored): views/fig3_svg.h's figure and note, the scores of
+// that run, and for some points a folder of files beside the page (numerical.csv,
+// reference.csv, fig3.png, fig3.gp).
 struct PointFigure {
-  std::filesystem::path png;
+  std::string svg;
+  std::string note;  // HTML; empty for a run that reached its end.
   ScoreValues scores;
+  std::optional<std::filesystem::path> files;
 };
 
 // A stored point of a canonical study with its point in the stored study file.

@@ -22,24 +22,48 @@ pre { background: #f6f6f6; padding: 0.8em; white-space: pre-wrap; font-size: 0.9
 code { background: #f0f0f0; padding: 0 0.2em; }
 table { border-collapse: collapse; margin: 0.8em 0; font-size: 0.88em; }
 caption { text-align: left; font-weight: bold; padding: 0.3em 0; }
-th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; white-space: nowrap; }
-td.long { white-space: normal; min-width: 24em; text-align: left; }
-th { background: #eef3ee; cursor: pointer; user-select: none; }
+th, td { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; white-space: nowrap; vertical-align: top; }
+td.long { white-space: normal; min-width: 24em; text-align: left; overflow-wrap: anywhere; }
+th { background: #eef3ee; cursor: pointer; user-select: none; white-space: normal; vertical-align: bottom; }
 th[aria-sort=ascending]::after { content: ' \25B2'; } th[aria-sort=descending]::after { content: ' \25BC'; }
 td:first-child, th:first-child { text-align: left; }
-.scroll { max-height: 32em; overflow: auto; }
+.table-wrap { overflow-x: auto; }
+.table-tools { margin: 1em 0 -0.4em; font-size: 0.88em; }
+.table-tools input { width: 18em; padding: 0.15em 0.4em; } .table-tools a { margin-left: 0.8em; }
+p.verdict { background: #f3f8f3; border-left: 4px solid #1a9850; padding: 0.6em 1em; line-height: 1.45; }
 svg.map { width: 100%; max-width: 1100px; height: auto; display: block; }
 svg.map rect.cell { stroke: #fff; stroke-width: 1; cursor: pointer; }
 svg.map rect.cell:hover { stroke: #000; stroke-width: 2; }
 svg.map text { font-size: 12px; } svg.map .axis { font-size: 13px; }
+svg.sweep-map { width: 100%; max-width: 860px; height: auto; display: block; }
+svg.sweep-map rect.cell { stroke: #fff; stroke-width: 1; } svg.sweep-map rect.cell:hover { stroke: #000; stroke-width: 2; }
+svg.sweep-map text { font-size: 12px; }
+svg.fig3 { width: 100%; max-width: 760px; height: auto; display: block; }
+svg.fig3 text { font-size: 11px; } svg.fig3 .axis { font-size: 12px; }
+svg.fig3 .grid { stroke: #ddd; stroke-dasharray: 2 2; } svg.fig3 .frame { fill: none; stroke: #333; }
 .legend span { display: inline-block; margin-right: 1.2em; }
+.legend .scale i { vertical-align: middle; display: inline-block; height: 1em; border: 1px solid #999; }
 .legend i { display: inline-block; width: 1em; height: 1em; vertical-align: middle; margin-right: 0.3em; border: 1px solid #999; }
+.legend b.marker { display: inline-block; width: 1em; text-align: center; margin-right: 0.3em; }
 #cell-info { position: fixed; display: none; background: #fff; border: 1px solid #333; padding: 0.4em 0.6em; font-size: 0.85em; pointer-events: none; box-shadow: 2px 2px 6px #aaa; }
+@media print {
+  body { max-width: none; margin: 0; font-size: 10pt; }
+  .table-tools, nav#contents, #cell-info, footer, select.metric-switch { display: none; }
+  .metric-map[hidden] { display: block; }
+  .table-wrap { overflow: visible; }
+  table { font-size: 8pt; } th[aria-sort]::after { content: ''; }
+  td.long { min-width: 12em; }
+  section { break-before: page; } section:first-of-type { break-before: auto; }
+  h2, h3, caption { break-after: avoid; } tr, figure, svg.map, svg.fig3, p.verdict { break-inside: avoid; }
+  thead { display: table-header-group; }
+  a { color: inherit; text-decoration: none; }
+}
 )css";
 
 // After the vendored tablesort: a numeric sort that reads exponents (empty cells sort as
-// -infinity), every sortable table taken, the map's hover box (with {scores}: one line per
-// score of the registry), and the page's load marks. A format string: its braces are doubled.
+// -infinity), every sortable table taken, the map's hover box, the metric switch (with {scores}:
+// one line per score of the registry), and the page's load marks. A format string: its braces are
+// doubled.
 constexpr const char* kScript = R"js(
 Tablesort.extend('real', function () {{ return false; }}, function (a, b) {{
   var x = a.trim() === '' ? -Infinity : Number(a), y = b.trim() === '' ? -Infinity : Number(b);
@@ -64,6 +88,43 @@ document.querySelectorAll('svg.map rect.cell').forEach(function (cell) {{
     info.style.display = 'block';
   }});
   cell.addEventListener('mouseleave', function () {{ info.style.display = 'none'; }});
+}});
+// Each metric switch shows the map of the metric chosen and hides the others.
+document.querySelectorAll('select.metric-switch').forEach(function (choice) {{
+  var maps = document.getElementById(choice.dataset.maps).querySelectorAll('.metric-map');
+  function show() {{
+    maps.forEach(function (m) {{ m.hidden = m.dataset.metric !== choice.value; }});
+  }}
+  choice.addEventListener('change', show);
+  show();
+}});
+// Each table's filter box hides the body rows that do not hold every word typed (any case).
+document.querySelectorAll('input.table-filter').forEach(function (box) {{
+  var table = document.getElementById(box.dataset.table);
+  box.addEventListener('input', function () {{
+    var words = box.value.toLowerCase().split(/\s+/).filter(Boolean);
+    Array.from(table.tBodies[0].rows).forEach(function (row) {{
+      var text = row.textContent.toLowerCase();
+      row.hidden = !words.every(function (w) {{ return text.indexOf(w) >= 0; }});
+    }});
+  }});
+}});
+// A table as CSV (RFC 4180): its header and the rows shown, each real at full precision.
+function tableCsv(table) {{
+  function field(cell) {{
+    var text = cell.hasAttribute('data-sort') ? cell.getAttribute('data-sort') : cell.textContent;
+    return /[",\r\n]/.test(text) ? '"' + text.replace(/"/g, '""') + '"' : text;
+  }}
+  var rows = [table.tHead.rows[0]].concat(Array.from(table.tBodies[0].rows).filter(function (r) {{
+    return !r.hidden;
+  }}));
+  return rows.map(function (r) {{ return Array.from(r.cells).map(field).join(','); }}).join('\r\n') + '\r\n';
+}}
+document.querySelectorAll('a.table-csv').forEach(function (link) {{
+  link.addEventListener('click', function () {{
+    link.href = 'data:text/csv;charset=utf-8,' +
+        encodeURIComponent(tableCsv(document.getElementById(link.dataset.table)));
+  }});
 }});
 window.addEventListener('load', function () {{
   var images = Array.from(document.images);

@@ -21,7 +21,11 @@ struct ReportHeader {
 };
 
 // A whole page. With more than one section it opens with a table of contents linking each.
-// Every <table class="sortable"> sorts on a click of a header; when the page has loaded,
+// A <select class="metric-switch" data-maps="ID"> shows only the .metric-map inside #ID whose
+// data-metric it names (views/html_validity_map.h). Every <table class="sortable"> sorts on a
+// click of a header, its filter box hides rows and
+// its CSV link downloads the rows shown (views/html_text.h); a print stylesheet drops the
+// boxes and links and prints every table whole. When the page has loaded,
 // <body> carries data-images-loaded="LOADED/TOTAL" and data-sortable-tables="N" (the tables
 // the sort script took), which the test suite reads in headless Chromium.
 std::string ReportPage(const ReportHeader& header, const std::vector<ReportSection>& sections);

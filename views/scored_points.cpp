@@ -5,7 +5,10 @@
 
 #include "core/input_error.h"
 #include "db/corrupt_rows.h"
+#include "db/report_queries.h"
 #include "db/study_queries.h"
+#include "formats/json_reader.h"
+#include "formats/study_file.h"
 
 namespace shockmap {
 std::string ResolveStudyName(const std::string& database_path, const std::string& study) {
@@ -24,6 +27,46 @@ std::string ResolveStudyName(const std::string& database_path, const std::string
                      " studies; name one of: " + (names.empty() ? "none" : names));
   }
   return stored.front();
+}
+
+namespace {
+
+StudyFileKind StoredKind(const std::string& database_path, const std::string& study) {
+  const std::string file = database_path + ": stored study " + study;
+  return StudyKindOf(ParseJsonText(StoredStudySpec(database_path, study).value_or("{}"), file),
+                     file);
+}
+
+// What judges a study of another kind than the paper's problem.
+std::string CommandsFor(StudyFileKind kind, const std::string& study) {
+  return kind == StudyFileKind::kSceneEnsemble
+             ? "an ensemble is judged with `shockmap sizing " + study + "` and `shockmap report " +
+                   study + " --out DIR`"
+             : "a scene sweep is judged with `shockmap report " + study + " --out DIR`";
+}
+
+}  // namespace
+
+std::string ResolveCanonicalStudy(const std::string& database_path, const std::string& study,
+                                  const std::string& command) {
+  if (!study.empty()) {
+    ResolveStudyName(database_path, study);  // Throws for a name not stored.
+    const StudyFileKind kind = StoredKind(database_path, study);
+    if (kind == StudyFileKind::kCanonical) return study;
+    throw InputError("STUDY: study " + study + " in " + database_path + " is of kind \"" +
+                     ToString(kind) + "\", not of the paper's problem (kind \"canonical\") that `" +
+                     command + "` reads; " + CommandsFor(kind, study));
+  }
+  std::vector<std::string> canonical;
+  for (const std::string& name : StudyNames(database_path)) {
+    if (StoredKind(database_path, name) == StudyFileKind::kCanonical) canonical.push_back(name);
+  }
+  if (canonical.size() == 1) return canonical.front();
+  std::string names;
+  for (const std::string& name : canonical) names += (names.empty() ? "" : ", ") + name;
+  throw InputError("STUDY: " + database_path + " holds " + std::to_string(canonical.size()) +
+                   " studies of the paper's problem (kind \"canonical\") that `" + command +
+                   "` reads; " + (canonical.empty() ? "run one first" : "name one of: " + names));
 }
 
 std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
@@ -56,6 +99,18 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                           std::numeric_limits<std::int64_t>::max());
     p.cpu_s = NumberIn(row["cpu_s"]).value_or(0.0);
     points.push_back(p);
+  }
+  return points;
+}
+
+std::vector<ScoredPoint> LoadCriteriaPoints(const std::string& database_path,
+                                            const std::string& study) {
+  auto points = LoadScoredPoints(database_path, study, "explicit-modal");
+  if (points.empty()) {
+    throw InputError("STUDY: study " + study + " in " + database_path +
+                     " has no scored point of the paper's problem (explicit-modal): criteria are "
+                     "derived from a study of kind \"canonical\" once its points are run (an "
+                     "ensemble is judged with `shockmap sizing`)");
   }
   return points;
 }

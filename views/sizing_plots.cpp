@@ -22,6 +22,55 @@ std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 double Lower(const QuantileInterval& q) { return q.lower_bounded ? q.lower : q.estimate; }
 double Upper(const QuantileInterval& q) { return q.upper_bounded ? q.upper : q.estimate; }
 
+// The force axis of a set of intervals: their estimates and bounded ends, with room around
+// them, into which an unbounded side runs as an arrow to the axis' edge, open.
+struct ForceAxis {
+  double low = INFINITY, high = -INFINITY;
+  void Add(const QuantileInterval& q) {
+    low = std::min(low, Lower(q)), high = std::max(high, Upper(q));
+  }
+  double Margin() const {
+    return std::max(0.12 * (high - low), 1e-3 * std::max(1.0, std::abs(high)));
+  }
+  double Bottom() const { return low - Margin(); }
+  double Top() const { return high + Margin(); }
+  std::string Range() const { return fmt::format("set yrange [{}:{}]\n", Bottom(), Top()); }
+};
+
+// Which kinds of interval a plot holds: both sides bounded, an upper or a lower side open.
+struct IntervalKinds {
+  bool closed = false, open_up = false, open_down = false;
+  void Add(const QuantileInterval& q) {
+    closed = closed || (q.lower_bounded && q.upper_bounded);
+    open_up = open_up || !q.upper_bounded;
+    open_down = open_down || (!q.lower_bounded && q.upper_bounded);
+  }
+};
+
+// The arrows of the open intervals, from data columns x ($1), estimate ($2), lower ($3), upper
+// ($4), lower_bounded ($5), upper_bounded ($6): an unbounded upper side from the lower end (or
+// the axis' bottom) up to the top edge, an unbounded lower side from the upper end down to the
+// bottom edge; one legend entry per kind present.
+std::string OpenIntervalClauses(const IntervalKinds& kinds, const ForceAxis& axis) {
+  std::string clauses;
+  if (kinds.open_up) {
+    clauses += fmt::format(
+        ", \\\n     '' using 1:($6 > 0 ? 1/0 : ($5 > 0 ? $3 : {b})):(0):({t} - ($5 > 0 ? $3 : "
+        "{b})) "
+        "with vectors head filled size screen 0.012,25 lw 2 lc rgb '#de2d26' title 'interval "
+        "open upward: upper side unbounded (too few members)'",
+        fmt::arg("b", axis.Bottom()), fmt::arg("t", axis.Top()));
+  }
+  if (kinds.open_down) {
+    clauses += fmt::format(
+        ", \\\n     '' using 1:($5 > 0 || $6 == 0 ? 1/0 : $4):(0):({b} - $4) with vectors head "
+        "filled size screen 0.012,25 lw 2 lc rgb '#756bb1' title 'interval open downward: lower "
+        "side unbounded'",
+        fmt::arg("b", axis.Bottom()));
+  }
+  return clauses;
+}
+
 fs::path Draw(const fs::path& image, const std::string& body, int width = 900, int height = 600) {
   const std::string script = fmt::format(
       "set terminal {}\nset output {}\nset termoption noenhanced\nset grid lc rgb '#dddddd'\n{}",
@@ -30,21 +79,38 @@ fs::path Draw(const fs::path& image, const std::string& body, int width = 900, i
   return image;
 }
 
+// The member counts as the x axis' tics when they are few (a log axis would tick one of them).
+std::string MemberTics(const std::vector<ConvergencePoint>& points) {
+  if (points.size() > 12) return "";
+  std::string tics;
+  for (const ConvergencePoint& p : points) {
+    tics += fmt::format("{}{}", tics.empty() ? "" : ", ", p.members);
+  }
+  return "set xtics (" + tics + ")\n";
+}
+
 fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
                      const std::vector<double>& forces, const fs::path& folder) {
   const auto points = SizingConvergence(forces, s.options);
   const fs::path image = folder / ("convergence_" + FileNamePart(g.state) + ".png");
   const fs::path data = fs::path(image).replace_extension(".dat");
   std::string text = "# members estimate lower upper lower_bounded upper_bounded\n";
+  ForceAxis axis;
+  IntervalKinds kinds;
   for (const ConvergencePoint& p : points) {
     text += fmt::format("{} {} {} {} {} {}\n", p.members, p.sizing.estimate, Lower(p.sizing),
                         Upper(p.sizing), p.sizing.lower_bounded ? 1 : 0,
                         p.sizing.upper_bounded ? 1 : 0);
+    axis.Add(p.sizing), kinds.Add(p.sizing);
   }
   WriteFileAtomically(data, text);
   const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
                                         Percent(s.options.quantile), g.zones[g.hottest].name,
                                         Percent(s.options.confidence));
+  const std::string band =
+      kinds.closed ? "using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' "
+                     "fs solid 0.5 title 'interval (both sides bounded)', \\\n     '' "
+                   : "";
   return Draw(
       image,
       fmt::format(
@@ -52,14 +118,14 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
 set xlabel 'members'
 set ylabel 'force (N)'
 set logscale x
-set xrange [{first}:{last}]
-set key top left
-plot {data} using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' fs solid 0.5 title 'interval (both sides bounded)', \
-     '' using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate', \
-     '' using 1:($6 > 0 ? 1/0 : $2) with points pt 9 ps 1.5 lc rgb '#de2d26' title 'upper side unbounded (too few members)'
+{tics}set xrange [{first}:{last}]
+{range}set key below
+plot {data} {band}using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estimate'{open}
 )",
-          fmt::arg("title", GnuplotQuoted(title)), fmt::arg("first", 0.9 * points.front().members),
-          fmt::arg("last", 1.15 * forces.size()), fmt::arg("data", GnuplotFileName(data))));
+          fmt::arg("title", GnuplotQuoted(title)), fmt::arg("tics", MemberTics(points)),
+          fmt::arg("first", 0.9 * points.front().members), fmt::arg("last", 1.15 * forces.size()),
+          fmt::arg("range", axis.Range()), fmt::arg("data", GnuplotFileName(data)),
+          fmt::arg("band", band), fmt::arg("open", OpenIntervalClauses(kinds, axis))));
 }
 
 fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
@@ -115,48 +181,62 @@ std::string Tics(const std::vector<std::string>& labels) {
   return "set xtics (" + tics + ")\n";
 }
 
-// The hottest zone's sizing force (and, when streamed, its wear work rate) against the state.
+// The hottest zone's sizing force (and, when streamed, its wear work rate) against the state:
+// categories, drawn as points, never joined.
 fs::path States(const EnsembleSizing& s, const fs::path& folder) {
   const auto refined = RefinedGroups(s);
   const fs::path image = folder / "states.png";
   const fs::path data = fs::path(image).replace_extension(".dat");
-  std::string text = "# state_index sizing_n lower_n upper_n wear_work_rate_w\n";
+  std::string text =
+      "# state_index sizing_n lower_n upper_n lower_bounded upper_bounded wear_work_rate_w\n";
   std::vector<std::string> labels;
   bool wear = false;
+  ForceAxis axis;
+  IntervalKinds kinds;
   for (std::size_t i = 0; i < refined.size(); ++i) {
     const ZoneSizing& z = refined[i]->zones[refined[i]->hottest];
     labels.push_back(refined[i]->state + " (" + z.name + ")");
     const auto w = z.impacts ? z.impacts->wear_work_rate_w : std::nullopt;
     wear = wear || w.has_value();
-    text += fmt::format("{} {} {} {} {}\n", i, z.sizing.estimate, Lower(z.sizing), Upper(z.sizing),
-                        w ? fmt::format("{}", *w) : "NaN");
+    text += fmt::format("{} {} {} {} {} {} {}\n", i, z.sizing.estimate, Lower(z.sizing),
+                        Upper(z.sizing), z.sizing.lower_bounded ? 1 : 0,
+                        z.sizing.upper_bounded ? 1 : 0, w ? fmt::format("{}", *w) : "NaN");
+    axis.Add(z.sizing), kinds.Add(z.sizing);
   }
   WriteFileAtomically(data, text);
   const std::string title =
       fmt::format("{}: P{} of the hottest zone's largest force per clearance state", s.study,
                   Percent(s.options.quantile));
   std::string plot = fmt::format(
-      "plot {} using 1:2:3:4 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb '#08519c' title "
-      "'P{} with its {} % interval'",
-      GnuplotFileName(data), Percent(s.options.quantile), Percent(s.options.confidence));
+      "plot {} using 1:2 with points pt 7 ps 1.5 lc rgb '#08519c' title 'P{} (estimate)'",
+      GnuplotFileName(data), Percent(s.options.quantile));
+  if (kinds.closed) {
+    plot += fmt::format(
+        ", \\\n     '' using 1:($5 > 0 && $6 > 0 ? $2 : 1/0):3:4 with yerrorbars pt 7 ps 1.5 lw 2 "
+        "lc rgb '#08519c' title '{} % interval (both sides bounded)'",
+        Percent(s.options.confidence));
+  }
+  plot += OpenIntervalClauses(kinds, axis);
   if (wear) {
     plot +=
-        ", '' using 1:5 axes x1y2 with linespoints pt 5 lc rgb '#de2d26' title 'mean wear work "
-        "rate (W)'";
+        ", \\\n     '' using ($1 + 0.1):7 axes x1y2 with points pt 5 ps 1.3 lc rgb '#31a354' title 'mean "
+        "wear work rate (W, right axis)'";
   }
-  return Draw(image,
-              fmt::format(
-                  R"(set title {title} noenhanced
+  return Draw(
+      image,
+      fmt::format(
+          R"(set title {title} noenhanced
 set xlabel 'clearance state'
 set ylabel 'force (N)'
 {y2}set xrange [-0.5:{last}]
-set offsets 0, 0, graph 0.15, graph 0.05
-set key bottom center
+{range}set key below
 {tics}{plot}
 )",
-                  fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", refined.size() - 0.5),
-                  fmt::arg("y2", wear ? "set y2label 'wear work rate (W)'\nset y2tics\n" : ""),
-                  fmt::arg("tics", Tics(labels)), fmt::arg("plot", plot)));
+          fmt::arg("title", GnuplotQuoted(title)), fmt::arg("last", refined.size() - 0.5),
+          fmt::arg("y2", wear ? "set y2label 'wear work rate (W)'\nset y2tics\nset ytics "
+                                "nomirror\n"
+                              : ""),
+          fmt::arg("range", axis.Range()), fmt::arg("tics", Tics(labels)), fmt::arg("plot", plot)));
 }
 
 // The value of a setting on the x axis: the setting's one numeric parameter, if it has one.

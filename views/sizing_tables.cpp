@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "formats/zone_family.h"
+#include "statistics/wilks.h"
 
 namespace shockmap {
 namespace {
@@ -22,44 +26,67 @@ TableCell Optional(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? TableCell(*v) : TableCell(std::monostate{});
 }
 
+// The terminal's tables show every number to kShownDigits significant digits, an unbounded
+// side of an interval as "-" (SizingFootnotes says why).
+constexpr int kShownDigits = 4;
+
+std::string Significant(double v) { return fmt::format("{:.{}g}", v, kShownDigits); }
+
 std::string Shown(const QuantileInterval& q) {
-  return fmt::format("{:.5g} [{}, {}]", q.estimate,
-                     q.lower_bounded ? fmt::format("{:.5g}", q.lower) : "-inf",
-                     q.upper_bounded ? fmt::format("{:.5g}", q.upper) : "+inf");
+  return fmt::format("{} [{}, {}]", Significant(q.estimate),
+                     q.lower_bounded ? Significant(q.lower) : "-",
+                     q.upper_bounded ? Significant(q.upper) : "-");
 }
 
-std::vector<std::string> Columns(const EnsembleSizing& s, bool compact) {
+// The terminal's table: per family, its hottest zone's sizing quantile with its interval, the
+// design value (Wilks' limit, or the members it needs) and the agreement with the refined
+// setting ("refined" on the refined setting's rows); the rest is in ZoneTable.
+std::vector<std::string> CompactColumns(const EnsembleSizing& s) {
+  const std::string q = Percent(s.options.quantile), c = Percent(s.options.confidence);
+  return {"state",      "setting",      "members",
+          "family",     "hottest zone", "P" + q + " (N) [" + c + " %]",
+          "design (N)", "agrees"};
+}
+
+std::string Agreement(std::optional<bool> agrees) { return !agrees ? "-" : *agrees ? "yes" : "no"; }
+
+std::vector<TableCell> CompactRow(const EnsembleSizing& s, const GroupSizing& g,
+                                  const ZoneSizing& z, std::optional<bool> agrees) {
+  const int needed = WilksMembersNeeded(s.options.quantile, s.options.confidence, 1);
+  return {g.state,
+          g.setting_json,
+          static_cast<std::int64_t>(z.members),
+          FamilyName(z.family),
+          z.name,
+          Shown(z.sizing),
+          z.wilks ? Significant(z.wilks->value) : fmt::format("needs {}", needed),
+          g.refined ? std::string("refined") : Agreement(agrees)};
+}
+
+std::vector<std::string> Columns(const EnsembleSizing& s) {
   const std::string q = Percent(s.options.quantile);
-  std::vector<std::string> c = {"state", "setting", "members", "zone"};
+  std::vector<std::string> c = {"state", "setting", "members", "zone", "family"};
   auto interval = [&](const std::string& name) {
-    if (compact) {
-      c.push_back(name + "_n [" + Percent(s.options.confidence) + " %]");
-    } else {
-      for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
-    }
+    for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
   };
   interval("p50");
   interval("p95");
   interval("p99");
   if (q != "50" && q != "95" && q != "99") interval("p" + q);
-  c.insert(c.end(),
-           {"wilks_order", "wilks_limit_n", "bootstrap_lower_n", "bootstrap_upper_n", "nominal_n"});
+  c.insert(c.end(), {"wilks_order", "wilks_limit_n", "wilks_members_needed", "bootstrap_lower_n",
+                     "bootstrap_upper_n", "nominal_n"});
   c.insert(c.end(), {"agrees_with_refined", "impacts_per_s", "contact_time_fraction",
                      "mean_force_n", "wear_work_rate_w", "wall_s_per_member", "cpu_s_per_member"});
   return c;
 }
 
 std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const ZoneSizing& z,
-                           std::optional<bool> agrees, bool compact) {
+                           std::optional<bool> agrees) {
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
-                                static_cast<std::int64_t>(z.members), z.name};
+                                static_cast<std::int64_t>(z.members), z.name, FamilyName(z.family)};
   auto interval = [&](const QuantileInterval& q) {
-    if (compact) {
-      row.push_back(Shown(q));
-    } else {
-      row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
-                             Bound(q.upper, q.upper_bounded, kInfinity)});
-    }
+    row.insert(row.end(), {q.estimate, Bound(q.lower, q.lower_bounded, -kInfinity),
+                           Bound(q.upper, q.upper_bounded, kInfinity)});
   };
   interval(z.p50);
   interval(z.p95);
@@ -68,8 +95,10 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
   if (q != "50" && q != "95" && q != "99") interval(z.sizing);
   row.push_back(static_cast<std::int64_t>(z.wilks_order));
   row.push_back(z.wilks ? TableCell(z.wilks->value) : TableCell(std::monostate{}));
+  row.emplace_back(std::in_place_type<std::int64_t>,
+                   WilksMembersNeeded(s.options.quantile, s.options.confidence, 1));
   row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, Optional(z.nominal_n)});
-  row.push_back(std::string(!agrees ? "-" : *agrees ? "yes" : "no"));
+  row.push_back(Agreement(agrees));
   if (z.impacts) {
     row.insert(row.end(), {z.impacts->impacts_per_s, z.impacts->contact_time_fraction,
                            z.impacts->mean_force_n, Optional(z.impacts->wear_work_rate_w)});
@@ -85,17 +114,20 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
 
 Table HottestZoneTable(const EnsembleSizing& s, bool compact) {
   Table t;
-  t.columns = Columns(s, compact);
+  t.columns = compact ? CompactColumns(s) : Columns(s);
   for (const GroupSizing& g : s.groups) {
-    t.rows.push_back(Row(s, g, g.zones[g.hottest], g.hottest_agrees, compact));
+    for (const FamilyHottest& f : g.families) {
+      const ZoneSizing& z = g.zones[f.zone];
+      t.rows.push_back(compact ? CompactRow(s, g, z, f.agrees) : Row(s, g, z, f.agrees));
+    }
   }
   return t;
 }
 
 Table ZoneTable(const EnsembleSizing& s) {
   Table t;
-  t.columns = Columns(s, false);
-  t.columns.push_back("hottest");
+  t.columns = Columns(s);
+  t.columns.insert(t.columns.end(), {"hottest", "family_hottest"});
   const auto refined_of = [&](const GroupSizing& g) -> const GroupSizing* {
     for (const GroupSizing& r : s.groups) {
       if (r.refined && r.state == g.state) return &r;
@@ -107,8 +139,11 @@ Table ZoneTable(const EnsembleSizing& s) {
     for (const ZoneSizing& z : g.zones) {
       std::optional<bool> agrees;
       if (refined != nullptr) agrees = Agrees(z, refined->zones[z.zone], s.options.tolerance);
-      auto row = Row(s, g, z, agrees, false);
-      row.push_back(static_cast<std::int64_t>(z.zone == g.hottest));
+      auto row = Row(s, g, z, agrees);
+      row.emplace_back(std::in_place_type<std::int64_t>, z.zone == g.hottest ? 1 : 0);
+      const bool family_hottest =
+          std::ranges::any_of(g.families, [&](const FamilyHottest& f) { return f.zone == z.zone; });
+      row.emplace_back(std::in_place_type<std::int64_t>, family_hottest ? 1 : 0);
       t.rows.push_back(std::move(row));
     }
   }
@@ -121,10 +156,13 @@ std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
   const std::string q = "p" + Percent(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone"};
   if (compact) {
-    c.push_back("wear_" + q + "_m3 [" + Percent(s.options.confidence) + " %]");
-  } else {
-    for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
+    const std::string c_percent = Percent(s.options.confidence);
+    const std::string p = "P" + Percent(s.options.quantile);
+    c.insert(c.end(), {"wear " + p + " (m3) [" + c_percent + " %]",
+                       "Wilks " + p + "/" + c_percent + " %", "mean (m3)", "force " + p + " (N)"});
+    return c;
   }
+  for (const char* suffix : {"_m3", "_lower_m3", "_upper_m3"}) c.push_back("wear_" + q + suffix);
   c.insert(c.end(), {"wilks_order", "wilks_limit_m3", "mean_wear_volume_m3", "force_" + q + "_n"});
   return c;
 }
@@ -132,14 +170,20 @@ std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
 // Precondition: z.wear.
 std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool compact) {
   const QuantileInterval& w = z.wear->sizing;
+  if (compact) {
+    return {g.state,
+            g.setting_json + (g.refined ? " (refined)" : ""),
+            static_cast<std::int64_t>(z.members),
+            z.name,
+            Shown(w),
+            z.wear->wilks ? Significant(z.wear->wilks->value) : std::string("-"),
+            Significant(z.wear->mean_m3),
+            Significant(z.sizing.estimate)};
+  }
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
                                 static_cast<std::int64_t>(z.members), z.name};
-  if (compact) {
-    row.push_back(Shown(w));
-  } else {
-    row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
-                           Bound(w.upper, w.upper_bounded, kInfinity)});
-  }
+  row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
+                         Bound(w.upper, w.upper_bounded, kInfinity)});
   row.push_back(static_cast<std::int64_t>(z.wear->wilks_order));
   row.push_back(z.wear->wilks ? TableCell(z.wear->wilks->value) : TableCell(std::monostate{}));
   row.insert(row.end(), {z.wear->mean_m3, z.sizing.estimate});
@@ -171,6 +215,43 @@ Table MostWornZoneTable(const EnsembleSizing& s) {
     if (most != nullptr) t.rows.push_back(WearRow(g, *most, true));
   }
   return t;
+}
+
+std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
+  const double q = s.options.quantile, c = s.options.confidence;
+  std::vector<std::string> lines;
+  int fewest = std::numeric_limits<int>::max();
+  bool unbounded = false;
+  for (const GroupSizing& g : s.groups) {
+    for (const ZoneSizing& z : g.zones) {
+      if (wear && !z.wear) continue;
+      const QuantileInterval& interval = wear ? z.wear->sizing : z.sizing;
+      unbounded = unbounded || !interval.lower_bounded || !interval.upper_bounded;
+      if (!(wear ? z.wear->wilks.has_value() : z.wilks.has_value()))
+        fewest = std::min(fewest, z.members);
+    }
+  }
+  if (fewest != std::numeric_limits<int>::max()) {
+    lines.push_back(fmt::format(
+        "Wilks' limit: a one-sided P{} at {} % confidence needs at least {} members (the "
+        "largest of n members bounds P{} once 1 - {:g}^n >= {:g}); this study has {}: run more",
+        Percent(q), Percent(c), WilksMembersNeeded(q, c, 1), Percent(q), q, c, fewest));
+  }
+  if (!wear) {
+    lines.push_back(fmt::format(
+        "family: pin-pin wires, the duct pad, pins against the wrapper; each family's hottest zone "
+        "at the refined setting; design: Wilks' P{}/{} % limit, or the members it needs; agrees: "
+        "with the refined setting",
+        Percent(q), Percent(c)));
+  }
+  if (unbounded) {
+    lines.push_back("-: a side of an interval the members are too few to bound, or no value");
+  }
+  lines.push_back(wear ? "every zone, with the interval's bounds and Wilks' order: --format "
+                         "csv|json or --out DIR"
+                       : "P50, P99, bounds, bootstrap, nominal run, impact statistics and run "
+                         "times of every zone: --format csv|json or --out DIR");
+  return lines;
 }
 
 std::vector<std::string> AgreementLines(const EnsembleSizing& s) {

@@ -1,9 +1,11 @@
 #pragma once
-// The tables of `shockmap sizing` (docs/ensembles.md, "Sizing"): one row per clearance state
-// and setting for its hottest zone, or one per state, setting and zone, of the largest force or
-// of the wear volume; intervals as their two
-// ends (NULL when unbounded: too few members for that side), or, in the compact form for the
-// terminal, as "estimate [lower, upper]" text.
+// The tables of `shockmap sizing` (docs/ensembles.md, "Sizing"): one row per clearance state,
+// setting and zone family for the family's hottest zone (docs/ensembles.md, "Sizing by zone
+// family"), or one per state, setting and zone, of the largest force or of the wear volume;
+// intervals as their two ends (infinite when unbounded: too few members for that side). The compact
+// form for the terminal fits about 120 characters: the sizing quantile as "estimate [lower, upper]"
+// text, every number to 4 significant digits, an unbounded side as "-"; the full columns are the
+// CSV and JSON ones.
 
 #include <string>
 #include <vector>
@@ -22,6 +24,11 @@ Table WearTable(const EnsembleSizing& sizing);
 // The same for the zone of each state and setting with the highest sizing wear, its interval
 // as "estimate [lower, upper]" text.
 Table MostWornZoneTable(const EnsembleSizing& sizing);
+
+// The sentences beneath the terminal's table (HottestZoneTable compact, or MostWornZoneTable
+// with `wear`): the members Wilks' limit needs when some row has none, what "-" means, and
+// where the columns left out are.
+std::vector<std::string> SizingFootnotes(const EnsembleSizing& sizing, bool wear);
 
 // One line per setting other than the refined one, per state: how many zones agree with the
 // refined setting, how many do not, how many are undecided, and what the hottest zone does.

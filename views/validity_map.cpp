@@ -96,41 +96,85 @@ MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th) {
   return ScoreStyle(*FindScore(metric), th);
 }
 
+// gnuplot's point type of a marker: 2 a cross, 4 an open square, 6 an open circle.
+int PointType(CellMarker m) {
+  switch (m) {
+    case CellMarker::kCross:
+      return 2;
+    case CellMarker::kSquare:
+      return 4;
+    case CellMarker::kCircle:
+      return 6;
+    case CellMarker::kNone:
+      break;
+  }
+  return 0;
+}
+
+// Which categories the map's cells hold: any cell, and cells without a value.
+struct PresentCategories {
+  std::vector<bool> any, unvalued;
+};
+
+PresentCategories Present(const MapGrid& grid, const std::string& metric,
+                          const CriteriaOptions& th) {
+  PresentCategories present{std::vector<bool>(OutcomeCategories().size(), false),
+                            std::vector<bool>(OutcomeCategories().size(), false)};
+  for (const MapCell& c : grid.cells) {
+    const int i = OutcomeCategoryOf(*c.point, th);
+    present.any[i] = true;
+    if (metric == "status" || !std::isfinite(CellValue(*c.point, metric)))
+      present.unvalued[i] = true;
+  }
+  return present;
+}
+
 // The plot clauses of the cells: coloured by the metric's palette, except cells without a
-// value (no score, or the status map), drawn in their category's colour with one legend entry
-// per category present.
+// value (no score, or the status map), filled with their category's colour; then each marked
+// category's marker at the centre of its cells, valued or not. The legend names each category
+// present once: by its marker when it has one, else by its fill.
 std::string CellClauses(const MapGrid& grid, const std::string& metric, const CriteriaOptions& th,
                         const std::string& data) {
-  std::vector<bool> present(OutcomeCategories().size(), false);
-  for (const MapCell& c : grid.cells) {
-    const bool valued = metric != "status" && std::isfinite(CellValue(*c.point, metric));
-    if (!valued) present[OutcomeCategoryOf(*c.point, th)] = true;
+  const PresentCategories present = Present(grid, metric, th);
+  std::vector<std::string> clauses;
+  if (metric != "status") {
+    clauses.push_back(
+        " index 0 using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb "
+        "'#ffffff' fc palette notitle");
   }
-  std::string clauses =
-      metric == "status"
-          ? ""
-          : data +
-                " index 0 using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 border lc rgb "
-                "'#ffffff' fc palette notitle";
-  for (std::size_t i = 0; i < present.size(); ++i) {
-    if (!present[i]) continue;
+  auto label = [&](std::size_t i) {
+    const std::string& name = OutcomeCategories()[i].label;
+    return GnuplotQuoted(metric == "status" || !present.unvalued[i] ? name : name + " (no score)");
+  };
+  for (std::size_t i = 0; i < present.any.size(); ++i) {
+    if (!present.unvalued[i]) continue;
     const OutcomeCategory& category = OutcomeCategories()[i];
-    const std::string label = metric == "status" ? category.label : category.label + " (no score)";
-    clauses += fmt::format(
-        "{}{} index 0 using 1:($8 == {} && $9 == 0 ? $2 : 1/0):3:4:5:6 with boxxyerror fs "
-        "solid 1.0 border lc rgb '#ffffff' fc rgb '{}' title {}",
-        clauses.empty() ? "" : ", \\\n     ", clauses.empty() ? data : "''", i, category.colour,
-        GnuplotQuoted(label));
+    clauses.push_back(fmt::format(
+        " index 0 using 1:($8 == {} && $9 == 0 ? $2 : 1/0):3:4:5:6 with boxxyerror fs solid 1.0 "
+        "border lc rgb '#ffffff' fc rgb '{}' {}",
+        i, category.colour,
+        category.marker == CellMarker::kNone ? "title " + label(i) : std::string("notitle")));
   }
-  return clauses;
+  for (std::size_t i = 0; i < present.any.size(); ++i) {
+    const OutcomeCategory& category = OutcomeCategories()[i];
+    if (!present.any[i] || category.marker == CellMarker::kNone) continue;
+    clauses.push_back(
+        fmt::format(" index 0 using (sqrt($3 * $4)):($8 == {} ? sqrt($5 * $6) : 1/0) with points "
+                    "pt {} ps 3 lw 2 lc rgb '#000000' title {}",
+                    i, PointType(category.marker), label(i)));
+  }
+  std::string joined;
+  for (const std::string& c : clauses) {
+    joined += joined.empty() ? data + c : ", \\\n     ''" + c;
+  }
+  return joined;
 }
 
 // The curves drawn over the cells: the derived boundary with the points it envelopes and the
 // paper's rules, or the stability bound on the dt map.
 std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
   if (y == MapAxis::kDt) {
-    return ", 1 with lines lw 3 lc rgb '#000000' title 'sharp stability bound 2/{/Symbol "
-           "w}_{max}'";
+    return ", 1 with lines lw 3 lc rgb '#000000' title 'sharp stability bound 2/ω_{max}'";
   }
   std::string overlays =
       ", '' index 1 using 1:2 with points pt 9 ps 1.6 lc rgb '#000000' title 'smallest passing "
@@ -147,14 +191,6 @@ std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
          ", sqrt(x) with lines lw 2 dt 2 lc rgb '#5e3c99' title 'paper eq. 10: R_{ftrunc} = "
          "sqrt(R_k)', (x > 100 ? 300 : 1/0) with lines lw 2 dt 4 lc rgb '#0571b0' title 'paper "
          "eq. 11: R_{ftrunc} = 300 for R_k > 10^2'";
-}
-
-// "set xtics (...)": one tick per studied value, labelled with 4 significant digits.
-std::string Tics(const char* axis, const std::vector<double>& values) {
-  std::string tics;
-  for (double v : values) tics += fmt::format("{}'{:.4g}' {}", tics.empty() ? "" : ", ", v, v);
-  return fmt::format("set {}tics ({}){}\n", axis, tics,
-                     std::string(axis) == "x" ? " rotate by -35 offset 0,0" : "");
 }
 
 // What the script needs beyond the style: names, axes and ranges.
@@ -206,7 +242,7 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
   const MapFrame frame{
       study + ": " + style.title + ", " + shown,
       by_dt ? "dt / dt_{sharp}" : "R_{ftrunc} = f_{trunc} / f_1",
-      Tics("x", grid.r_k_values) + Tics("y", grid.y_values),
+      GnuplotTics("x", grid.r_k_values) + GnuplotTics("y", grid.y_values),
       CellClauses(grid, options.metric, criteria.options, GnuplotFileName(data_file)),
       Overlays(criteria, options.y),
       file,

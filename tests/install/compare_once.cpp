@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <optional>
 
-#include "compare/comparison.h"
+#include <shockmap/compare/comparison.h>
 
 int main() {
   shockmap::CantileverImpact problem;

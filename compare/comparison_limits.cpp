@@ -1,0 +1,57 @@
+#include "compare/comparison_limits.h"
+
+#include <fmt/format.h>
+
+#include "core/modal_basis.h"
+#include "reference/reference_cost.h"
+
+namespace shockmap {
+namespace {
+
+void CheckMeshCost(const ComparisonOptions& o, const ComparisonParameterNames& names) {
+  const int elements = o.n_elements > 0 ? o.n_elements : DefaultElementCount(o.r_ftrunc);
+  const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1);
+  if (excess.empty()) return;
+  if (o.n_elements > 0) {
+    throw InputError(fmt::format("{}: {}: {}", names.elements, elements, excess));
+  }
+  throw InputError(fmt::format("{}: {:g} needs {} elements by default: {}", names.rftrunc,
+                               o.r_ftrunc, elements, excess));
+}
+
+void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions& o,
+                        const ComparisonParameterNames& names) {
+  const std::string excess = ReferenceBudgetExcess(problem, o.reference, o.window_s);
+  if (excess.empty()) return;
+  throw InputError(fmt::format("{}: {:g} over the {:g} s {}: {}", names.rfref, o.reference.r_fref,
+                               o.window_s, names.window, excess));
+}
+
+// The step, given or resolved on the model's bounds as the run will resolve it; after the mesh
+// check, since resolving a factor builds the model.
+void CheckStepCount(const CantileverImpact& problem, const ComparisonOptions& o,
+                    const ComparisonParameterNames& names) {
+  const bool given = o.dt.dt_s.has_value();
+  const double dt_s =
+      given ? *o.dt.dt_s
+            : o.dt.Resolve(BuildImpactModel(problem, o.scheme, o.r_ftrunc, o.n_elements).bounds);
+  const auto max_steps = TransientOptions{}.max_steps;
+  if (o.window_s / dt_s <= max_steps) return;
+  const std::string step = given
+                               ? fmt::format("{}: {:g} s", names.dt, dt_s)
+                               : fmt::format("{}: {:g} of the {} bound, {:.4g} s,", names.dt_factor,
+                                             o.dt.factor, ToString(o.dt.rule), dt_s);
+  throw InputError(fmt::format("{} over the {:g} s window is {:.3g} steps; at most {} are allowed",
+                               step, o.window_s, o.window_s / dt_s, max_steps));
+}
+
+}  // namespace
+
+void CheckComparisonAffordable(const CantileverImpact& problem, const ComparisonOptions& options,
+                               const ComparisonParameterNames& names) {
+  CheckMeshCost(options, names);
+  CheckReferenceCost(problem, options, names);
+  CheckStepCount(problem, options, names);
+}
+
+}  // namespace shockmap

@@ -1,0 +1,157 @@
+// compare() and point(): one run of the paper's problem scored against its reference, as
+// `shockmap compare` and `shockmap export point` compute it, with its histories as arrays.
+
+#include <pybind11/stl.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "compare/comparison.h"
+#include "compare/comparison_limits.h"
+#include "engine/point_replay.h"
+#include "python/bindings.h"
+#include "python/signal_arrays.h"
+
+namespace shockmap::python {
+namespace {
+
+// A result shared by the Python object and every array taken from it.
+struct Comparison {
+  std::shared_ptr<const ComparisonResult> result;
+};
+
+py::dict ShockDict(const Shock& s) {
+  py::dict d;
+  d["start_s"] = s.start_s;
+  d["end_s"] = s.end_s;
+  d["impulse_n_s"] = s.impulse_n_s;
+  d["peak_force_n"] = s.peak_force_n;
+  d["peak_time_s"] = s.peak_time_s;
+  d["rebounds"] = s.Rebounds();
+  d["truncated"] = s.truncated;
+  return d;
+}
+
+py::list ShockList(const std::vector<Shock>& shocks) {
+  py::list list;
+  for (const Shock& s : shocks) list.append(ShockDict(s));
+  return list;
+}
+
+// The numerical run's histories, named as the columns of numerical.csv
+// (formats/history_csv.h); those not recorded are left out.
+py::dict NumericalHistories(const Comparison& c) {
+  const TransientResult& h = c.result->histories;
+  py::dict d;
+  if (h.displacement_m.empty()) return d;
+  d["t_s"] = TimesOf(h.displacement_m[0]);
+  d["tip_displacement_m"] = ArrayOver(c.result, h.displacement_m[0].values);
+  if (!h.velocity_m_s.empty())
+    d["tip_velocity_m_s"] = ArrayOver(c.result, h.velocity_m_s[0].values);
+  if (!h.contact_force_n.empty()) {
+    d["contact_force_n"] = ArrayOver(c.result, h.contact_force_n[0].values);
+  }
+  const EnergyHistory& e = h.energy;
+  for (const auto& [name, signal] :
+       {std::pair{"kinetic_j", &e.kinetic_j}, std::pair{"strain_j", &e.strain_j},
+        std::pair{"contact_j", &e.contact_j}, std::pair{"dissipated_j", &e.dissipated_j}}) {
+    if (!signal->values.empty()) d[name] = ArrayOver(c.result, signal->values);
+  }
+  return d;
+}
+
+py::dict ReferenceHistories(const Comparison& c) {
+  const ReferenceRun& r = *c.result->reference;
+  py::dict d;
+  d["t_s"] = TimesOf(r.tip_m);
+  d["tip_displacement_m"] = ArrayOver(c.result, r.tip_m.values);
+  d["contact_force_n"] = ArrayOver(c.result, r.force_n.values);
+  return d;
+}
+
+py::dict ScoreDict(const ComparisonResult& r) {
+  py::dict d;
+  for (const ScoreDefinition& s : Scores()) d[py::str(std::string(s.name))] = r.scores[s.name];
+  return d;
+}
+
+Comparison Compare(double r_k, double r_ftrunc, std::optional<double> dt_s, double dt_factor,
+                   const std::string& dt_rule, double window_s, const std::string& scheme,
+                   std::optional<double> r_fref, int elements) {
+  CantileverImpact problem;
+  problem.r_k = r_k;
+  ComparisonOptions options;
+  options.r_ftrunc = r_ftrunc;
+  options.dt.dt_s = dt_s;
+  options.dt.factor = dt_factor;
+  const auto rule = DtRuleFromString(dt_rule);
+  if (!rule) throw InputError("dt_rule: \"" + dt_rule + "\" is not one of paper, sharp");
+  options.dt.rule = *rule;
+  const auto parsed_scheme = SchemeFromString(scheme);
+  if (!parsed_scheme) {
+    throw InputError("scheme: \"" + scheme + "\" is not one of explicit-modal, implicit-full");
+  }
+  options.scheme = *parsed_scheme;
+  options.window_s = window_s;
+  if (r_fref) options.reference.r_fref = *r_fref;
+  if (elements < 0) throw InputError("elements: " + std::to_string(elements) + " is negative");
+  options.n_elements = elements;
+  std::string error;
+  if (!problem.IsValid(&error) || !options.IsValid(&error)) throw InputError(error);
+  CheckComparisonAffordable(problem, options,
+                            {"rftrunc", "rfref", "window_s", "elements", "dt", "dt_factor"});
+  py::gil_scoped_release release;
+  return {std::make_shared<const ComparisonResult>(RunComparison(problem, options))};
+}
+
+Comparison Point(const std::string& database_path, const std::string& study,
+                 std::int64_t point_id) {
+  py::gil_scoped_release release;
+  ReplayedPoint replay = ReplayCanonicalPoint(database_path, study, point_id);
+  return {std::make_shared<const ComparisonResult>(std::move(replay.result))};
+}
+
+}  // namespace
+
+void BindComparison(py::module_& m) {
+  py::class_<Comparison>(m, "Comparison",
+                         "A run of the paper's problem scored against its reference")
+      .def_property_readonly("status",
+                             [](const Comparison& c) { return ToString(c.result->status); })
+      .def_property_readonly("message", [](const Comparison& c) { return c.result->message; })
+      .def_property_readonly("scores", [](const Comparison& c) { return ScoreDict(*c.result); })
+      .def_property_readonly("n_modes", [](const Comparison& c) { return c.result->n_modes; })
+      .def_property_readonly("n_elements", [](const Comparison& c) { return c.result->n_elements; })
+      .def_property_readonly("dt_used_s",
+                             [](const Comparison& c) { return c.result->numerical.dt_used_s; })
+      .def_property_readonly("steps",
+                             [](const Comparison& c) { return c.result->numerical.steps_taken; })
+      .def_property_readonly("wall_s",
+                             [](const Comparison& c) { return c.result->numerical.wall_s; })
+      .def_property_readonly("cpu_s", [](const Comparison& c) { return c.result->numerical.cpu_s; })
+      .def_property_readonly("dt_paper_s",
+                             [](const Comparison& c) { return c.result->bounds.dt_paper_s; })
+      .def_property_readonly("dt_sharp_s",
+                             [](const Comparison& c) { return c.result->bounds.dt_sharp_s; })
+      .def_property_readonly(
+          "reference_r_fref",
+          [](const Comparison& c) { return c.result->reference->convergence.r_fref; })
+      .def_property_readonly(
+          "reference_difference",
+          [](const Comparison& c) { return c.result->reference->convergence.difference; })
+      .def_property_readonly(
+          "shocks_numerical",
+          [](const Comparison& c) { return ShockList(c.result->shocks_numerical); })
+      .def_property_readonly(
+          "shocks_reference",
+          [](const Comparison& c) { return ShockList(c.result->reference->shocks); })
+      .def_property_readonly("numerical", &NumericalHistories)
+      .def_property_readonly("reference", &ReferenceHistories);
+  m.def("compare", &Compare, py::arg("rk"), py::arg("rftrunc"), py::arg("dt"), py::arg("dt_factor"),
+        py::arg("dt_rule"), py::arg("window_s"), py::arg("scheme"), py::arg("rfref"),
+        py::arg("elements"));
+  m.def("point", &Point, py::arg("db"), py::arg("study"), py::arg("point_id"));
+}
+
+}  // namespace shockmap::python

@@ -1,0 +1,220 @@
+"""shockmap from Python: the library's runs, studies and database as NumPy arrays and pandas
+DataFrames (docs/python.md).
+
+Runs release the GIL, so Python threads run several at once. Bad input raises InputError (a
+ValueError) with the command line's own message; database faults raise DatabaseError.
+"""
+
+import json as _json
+
+import pandas as _pd
+
+from . import _shockmap
+from ._shockmap import Comparison, DatabaseError, InputError, SceneRun as _SceneRun
+
+__version__ = _shockmap.__version__
+__all__ = [
+    "Comparison", "DatabaseError", "InputError", "Scene", "SceneRun", "Study", "compare",
+    "criteria", "point", "query", "reference", "results", "simulate", "sizing",
+]
+
+DEFAULT_DATABASE = "shockmap.db"
+
+
+def compare(rk, rftrunc, *, dt=None, dt_factor=0.1, dt_rule="sharp", window_s=0.06,
+            scheme="explicit-modal", rfref=None, elements=0):
+    """One run of the paper's problem scored against its reference, as `shockmap compare`."""
+    return _shockmap.compare(float(rk), float(rftrunc), dt, float(dt_factor), dt_rule,
+                             float(window_s), scheme, rfref, int(elements))
+
+
+def _score(self, name):
+    return self.scores[name]
+
+
+Comparison.err = property(lambda self: _score(self, "err"), doc="Err, paper eq. 8")
+Comparison.srf = property(lambda self: _score(self, "srf"), doc="SRf, paper eq. 9")
+Comparison.pfr = property(lambda self: _score(self, "pfr"), doc="PFr, first shock's peak force ratio")
+Comparison.__repr__ = lambda self: (
+    f"<shockmap.Comparison status={self.status} err={self.err} srf={self.srf}>")
+
+
+class Scene:
+    """A scene file, checked as `shockmap simulate` checks it."""
+
+    def __init__(self, handle):
+        self._handle = handle
+
+    @classmethod
+    def load(cls, path):
+        return cls(_shockmap.Scene.load(str(path)))
+
+    @classmethod
+    def from_dict(cls, scene, path="<dict>"):
+        """`path` names the scene in messages; data files are found beside it."""
+        return cls(_shockmap.Scene.from_json_text(_json.dumps(scene), str(path)))
+
+    def to_dict(self):
+        return _json.loads(self._handle.json_text())
+
+    def set(self, key, value):
+        """Sets the parameter `key` ("bundle.wire.stiffness_n_per_m", "zones[0].gap_m") to a
+        value of the type the scene holds there; the scene is checked again."""
+        self._handle.set(key, _json.dumps(value))
+        return self
+
+    @property
+    def name(self):
+        return self._handle.name
+
+    @property
+    def path(self):
+        return self._handle.path
+
+    def __repr__(self):
+        return f"<shockmap.Scene {self.name!r} from {self.path}>"
+
+
+class SceneRun:
+    """One simulation: its summary (as `simulate --json`), zones and histories."""
+
+    def __init__(self, handle):
+        self._handle = handle
+        self.summary = _json.loads(handle.summary_json)
+
+    def __getattr__(self, name):
+        if name in ("status", "message", "steps", "dt_s", "dt_paper_s", "dt_sharp_s",
+                    "coordinates", "distinct_bases", "max_energy_ratio", "wall_s", "cpu_s",
+                    "build_wall_s"):
+            return self.summary[name]
+        raise AttributeError(name)
+
+    @property
+    def dt_used_s(self):
+        return self.summary["dt_s"]
+
+    @property
+    def modes_per_beam(self):
+        return self._handle.modes_per_beam
+
+    @property
+    def histories(self):
+        """Arrays named as the CSV columns of `simulate --out`, with their times "t_s"."""
+        return self._handle.histories
+
+    @property
+    def zones(self):
+        """One row per zone: where it is, its largest force, its shocks and impact statistics
+        when the scene asks for them."""
+        rows = []
+        for zone in self.summary.get("zone_results", []):
+            row = {"zone" if k == "name" else k: v for k, v in zone.items()
+                   if not isinstance(v, (dict, list))}
+            row["y_m"], row["z_m"] = zone["position_m"]
+            for group in ("shocks", "impact_statistics"):
+                for k, v in (zone.get(group) or {}).items():
+                    if not isinstance(v, (dict, list)):
+                        row[f"{group}.{k}"] = v
+            rows.append(row)
+        return _pd.DataFrame(rows)
+
+
+def simulate(scene, progress=False):
+    """Runs `scene` (a Scene or a path) with the explicit modal solver. Ctrl-C stops it and
+    raises KeyboardInterrupt."""
+    if not isinstance(scene, Scene):
+        scene = Scene.load(scene)
+    return SceneRun(_shockmap.simulate(scene._handle, bool(progress)))
+
+
+class Study:
+    """A study file, checked whole as `shockmap study run` checks it."""
+
+    def __init__(self, handle):
+        self._handle = handle
+
+    @classmethod
+    def load(cls, path):
+        return cls(_shockmap.Study.load(str(path)))
+
+    name = property(lambda self: self._handle.name)
+    kind = property(lambda self: self._handle.kind)
+    path = property(lambda self: self._handle.path)
+
+    def run(self, db=DEFAULT_DATABASE, jobs=None, retry_failed=False, progress=False):
+        """Computes every missing point into `db` (resumable) and returns the run's summary.
+
+        progress: False, True (the command line's progress lines on stderr), or a callable
+        progress(phase, done, total). Ctrl-C stops the run as it stops `study run`: the points
+        computed are stored, the others stay pending, and KeyboardInterrupt is raised."""
+        return self._handle.run(str(db), jobs, bool(retry_failed), progress)
+
+    def __repr__(self):
+        return f"<shockmap.Study {self.name!r} ({self.kind}) from {self.path}>"
+
+
+_UNITS = _shockmap.column_units()
+
+
+def _frame(table):
+    frame = _pd.DataFrame.from_records(table["rows"], columns=table["columns"])
+    units = {}
+    for column in frame.columns:
+        unit = _UNITS.get(column, _UNITS.get(column[4:]) if column.startswith("ref_") else None)
+        if unit is not None:
+            units[column] = unit
+    frame.attrs["units"] = units
+    return frame
+
+
+def query(db, sql, *parameters):
+    """One read-only SQL statement, as `shockmap query`; ?1, ?2 ... bound to `parameters`
+    (None, int, float or str)."""
+    return _frame(_shockmap.query(str(db), sql, list(parameters)))
+
+
+_RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",
+                 "scene_ensemble": "ensemble_results"}
+
+
+def results(db=DEFAULT_DATABASE, study=None):
+    """The study's rows of its results view (`results`, `scene_results` or `ensemble_results`),
+    ordered by point; frame.attrs["units"] gives each declared column's unit."""
+    name, kind = _shockmap.study_and_kind(str(db), study or "")
+    view = _RESULTS_VIEW[kind]
+    order = "point_id" if kind != "scene_ensemble" else "1"
+    return query(db, f"SELECT * FROM {view} WHERE study = ?1 ORDER BY {order}", name)
+
+
+def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
+    """The validity criteria of a study of the paper's problem, one row per R_k, as `criteria
+    derive` derives them; thresholds (err_max=0.1, srf_min=0.9, ...) over the study's own."""
+    given = {}
+    for key, value in thresholds.items():
+        for suffix in ("_max", "_min"):
+            if key.endswith(suffix):
+                given[key[: -len(suffix)]] = float(value)
+                break
+        else:
+            raise InputError(f"{key}: not a threshold; give NAME_max or NAME_min (err_max, srf_min)")
+    data = _json.loads(_shockmap.criteria_json(str(db), study or "", given))
+    frame = _pd.DataFrame(data["boundary"])
+    frame.attrs["criteria"] = data
+    return frame
+
+
+def sizing(db=DEFAULT_DATABASE, study=None, wear=False, quantile=0.95, confidence=0.95):
+    """The sizing table of an ensemble study, as `sizing --format csv` (`--wear` with wear)."""
+    return _frame(_shockmap.sizing(str(db), study or "", bool(wear), float(quantile),
+                                   float(confidence)))
+
+
+def reference(db, reference_id, scene=False):
+    """A stored reference's signals as arrays ("t_s" first), by its id in reference_runs, or in
+    scene_references with scene=True."""
+    return _shockmap.reference(str(db), int(reference_id), bool(scene))
+
+
+def point(db, study, point_id):
+    """A stored point of the paper's problem computed again against its stored reference."""
+    return _shockmap.point(str(db), study, int(point_id))
