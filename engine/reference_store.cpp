@@ -75,7 +75,9 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
   run.summary.n_modes_free = row.n_modes_free;
   run.summary.n_modes_contact = row.n_modes_contact;
   run.summary.n_transitions = row.n_transitions;
-  run.convergence = {row.r_fref, row.r_fref_check, row.convergence, 0.0};
+  run.convergence.r_fref = row.r_fref;
+  run.convergence.r_fref_check = row.r_fref_check;
+  run.convergence.difference = row.convergence;
   run.wall_s = row.wall_s;
   return run;
 }
