@@ -1,7 +1,6 @@
 #include "formats/parameter_path.h"
 
 #include <algorithm>
-#include <cctype>
 
 #include "formats/json_reader.h"
 
@@ -15,7 +14,7 @@ using Json = nlohmann::json;
   FailAt(file, where,
          "\"" + path +
              "\" is not a parameter path: use keys joined by dots, with [i] for list "
-             "items (at most 9 digits), each key starting with a letter, e.g. \"solver.r_ftrunc\" "
+             "items (at most 9 digits), e.g. \"solver.r_ftrunc\" "
              "or \"zones[0].gap_m\"");
 }
 
@@ -53,12 +52,16 @@ void CheckNumberAt(const Json& scene, const Json::json_pointer& pointer, const s
   }
 }
 
-}  // namespace
-
 // A list index longer than this could overflow the JSON pointer's index type, which the JSON
-// library reports by throwing from contains() instead of answering false; for the same reason a
-// key must start with a letter, so that no key is read as a list index.
+// library reports by throwing from contains() instead of answering false. An index is written
+// [i] or as a segment of its own ("zones.0.gap_m"), so both are bounded.
 constexpr std::size_t kMaxIndexDigits = 9;
+
+bool IsIndex(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), ::isdigit);
+}
+
+}  // namespace
 
 std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
   std::string pointer;
@@ -71,13 +74,10 @@ std::optional<Json::json_pointer> ParameterPointer(const std::string& path) {
       if (segment.back() != ']' || open == 0) return std::nullopt;
       index = segment.substr(open + 1, segment.size() - open - 2);
       segment.resize(open);
-      if (index.empty() || index.size() > kMaxIndexDigits ||
-          !std::all_of(index.begin(), index.end(), ::isdigit)) {
-        return std::nullopt;
-      }
+      if (!IsIndex(index) || index.size() > kMaxIndexDigits) return std::nullopt;
     }
-    if (segment.empty() || !std::isalpha(static_cast<unsigned char>(segment.front())) ||
-        segment.find_first_of("/~]") != std::string::npos) {
+    if (segment.empty() || segment.find_first_of("/~]") != std::string::npos ||
+        (IsIndex(segment) && segment.size() > kMaxIndexDigits)) {
       return std::nullopt;
     }
     pointer += "/" + segment;
