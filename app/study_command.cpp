@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <variant>
 
 #include "app/error_report.h"
 #include "app/exit_codes.h"
@@ -16,6 +17,7 @@
 #include "engine/study_run.h"
 #include "formats/counted.h"
 #include "formats/output_file.h"
+#include "formats/study_file.h"
 #include "formats/table_output.h"
 
 namespace shockmap {
@@ -124,6 +126,11 @@ void Serve(const StudyFlags& f, RemoteWorkers& job) {
 void RunOnRankZero(const StudyFlags& f, StudyRunOptions options) {
   // The whole file, and every point's scene, is checked before the database is touched.
   const StudyFile study = ReadStudyFile(f.spec_path, f.access);
+  if (const auto* canonical = std::get_if<StudySpec>(&study)) {
+    if (const auto warning = WindowWarning(*canonical)) {
+      fmt::print(stderr, "shockmap: warning: {}\n", *warning);
+    }
+  }
   InstallStopHandlers();
   StudyRunSummary s;
   try {

@@ -6,6 +6,9 @@
 #include <set>
 #include <sstream>
 
+#include <fmt/format.h>
+
+#include "core/beam_properties.h"
 #include "core/modal_basis.h"
 #include "formats/json_reader.h"
 #include "reference/analytic_modes.h"
@@ -259,14 +262,40 @@ void ParseProblem(const Json& value, const std::string& file, CantileverImpact& 
   }
 }
 
-void ParseScoring(const Json& value, const std::string& file, ScoringSpec& s) {
+// "window_s" in seconds, or "window_periods" in first-mode periods of `beam`: one of the two.
+void ParseWindow(JsonObjectReader& r, const BeamProperties& beam, ScoringSpec& s) {
+  if (!r.Has("window_periods")) {
+    s.window_s = r.Number("window_s", s.window_s);
+    if (!kWindow.Contains(s.window_s)) {
+      r.Fail("window_s", "value " + Shown(Json(s.window_s)) + " must be " + kWindow.Allowed());
+    }
+    return;
+  }
+  if (r.Has("window_s")) {
+    r.Fail("window_periods",
+           "give the window once: \"window_s\" in seconds or \"window_periods\" in first-mode "
+           "periods, not both");
+  }
+  const double periods = r.Number("window_periods", 0.0);
+  const double f1 = FirstClampedFreeFrequencyHz(beam);
+  if (!kWindow.Contains(periods / f1)) {
+    r.Fail("window_periods", "value " + Shown(Json(periods)) + " is " + Shown(Json(periods / f1)) +
+                                 " s with f1 = " + Shown(Json(f1)) + " Hz; the window must be " +
+                                 kWindow.Allowed() + " s");
+  }
+  s.window_periods = periods;
+  s.window_s = periods / f1;
+}
+
+void ParseScoring(const Json& value, const std::string& file, const BeamProperties& beam,
+                  ScoringSpec& s) {
   JsonObjectReader r(value, file, "scoring");
   auto in_range = [&](JsonObjectReader& reader, const char* key, double v, const Range& range) {
     if (!range.Contains(v))
       reader.Fail(key, "value " + Shown(Json(v)) + " must be " + range.Allowed());
     return v;
   };
-  s.window_s = in_range(r, "window_s", r.Number("window_s", s.window_s), kWindow);
+  ParseWindow(r, beam, s);
   if (const Json* psd = r.Get("psd")) {
     JsonObjectReader p(*psd, file, r.PathOf("psd"));
     s.psd.n_samples = p.Integer("n_samples", s.psd.n_samples);
@@ -382,7 +411,7 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
   JsonObjectReader r(json, file, "");
   std::tie(spec.name, spec.description) = ReadStudyTitle(r, "canonical");
   if (const Json* p = r.Get("problem")) ParseProblem(*p, file, spec.problem);
-  if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.scoring);
+  if (const Json* s = r.Get("scoring")) ParseScoring(*s, file, spec.problem.beam, spec.scoring);
   const Json* grids = r.Get("grids");
   const Json* points = r.Get("points");
   r.Finish();
@@ -412,6 +441,24 @@ StudySpec ParseStudySpec(const Json& json, const std::string& file) {
 
 StudySpec LoadStudySpec(const std::string& path) {
   return ParseStudySpec(ReadJsonFile(path), path);
+}
+
+std::optional<std::string> WindowWarning(const StudySpec& spec) {
+  const double f1 = FirstClampedFreeFrequencyHz(spec.problem.beam);
+  const double paper_f1 = FirstClampedFreeFrequencyHz(BeamProperties{});
+  if (std::max(f1 / paper_f1, paper_f1 / f1) <= 1.5) return std::nullopt;
+  std::set<double> windows;
+  for (const StudyPoint& p : spec.points) windows.insert(p.window_s);
+  if (spec.scoring.window_periods && windows == std::set<double>{spec.scoring.window_s}) {
+    return std::nullopt;
+  }
+  const double w = *windows.begin();
+  return fmt::format(
+      "{}: window_s: {:g} s covers {:.3g} first-mode periods of this beam (f1 = {:.4g} Hz), "
+      "where it covers {:.3g} of the paper's (f1 = {:.4g} Hz; its Fig. 4 window, {:g} s, "
+      "covers {:.3g}): Err and SRf over it measure another part of the motion. Give "
+      "\"scoring\": {{\"window_periods\": ...}} to set the window in periods",
+      spec.file, w, w * f1, f1, w * paper_f1, paper_f1, kFig4WindowS, kFig4WindowS * paper_f1);
 }
 
 CantileverImpact ProblemOf(const StudySpec& spec, const StudyPoint& point) {

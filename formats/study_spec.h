@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,14 @@ inline constexpr double kModeEntryMargin = 1e-3;
 inline constexpr int kMaxModeAxisCount = 150;  // Mode 150 is at ~6.3e4 f1, below the axis' 1e5.
 std::vector<double> ModeEntryTruncations(int first_mode, int last_mode);
 
+// The paper's Fig. 4 window: 0.03 s, 0.577 first-mode periods of its beam (f1 = 19.23 Hz).
+inline constexpr double kFig4WindowS = 0.03;
+
 struct ScoringSpec {
   double window_s = ComparisonOptions{}.window_s;
+  // The window as given in first-mode periods of the problem's beam ("window_periods"), when it
+  // was; window_s is then window_periods / f1.
+  std::optional<double> window_periods;
   PsdOptions psd;
   double rest_duration_t1 = ComparisonOptions{}.rest_duration_t1;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
@@ -87,6 +94,12 @@ std::pair<std::string, std::string> ReadStudyTitle(JsonObjectReader& r, std::str
 // and what is allowed: unknown keys, wrong types, empty axes, out-of-range values.
 StudySpec LoadStudySpec(const std::string& path);
 StudySpec ParseStudySpec(const nlohmann::json& json, const std::string& file);
+
+// A window given in seconds (a grid's or the scoring's "window_s") on a beam whose f1 is more
+// than 1.5 times away from the paper's covers another number of first-mode periods than the
+// same seconds do on the paper's beam, so Err and SRf change meaning: the warning says how many
+// it covers and how to give it in periods. Empty otherwise.
+std::optional<std::string> WindowWarning(const StudySpec& spec);
 
 CantileverImpact ProblemOf(const StudySpec& spec, const StudyPoint& point);
 ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point);

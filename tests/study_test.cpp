@@ -79,6 +79,14 @@ INSTANTIATE_TEST_SUITE_P(
                 R"({"name": "x", "scoring": {"window_s": 0}, "grids": [{"rk": 1, "rftrunc": 10}]})",
                 "scoring.window_s"},
         BadSpec{
+            "WindowTwice",
+            R"({"name": "x", "scoring": {"window_s": 0.03, "window_periods": 0.5}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.window_periods"},
+        BadSpec{
+            "WindowPeriodsBeyondTheLimit",
+            R"({"name": "x", "scoring": {"window_periods": 5000}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.window_periods"},
+        BadSpec{
             "UnknownPsdWindow",
             R"({"name": "x", "scoring": {"psd": {"window": "blackman"}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
             "scoring.psd.window"},
@@ -107,6 +115,38 @@ INSTANTIATE_TEST_SUITE_P(
                 "grids[0].rftrunc.modes"},
         BadSpec{"NoGridNoPoints", R"({"name": "x"})", "(top level)"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+// The window in first-mode periods: f1 = b1^2 sqrt(EI / (rho A L^4)) / (2 pi) of the problem's
+// beam, so four times EI doubles f1 and halves the window in seconds.
+TEST(StudySpec, WindowInFirstModePeriodsIsThatManyPeriodsOfTheProblemsBeam) {
+  const auto spec = [](const std::string& beam, const std::string& window) {
+    return ParseStudySpec(
+        Json::parse(R"({"name": "x", "problem": {"beam": )" + beam + R"(}, "scoring": )" + window +
+                    R"(, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+        "w.json");
+  };
+  const double b1 = 1.8751040687119611;
+  const double paper_f1 = b1 * b1 * std::sqrt(1.5e5 / 127.0) / (2.0 * M_PI);
+  const StudySpec paper = spec("{}", R"({"window_periods": 0.5})");
+  EXPECT_NEAR(paper.scoring.window_s, 0.5 / paper_f1, 1e-15);
+  EXPECT_NEAR(paper.points.front().window_s, 0.5 / paper_f1, 1e-15);
+  EXPECT_NEAR(kFig4WindowS * paper_f1, 0.577, 5e-4);  // The paper's Fig. 4 window in periods.
+  EXPECT_FALSE(WindowWarning(paper));
+
+  const StudySpec stiff = spec(R"({"ei_n_m2": 6e5})", R"({"window_periods": 0.5})");
+  EXPECT_NEAR(stiff.scoring.window_s, 0.25 / paper_f1, 1e-15);
+  EXPECT_FALSE(WindowWarning(stiff));  // Given in periods: meant as such.
+
+  // The same beam with the window in seconds: 0.03 s is 2 x 0.577 periods of it.
+  const auto warning = WindowWarning(spec(R"({"ei_n_m2": 6e5})", R"({"window_s": 0.03})"));
+  ASSERT_TRUE(warning);
+  EXPECT_NE(warning->find("w.json: window_s: 0.03 s covers 1.15 first-mode periods"),
+            std::string::npos)
+      << *warning;
+  EXPECT_NE(warning->find("window_periods"), std::string::npos) << *warning;
+  // Within 1.5 times the paper's f1 the seconds keep their meaning closely enough.
+  EXPECT_FALSE(WindowWarning(spec(R"({"ei_n_m2": 3e5})", R"({"window_s": 0.03})")));
+}
 
 TEST(StudySpec, ExpandsGridsAndPointsWithoutRepeats) {
   const StudySpec s = ParseStudySpec(Json::parse(R"({
