@@ -40,6 +40,7 @@
 #include "core/stability_bounds.h"
 #include "core/transient_run.h"
 #include "core/uniform_signal.h"
+#include "tests/modal_checks.h"
 
 namespace shockmap {
 
@@ -191,13 +192,13 @@ TEST(BeamFe, LeadingErrorConstantIsTheOneDefaultElementCountAssumes) {
 }
 
 // "R300" for r_ftrunc = 300.
-std::string RFtruncName(const testing::TestParamInfo<double>& info) {
+std::string RFtruncName(const ::testing::TestParamInfo<double>& info) {
   std::string name = "R";
   name += std::to_string(static_cast<int>(info.param));
   return name;
 }
 
-class DefaultElementCountTest : public testing::TestWithParam<double> {};
+class DefaultElementCountTest : public ::testing::TestWithParam<double> {};
 
 TEST_P(DefaultElementCountTest, KeepsEveryRetainedModeWithin1e4) {
   const double r_ftrunc = GetParam();
@@ -221,7 +222,7 @@ TEST_P(DefaultElementCountTest, KeepsEveryRetainedModeWithin1e4) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RFtrunc, DefaultElementCountTest,
-                         testing::Values(10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0), RFtruncName);
+                         ::testing::Values(10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0), RFtruncName);
 
 TEST(BeamFe, ClampedPinnedFrequenciesConvergeAtFourthOrder) {
   const BeamProperties beam;
@@ -250,15 +251,7 @@ TEST(ModalBasis, IsMassOrthonormalAndDiagonalizesStiffness) {
   const FeBeamModel fe = AssembleBeam(beam, 30, EndCondition::kClamped, EndCondition::kFree);
   const ModalBasis all = ComputeLowestModes(fe, fe.Size());
   ASSERT_EQ(all.NumModes(), fe.Size());
-  const Eigen::MatrixXd m = fe.mass;
-  const Eigen::MatrixXd k = fe.stiffness;
-  const Eigen::MatrixXd modal_mass = all.shapes.transpose() * m * all.shapes;
-  EXPECT_LT((modal_mass - Eigen::MatrixXd::Identity(fe.Size(), fe.Size())).cwiseAbs().maxCoeff(),
-            1e-10);
-  const Eigen::MatrixXd modal_stiffness = all.shapes.transpose() * k * all.shapes;
-  const Eigen::MatrixXd omega2 = all.omega_rad_s.array().square().matrix().asDiagonal();
-  const double scale = omega2.maxCoeff();
-  EXPECT_LT((modal_stiffness - omega2).cwiseAbs().maxCoeff() / scale, 1e-10);
+  testing::ExpectMassOrthonormalAndDiagonalizing(fe, all);
   for (int j = 0; j < all.NumModes(); ++j) {
     if (j > 0) {
       EXPECT_GT(all.omega_rad_s[j], all.omega_rad_s[j - 1]);
@@ -410,7 +403,7 @@ std::vector<double> ObservedOrders(SecondOrderSystem& system, NewmarkParameters 
 // Strong enough to matter over the 0.05 s of the runs: the amplitude drops by e^-1.
 constexpr double kConvergenceDampingPerS = 40.0;
 
-class CentralDifferenceOrderTest : public testing::TestWithParam<bool> {};
+class CentralDifferenceOrderTest : public ::testing::TestWithParam<bool> {};
 
 TEST_P(CentralDifferenceOrderTest, TipDisplacementConvergesAtSecondOrder) {
   const FourModeProblem p;
@@ -429,7 +422,7 @@ TEST_P(CentralDifferenceOrderTest, TipDisplacementConvergesAtSecondOrder) {
   }
 }
 
-class AverageAccelerationOrderTest : public testing::TestWithParam<bool> {};
+class AverageAccelerationOrderTest : public ::testing::TestWithParam<bool> {};
 
 TEST_P(AverageAccelerationOrderTest, TipDisplacementConvergesAtSecondOrderOnFullModel) {
   const FourModeProblem p;
@@ -446,12 +439,12 @@ TEST_P(AverageAccelerationOrderTest, TipDisplacementConvergesAtSecondOrderOnFull
   }
 }
 
-std::string DampingName(const testing::TestParamInfo<bool>& info) {
+std::string DampingName(const ::testing::TestParamInfo<bool>& info) {
   return info.param ? "MassProportionalDamping" : "Undamped";
 }
 
-INSTANTIATE_TEST_SUITE_P(Damping, CentralDifferenceOrderTest, testing::Bool(), DampingName);
-INSTANTIATE_TEST_SUITE_P(Damping, AverageAccelerationOrderTest, testing::Bool(), DampingName);
+INSTANTIATE_TEST_SUITE_P(Damping, CentralDifferenceOrderTest, ::testing::Bool(), DampingName);
+INSTANTIATE_TEST_SUITE_P(Damping, AverageAccelerationOrderTest, ::testing::Bool(), DampingName);
 
 TEST(AverageAcceleration, ConservesEnergyOnFullModelFarBeyondExplicitLimit) {
   const FourModeProblem p;
@@ -505,7 +498,7 @@ BalanceRun RunBalance(const CantileverImpact& problem, Scheme scheme, double r_f
   return out;
 }
 
-class MassDampingBalanceTest : public testing::TestWithParam<Scheme> {};
+class MassDampingBalanceTest : public ::testing::TestWithParam<Scheme> {};
 
 TEST_P(MassDampingBalanceTest, KineticStrainContactAndDissipatedStayEqualToInitialEnergy) {
   CantileverImpact problem;
@@ -530,8 +523,8 @@ TEST_P(MassDampingBalanceTest, KineticStrainContactAndDissipatedStayEqualToIniti
 }
 
 INSTANTIATE_TEST_SUITE_P(Schemes, MassDampingBalanceTest,
-                         testing::Values(Scheme::kExplicitModal, Scheme::kImplicitFull),
-                         [](const testing::TestParamInfo<Scheme>& info) {
+                         ::testing::Values(Scheme::kExplicitModal, Scheme::kImplicitFull),
+                         [](const ::testing::TestParamInfo<Scheme>& info) {
                            return info.param == Scheme::kExplicitModal ? "ExplicitModal"
                                                                        : "ImplicitFull";
                          });
@@ -683,7 +676,7 @@ struct ContactStepCase {
 
 void PrintTo(const ContactStepCase& c, std::ostream* os) { *os << c.name; }
 
-class FullFeContactStepTest : public testing::TestWithParam<ContactStepCase> {};
+class FullFeContactStepTest : public ::testing::TestWithParam<ContactStepCase> {};
 
 TEST_P(FullFeContactStepTest, SatisfiesTheDiscreteEquation) {
   const ContactStepCase& c = GetParam();
@@ -734,8 +727,8 @@ const ContactStepCase kContactStepCases[] = {
     {"OpensDuringStep", -1e-7, 0.5, 0.0, true, false},
 };
 
-INSTANTIATE_TEST_SUITE_P(Cases, FullFeContactStepTest, testing::ValuesIn(kContactStepCases),
-                         [](const testing::TestParamInfo<ContactStepCase>& info) {
+INSTANTIATE_TEST_SUITE_P(Cases, FullFeContactStepTest, ::testing::ValuesIn(kContactStepCases),
+                         [](const ::testing::TestParamInfo<ContactStepCase>& info) {
                            return info.param.name;
                          });
 
@@ -831,10 +824,10 @@ TEST(SchemeAgreement, ExplicitModalMatchesImplicitFullOnTheSameElements) {
   const double truncated_30 = RelativeMaxDifference(explicit_30, implicit_fine, end_s);
   EXPECT_GT(truncated_30, 0.05);
   EXPECT_GT(truncated_30, 50 * truncated_3000);
-  RecordProperty("all_modes", testing::PrintToString(all));
-  RecordProperty("all_modes_half_dt", testing::PrintToString(all_fine));
-  RecordProperty("truncated_3000", testing::PrintToString(truncated_3000));
-  RecordProperty("truncated_30", testing::PrintToString(truncated_30));
+  RecordProperty("all_modes", ::testing::PrintToString(all));
+  RecordProperty("all_modes_half_dt", ::testing::PrintToString(all_fine));
+  RecordProperty("truncated_3000", ::testing::PrintToString(truncated_3000));
+  RecordProperty("truncated_30", ::testing::PrintToString(truncated_30));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -869,7 +862,7 @@ struct InvalidOptionsCase {
 
 void PrintTo(const InvalidOptionsCase& c, std::ostream* os) { *os << c.name; }
 
-class InvalidTransientOptionsTest : public testing::TestWithParam<InvalidOptionsCase> {};
+class InvalidTransientOptionsTest : public ::testing::TestWithParam<InvalidOptionsCase> {};
 
 TEST_P(InvalidTransientOptionsTest, IsRejectedNamingTheField) {
   const InvalidOptionsCase& c = GetParam();
@@ -898,8 +891,8 @@ const InvalidOptionsCase kInvalidOptionsCases[] = {
 };
 
 INSTANTIATE_TEST_SUITE_P(Cases, InvalidTransientOptionsTest,
-                         testing::ValuesIn(kInvalidOptionsCases),
-                         [](const testing::TestParamInfo<InvalidOptionsCase>& info) {
+                         ::testing::ValuesIn(kInvalidOptionsCases),
+                         [](const ::testing::TestParamInfo<InvalidOptionsCase>& info) {
                            return info.param.name;
                          });
 

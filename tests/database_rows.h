@@ -24,6 +24,17 @@ inline std::vector<std::string> Rows(const std::string& database, const std::str
   return rows;
 }
 
+// The columns of one of Rows' rows (or of a fixture written alike), split at '|'.
+inline std::vector<std::string> RowFields(const std::string& row) {
+  std::vector<std::string> fields;
+  std::size_t start = 0;
+  for (std::size_t bar; (bar = row.find('|', start)) != std::string::npos; start = bar + 1) {
+    fields.push_back(row.substr(start, bar - start));
+  }
+  fields.push_back(row.substr(start));
+  return fields;
+}
+
 // The integer `sql` answers (its first row's first column).
 inline std::int64_t Count(const std::string& database, const std::string& sql) {
   return std::get<std::int64_t>(RunReadOnlyQuery(database, sql).rows.at(0).at(0));

@@ -42,23 +42,13 @@ struct StoredPoint {
   double err = NAN, srf = NAN;
 };
 
-std::vector<std::string> Fields(const std::string& row) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (std::size_t bar; (bar = row.find('|', start)) != std::string::npos; start = bar + 1) {
-    fields.push_back(row.substr(start, bar - start));
-  }
-  fields.push_back(row.substr(start));
-  return fields;
-}
-
 double Number(const std::string& field) { return field == "NULL" ? NAN : std::stod(field); }
 
 // study|point_id|r_k|r_ftrunc|scheme|status|err|srf|... (the fixture's columns), in point order.
 std::vector<StoredPoint> Stored(const std::vector<std::string>& rows) {
   std::vector<StoredPoint> points;
   for (const std::string& row : rows) {
-    const auto f = Fields(row);
+    const auto f = testing::RowFields(row);
     points.push_back({std::stod(f[2]), std::stod(f[3]), 0.0, f[5], Number(f[6]), Number(f[7])});
   }
   return points;

@@ -68,6 +68,7 @@
 namespace shockmap {
 namespace {
 
+using testing::RowFields;
 using testing::Rows;
 using testing::RunShockmap;
 
@@ -100,16 +101,6 @@ void ExpectSameRows(const std::vector<std::string>& actual, const std::string& f
   for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_EQ(actual[i], expected[i]) << fixture;
 }
 
-std::vector<std::string> Fields(const std::string& row) {
-  std::vector<std::string> fields;
-  std::size_t start = 0;
-  for (std::size_t bar; (bar = row.find('|', start)) != std::string::npos; start = bar + 1) {
-    fields.push_back(row.substr(start, bar - start));
-  }
-  fields.push_back(row.substr(start));
-  return fields;
-}
-
 void ExpectClose(const std::string& actual, const std::string& expected, double tolerance,
                  const std::string& what) {
   const double a = std::stod(actual), e = std::stod(expected);
@@ -136,8 +127,8 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheFixture) {
   ASSERT_EQ(actual.size(), expected.size());
   ASSERT_EQ(ratios.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
-    const std::vector<std::string> e = Fields(expected[i]);
-    const std::vector<std::string> a = Fields(actual[i]);
+    const std::vector<std::string> e = RowFields(expected[i]);
+    const std::vector<std::string> a = RowFields(actual[i]);
     ASSERT_EQ(a.size(), 10u) << actual[i];
     const double ratio = std::stod(ratios[i]);
     if (e[5] == "ok") {
@@ -169,7 +160,7 @@ TEST_F(RefactorParity, SceneStudyOutcomesAreThoseOfTheCodeBeforeTheEngine) {
       Lines(Source("tests/data/bundle_row_truncation_results.txt"));
   ASSERT_EQ(actual.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
-    const auto a = Fields(actual[i]), e = Fields(expected[i]);
+    const auto a = RowFields(actual[i]), e = RowFields(expected[i]);
     ASSERT_EQ(a.size(), 10u) << actual[i];
     for (int exact : {0, 1, 2, 3, 6, 7}) EXPECT_EQ(a[exact], e[exact]) << expected[i];
     for (int force : {5, 8, 9}) ExpectClose(a[force], e[force], 1e-12, expected[i]);
