@@ -9,10 +9,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/input_error.h"
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
 #include "tests/run_command.h"
 #include "validation/validity_criteria.h"
+#include "views/criteria_report.h"
 
 namespace shockmap {
 namespace {
@@ -185,6 +187,64 @@ TEST(DeriveCriteria, RecoversAKnownPowerLaw) {
   EXPECT_TRUE(FindContradictions(c, points).empty());
   ASSERT_TRUE(c.dt_ratio_max.has_value());
   EXPECT_DOUBLE_EQ(*c.dt_ratio_max, 0.1);
+}
+
+// Points whose reference did not converge carry no score: the boundary ignores them, and the
+// criteria name their R_k, count and reason in the summary, the baseline and the advice.
+TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
+  std::vector<ScoredPoint> points;
+  auto point = [&](double r_k, double r_ftrunc, RunStatus status, const std::string& message) {
+    ScoredPoint p;
+    p.point_id = static_cast<std::int64_t>(points.size()) + 1;
+    p.r_k = r_k;
+    p.r_ftrunc = r_ftrunc;
+    p.status = status;
+    if (status == RunStatus::kOk) {
+      p.scores.Set("err", r_ftrunc >= 30 ? 0.01 : 0.5);
+      p.scores.Set("srf", 0.99);
+    }
+    p.dt_s = 1e-5;
+    p.dt_sharp_s = p.dt_paper_s = 1e-4;
+    p.message = message;
+    points.push_back(p);
+  };
+  // Listed out of R_k order, as a second grid or listed points store them.
+  for (double r_ftrunc : {10.0, 30.0, 100.0}) point(10.0, r_ftrunc, RunStatus::kOk, "");
+  point(1e6, 10.0, RunStatus::kReferenceUnconverged, "estimated error 0.05 above 0.02");
+  for (double r_ftrunc : {10.0, 30.0, 100.0}) point(100.0, r_ftrunc, RunStatus::kOk, "");
+  point(1e5, 30.0, RunStatus::kReferenceUnconverged, "estimated error 0.03 above 0.02");
+  point(1e6, 30.0, RunStatus::kReferenceUnconverged, "estimated error 0.05 above 0.02");
+
+  const ValidityCriteria c = DeriveCriteria(points, {});
+  ASSERT_EQ(c.boundary.size(), 2u);  // R_k = 10 and 100 only.
+  ASSERT_EQ(c.unscored.size(), 2u);
+  EXPECT_EQ(c.unscored[0].r_k, 1e5);
+  EXPECT_EQ(c.unscored[0].n_points, 1);
+  EXPECT_EQ(c.unscored[1].r_k, 1e6);
+  EXPECT_EQ(c.unscored[1].n_points, 2);
+  const auto warning = UnscoredWarning(c);
+  ASSERT_TRUE(warning);
+  EXPECT_NE(warning->find("3 points unscored, at R_k = 1e+05 (1), 1e+06 (2)"), std::string::npos)
+      << *warning;
+  EXPECT_NE(warning->find("estimated error 0.03 above 0.02"), std::string::npos) << *warning;
+  EXPECT_NE(CriteriaSummary("s", c, points).find("not scored  " + *warning), std::string::npos);
+
+  // The baseline keeps them, so `advise` can name them from the file alone.
+  const ValidityCriteria read = CriteriaFromJson(CriteriaToJson("s", c), "b.json", nullptr);
+  ASSERT_EQ(read.unscored.size(), 2u);
+  EXPECT_EQ(UnscoredWarning(read), warning);
+  nlohmann::json forged = CriteriaToJson("s", c);
+  forged["unscored"][1]["n_points"] = 0;
+  try {
+    CriteriaFromJson(forged, "b.json", nullptr);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("b.json: unscored[1].n_points"), std::string::npos)
+        << e.what();
+  }
+
+  point(1e6, 100.0, RunStatus::kOk, "");  // Scored at last: no longer listed as unscored.
+  EXPECT_FALSE(UnscoredWarning(DeriveCriteria({points.back()}, {})));
 }
 
 }  // namespace

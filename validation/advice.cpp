@@ -207,6 +207,7 @@ Advice Advise(const CantileverImpact& problem, double window_s, const ValidityCr
   a.studied_r_k = std::move(basis.studied_r_k);
   a.basis = std::move(basis.words);
   a.warnings = std::move(basis.warnings);
+  if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
   return a;
 }
 

@@ -76,11 +76,12 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
       std::ranges::minmax_element(criteria.boundary, {}, [](const RkBoundary& b) { return b.r_k; });
   if (lo != criteria.boundary.end() && !a.zones.empty() &&
       (r_k_max > hi->r_k || r_k_min < lo->r_k)) {
-    a.warning = fmt::format(
+    a.warnings.push_back(fmt::format(
         "the zones' R_k span [{:.3g}, {:.3g}], beyond the criteria's studied range [{:g}, {:g}]: "
         "the truncation criterion is extrapolated there",
-        r_k_min, r_k_max, lo->r_k, hi->r_k);
+        r_k_min, r_k_max, lo->r_k, hi->r_k));
   }
+  if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
   return a;
 }
 

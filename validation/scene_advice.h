@@ -39,8 +39,9 @@ struct SceneAdvice {
   double dt_ratio = 0.0;          // dt / dt_sharp the criteria allow.
   double dt_sharp_s = 0.0;        // Of the scene at the advised truncations.
   double dt_s = 0.0;
-  double scene_dt_s = 0.0;             // What the scene asks for, resolved.
-  std::optional<std::string> warning;  // R_k outside the criteria's studied range.
+  double scene_dt_s = 0.0;  // What the scene asks for, resolved.
+  // R_k outside the criteria's studied range; R_k the criteria's study left unscored.
+  std::vector<std::string> warnings;
 };
 
 // Throws InputError when the criteria have no fit or no time-step bound, or the scene's beams

@@ -1,5 +1,7 @@
 #include "validation/validity_criteria.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gsl/gsl_cdf.h>
 #include <gsl/gsl_fit.h>
 
@@ -177,8 +179,13 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
   ValidityCriteria c;
   c.options = options;
   std::map<double, std::vector<const ScoredPoint*>> by_rk;
+  std::map<double, UnscoredRk> unscored;
   for (const auto& p : points) {
-    if (!Scorable(p)) continue;
+    if (!Scorable(p)) {
+      auto at = unscored.try_emplace(p.r_k, UnscoredRk{p.r_k, 0, p.message}).first;
+      ++at->second.n_points;
+      continue;
+    }
     by_rk[p.r_k].push_back(&p);
     c.r_ftrunc_smallest_studied = c.r_ftrunc_smallest_studied == 0.0
                                       ? p.r_ftrunc
@@ -193,8 +200,25 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
       KeepMin(c.smallest_diverged_dt_ratio, *b.smallest_diverged_dt_ratio);
     }
   }
+  for (auto& [r_k, u] : unscored) c.unscored.push_back(std::move(u));
   c.fit = FitBoundary(c.boundary, c.r_ftrunc_smallest_studied, options.confidence);
   return c;
+}
+
+std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria) {
+  if (criteria.unscored.empty()) return std::nullopt;
+  int total = 0;
+  std::vector<std::string> each;
+  for (const UnscoredRk& u : criteria.unscored) {
+    total += u.n_points;
+    each.push_back(fmt::format("{:.3g} ({})", u.r_k, u.n_points));
+  }
+  const UnscoredRk& first = criteria.unscored.front();
+  return fmt::format(
+      "the criteria's study left {} unscored, at R_k = {}: their reference did not converge, so "
+      "the boundary there is not measured (at R_k = {:.3g}: {})",
+      total == 1 ? std::string("1 point") : fmt::format("{} points", total), fmt::join(each, ", "),
+      first.r_k, first.reason.empty() ? "no reason stored" : first.reason);
 }
 
 std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,

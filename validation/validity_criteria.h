@@ -30,6 +30,9 @@ struct ScoredPoint {
   double cpu_s = 0.0;
   int n_modes = 0;
   std::int64_t steps = 0;
+  // What the run stored beside its status: why it failed, or why it was not scored (for
+  // reference_unconverged, the reference's estimate against its tolerance).
+  std::string message;
 
   double DtRatio() const { return dt_s / dt_sharp_s; }
 };
@@ -75,9 +78,18 @@ struct PowerLawFit {
   double rms_residual_log10 = 0.0;
 };
 
+// The points of one R_k that carry no score because their reference did not converge: the
+// boundary does not see them, and the criteria say so.
+struct UnscoredRk {
+  double r_k = 0.0;
+  int n_points = 0;
+  std::string reason;  // The first such point's stored message.
+};
+
 struct ValidityCriteria {
   CriteriaOptions options;
   std::vector<RkBoundary> boundary;  // Ascending R_k.
+  std::vector<UnscoredRk> unscored;  // Ascending R_k.
   double r_ftrunc_smallest_studied = 0.0;
   std::optional<PowerLawFit> fit;
   // Largest dt / dt_sharp that passes at every R_k with a boundary.
@@ -99,9 +111,14 @@ std::string ThresholdsText(const CriteriaOptions& options, bool with_sources);
 // Diverged or unstable: the run lost stability (its time step is past the bound).
 bool LostStability(RunStatus status);
 
-// Points with status reference_unconverged carry no score and are ignored.
+// Points with status reference_unconverged carry no score: the boundary ignores them and
+// `unscored` lists them by R_k.
 ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
                                 const CriteriaOptions& options);
+
+// "the criteria's study left 10 points unscored, at R_k = 3.16e+05 (4) and 1e+06 (6): ..."
+// naming each R_k, its count and the first one's reason; empty when every point was scored.
+std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria);
 
 struct Contradiction {
   ScoredPoint point;

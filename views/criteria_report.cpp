@@ -88,6 +88,23 @@ bool WithinFactor(double a, double b, double factor) {
   return a > 0 && b > 0 && std::max(a / b, b / a) <= factor * (1 + 1e-12);
 }
 
+// "unscored": optional (baselines written before it have none), each item an R_k,
+// a count of at least 1 and a reason.
+std::vector<UnscoredRk> UnscoredFromJson(JsonObjectReader& r) {
+  std::vector<UnscoredRk> unscored;
+  const Json* list = r.Get("unscored");
+  if (list == nullptr) return unscored;
+  if (!list->is_array()) r.Fail("unscored", "expected a list, got " + Shown(*list));
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    JsonObjectReader u((*list)[i], r.File(), r.PathOf("unscored") + "[" + std::to_string(i) + "]");
+    UnscoredRk item{RequiredIn(u, "r_k", kRk), u.Integer("n_points", 0), u.Text("reason", "")};
+    if (item.n_points < 1) u.Fail("n_points", "must be at least 1");
+    u.Finish();
+    unscored.push_back(std::move(item));
+  }
+  return unscored;
+}
+
 }  // namespace
 
 Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
@@ -101,6 +118,10 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
                         {"dt_ratio_max", OrNull(b.dt_ratio_max)},
                         {"largest_stable_dt_ratio", OrNull(b.largest_stable_dt_ratio)},
                         {"smallest_diverged_dt_ratio", OrNull(b.smallest_diverged_dt_ratio)}});
+  }
+  Json unscored = Json::array();
+  for (const UnscoredRk& u : c.unscored) {
+    unscored.push_back({{"r_k", u.r_k}, {"n_points", u.n_points}, {"reason", u.reason}});
   }
   Json fit = nullptr;
   if (c.fit) {
@@ -123,6 +144,7 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
           {"thresholds", ThresholdsJson(c.options)},
           {"r_ftrunc_smallest_studied", c.r_ftrunc_smallest_studied},
           {"boundary", boundary},
+          {"unscored", unscored},
           {"fit", fit},
           {"dt_ratio_max", OrNull(c.dt_ratio_max)},
           {"largest_stable_dt_ratio", OrNull(c.largest_stable_dt_ratio)},
@@ -172,6 +194,7 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
   } else {
     r.Fail("boundary", "required list is missing");
   }
+  c.unscored = UnscoredFromJson(r);
   if (const Json* fit = r.Get("fit"); fit != nullptr && !fit->is_null()) {
     JsonObjectReader f(*fit, file, r.PathOf("fit"));
     PowerLawFit p;
@@ -289,6 +312,7 @@ std::string RuleLines(const ValidityCriteria& c, const std::vector<ScoredPoint>&
       needed_above_100, needed_above_100 <= 300 ? "agrees" : "300 is not enough");
   s += PaperStepLine(points);
   s += StabilityLine(c, points);
+  if (const auto unscored = UnscoredWarning(c)) s += "  not scored  " + *unscored + "\n";
   return s;
 }
 

@@ -16,7 +16,7 @@ std::string SceneAdviceSummary(const Scene& scene, const SceneAdvice& a, bool ev
       "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s at the advised truncations "
       "(the scene asks for {:.4g} s)\n",
       a.dt_s, a.dt_ratio, a.dt_sharp_s, a.scene_dt_s);
-  if (a.warning) s += "  warning      " + *a.warning + "\n";
+  for (const std::string& warning : a.warnings) s += "  warning      " + warning + "\n";
   if (!every_zone) return s;
   s += fmt::format("  {:<32} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "zone", "height_m", "k_s",
                    "R_k (a)", "R_k (b)", "R_ftrunc a", "R_ftrunc b");

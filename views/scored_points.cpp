@@ -98,6 +98,7 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     p.steps = StoredCount(row["steps"], database_path, what, "steps",
                           std::numeric_limits<std::int64_t>::max());
     p.cpu_s = NumberIn(row["cpu_s"]).value_or(0.0);
+    if (const auto* message = std::get_if<std::string>(&row["message"])) p.message = *message;
     points.push_back(p);
   }
   return points;
