@@ -200,7 +200,7 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
     p.r_ftrunc = r_ftrunc;
     p.status = status;
     if (status == RunStatus::kOk) {
-      p.scores.Set("err", r_ftrunc >= 30 ? 0.01 : 0.5);
+      p.scores.Set("err", r_ftrunc >= std::sqrt(r_k) ? 0.01 : 0.5);
       p.scores.Set("srf", 0.99);
     }
     p.dt_s = 1e-5;
@@ -209,14 +209,17 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
     points.push_back(p);
   };
   // Listed out of R_k order, as a second grid or listed points store them.
-  for (double r_ftrunc : {10.0, 30.0, 100.0}) point(10.0, r_ftrunc, RunStatus::kOk, "");
+  const std::vector<double> truncations = {10.0, 30.0, 100.0, 300.0};
+  for (double r_ftrunc : truncations) point(10.0, r_ftrunc, RunStatus::kOk, "");
   point(1e6, 10.0, RunStatus::kReferenceUnconverged, "estimated error 0.05 above 0.02");
-  for (double r_ftrunc : {10.0, 30.0, 100.0}) point(100.0, r_ftrunc, RunStatus::kOk, "");
+  for (double r_k : {100.0, 1e3, 1e4}) {
+    for (double r_ftrunc : truncations) point(r_k, r_ftrunc, RunStatus::kOk, "");
+  }
   point(1e5, 30.0, RunStatus::kReferenceUnconverged, "estimated error 0.03 above 0.02");
   point(1e6, 30.0, RunStatus::kReferenceUnconverged, "estimated error 0.05 above 0.02");
 
   const ValidityCriteria c = DeriveCriteria(points, {});
-  ASSERT_EQ(c.boundary.size(), 2u);  // R_k = 10 and 100 only.
+  ASSERT_EQ(c.boundary.size(), 4u);  // R_k = 10 to 1e4 only.
   ASSERT_EQ(c.unscored.size(), 2u);
   EXPECT_EQ(c.unscored[0].r_k, 1e5);
   EXPECT_EQ(c.unscored[0].n_points, 1);
@@ -229,8 +232,12 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
   EXPECT_NE(warning->find("estimated error 0.03 above 0.02"), std::string::npos) << *warning;
   EXPECT_NE(CriteriaSummary("s", c, points).find("not scored  " + *warning), std::string::npos);
 
-  // The baseline keeps them, so `advise` can name them from the file alone.
-  const ValidityCriteria read = CriteriaFromJson(CriteriaToJson("s", c), "b.json", nullptr);
+  // The baseline keeps them, so `advise` can name them from the file alone. (Its fit runs
+  // through two R_k, 1e3 and 1e4: no spread, written null and read back as such.)
+  ASSERT_TRUE(c.fit);
+  EXPECT_EQ(c.fit->n, 2);
+  const ValidityCriteria read =
+      CriteriaFromJson(nlohmann::json::parse(CriteriaToJson("s", c).dump()), "b.json", nullptr);
   ASSERT_EQ(read.unscored.size(), 2u);
   EXPECT_EQ(UnscoredWarning(read), warning);
   nlohmann::json forged = CriteriaToJson("s", c);

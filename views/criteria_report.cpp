@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "formats/counted.h"
@@ -64,6 +65,16 @@ double RequiredIn(JsonObjectReader& r, const std::string& key, const Allowed& a)
 
 double NumberIn(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
   return Checked(r, key, r.Number(key, fallback), a);
+}
+
+// A fit through two R_k has no spread: its standard errors, interval and residual are NaN,
+// which a baseline file holds as null.
+double SpreadIn(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
+  const Json* v = r.Get(key);
+  if (v != nullptr && (v->is_null() || (v->is_number_float() && std::isnan(v->get<double>())))) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return NumberIn(r, key, fallback, a);
 }
 
 std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key,
@@ -201,14 +212,14 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
     p.n = f.Integer("n", 0);
     p.knee_r_k = RequiredIn(f, "knee_r_k", kRk);
     p.p = RequiredIn(f, "p", kExponent);
-    p.p_stderr = NumberIn(f, "p_stderr", 0.0, kSpread);
-    p.p_low = NumberIn(f, "p_low", p.p, kExponent);
-    p.p_high = NumberIn(f, "p_high", p.p, kExponent);
+    p.p_stderr = SpreadIn(f, "p_stderr", 0.0, kSpread);
+    p.p_low = SpreadIn(f, "p_low", p.p, kExponent);
+    p.p_high = SpreadIn(f, "p_high", p.p, kExponent);
     c.options.confidence = f.Number("confidence", c.options.confidence);
     p.c = RequiredIn(f, "c", kCoefficient);
-    p.log10_c_stderr = NumberIn(f, "log10_c_stderr", 0.0, kSpread);
+    p.log10_c_stderr = SpreadIn(f, "log10_c_stderr", 0.0, kSpread);
     p.c_envelope = RequiredIn(f, "c_envelope", kCoefficient);
-    p.rms_residual_log10 = NumberIn(f, "rms_residual_log10", 0.0, kSpread);
+    p.rms_residual_log10 = SpreadIn(f, "rms_residual_log10", 0.0, kSpread);
     f.Get("sqrt_rk_inside_interval");
     f.Finish();
     c.fit = p;
