@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +14,7 @@
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
 #include "tests/run_command.h"
+#include "validation/advice.h"
 #include "validation/validity_criteria.h"
 #include "views/criteria_report.h"
 
@@ -249,6 +251,10 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
     EXPECT_NE(std::string(e.what()).find("b.json: unscored[1].n_points"), std::string::npos)
         << e.what();
   }
+
+  // The advice says it too, wherever it advises.
+  const Advice advice = Advise(CantileverImpact{}, 0.03, c, points, 500.0);
+  EXPECT_NE(std::ranges::find(advice.warnings, *warning), advice.warnings.end());
 
   point(1e6, 100.0, RunStatus::kOk, "");  // Scored at last: no longer listed as unscored.
   EXPECT_FALSE(UnscoredWarning(DeriveCriteria({points.back()}, {})));
