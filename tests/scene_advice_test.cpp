@@ -1,0 +1,79 @@
+// Advice for a scene from the shipped criteria (validation/scene_advice.h): each zone's R_k
+// against its beam's static bending stiffness at the zone's height, the truncation the criteria
+// require for each beam's stiffest zone, and what the advice warns of.
+
+#include "validation/scene_advice.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "formats/json_reader.h"
+#include "formats/scene_file.h"
+#include "views/criteria_report.h"
+
+namespace shockmap {
+namespace {
+
+ValidityCriteria ShippedCriteria() {
+  const std::string file = std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json";
+  return CriteriaFromJson(ReadJsonFile(file), file, nullptr);
+}
+
+Scene ShippedScene(const std::string& name) {
+  return LoadScene(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/" + name + ".json");
+}
+
+// The paper's Fig. 3 problem as a scene: R_k = k_s / (3 EI / L^3) = 1.35e9 / 4.5e5 = 3000 at the
+// tip, and the beam's truncation is the criteria's at that R_k.
+TEST(SceneAdvice, ZoneStiffnessRatioAndTruncationFollowTheCriteria) {
+  const ValidityCriteria criteria = ShippedCriteria();
+  const SceneAdvice a = AdviseScene(ShippedScene("cantilever_spring"), criteria);
+  ASSERT_EQ(a.zones.size(), 1u);
+  EXPECT_NEAR(a.zones[0].r_k_a, 3000.0, 3000.0 * 1e-12);
+  EXPECT_FALSE(a.zones[0].r_k_b);  // Against a stop.
+  ASSERT_EQ(a.beams.size(), 1u);
+  EXPECT_DOUBLE_EQ(a.beams[0].r_k_max, a.zones[0].r_k_a);
+  EXPECT_DOUBLE_EQ(a.beams[0].r_ftrunc, *criteria.RequiredRFtrunc(3000.0));
+  EXPECT_DOUBLE_EQ(a.dt_ratio, *criteria.dt_ratio_max);
+  EXPECT_NEAR(a.dt_s, a.dt_ratio * a.dt_sharp_s, 1e-15 * a.dt_s);
+  EXPECT_TRUE(a.warnings.empty()) << a.warnings.front();
+
+  // Half as far from the clamp, the beam is 8 times stiffer there: R_k falls 8-fold.
+  Scene lower = ShippedScene("cantilever_spring");
+  lower.zones[0].height_m = 0.5;
+  EXPECT_NEAR(AdviseScene(lower, criteria).zones[0].r_k_a, 375.0, 375.0 * 1e-12);
+}
+
+// The shipped bundles' zones lie inside the shipped criteria's R_k (0.01 to 1e6): no warning.
+// A zone 10 times stiffer than the stiffest wire lies beyond it, and the advice says so.
+TEST(SceneAdvice, ShippedBundlesNeedNoExtrapolationAndAStifferZoneIsNamed) {
+  const ValidityCriteria criteria = ShippedCriteria();
+  for (const char* name : {"bundle_row", "bundle_hex_7"}) {
+    const SceneAdvice a = AdviseScene(ShippedScene(name), criteria);
+    ASSERT_FALSE(a.zones.empty()) << name;
+    for (const ZoneAdvice& z : a.zones) {
+      EXPECT_GE(z.r_k_a, criteria.boundary.front().r_k) << name << " " << z.name;
+      EXPECT_LE(z.r_k_a, criteria.boundary.back().r_k) << name << " " << z.name;
+    }
+    EXPECT_TRUE(a.warnings.empty()) << name << ": " << a.warnings.front();
+    for (const BeamAdvice& b : a.beams) {
+      EXPECT_DOUBLE_EQ(b.r_ftrunc, *criteria.RequiredRFtrunc(b.r_k_max)) << name << " " << b.name;
+    }
+  }
+  Scene stiffer = ShippedScene("bundle_row");
+  const std::vector<ZoneAdvice> zones = AdviseScene(stiffer, criteria).zones;
+  const std::string stiffest =
+      std::ranges::max_element(zones, {}, [](const ZoneAdvice& z) { return z.r_k_a; })->name;
+  std::ranges::find(stiffer.zones, stiffest, &SceneZone::name)->stiffness_n_per_m *= 10.0;
+  const SceneAdvice a = AdviseScene(stiffer, criteria);
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_NE(a.warnings[0].find("beyond the criteria's studied range [0.01, 1e+06]"),
+            std::string::npos)
+      << a.warnings[0];
+}
+
+}  // namespace
+}  // namespace shockmap
