@@ -27,16 +27,18 @@ Scene ShippedScene(const std::string& name) {
 }
 
 // The paper's Fig. 3 problem as a scene: R_k = k_s / (3 EI / L^3) = 1.35e9 / 4.5e5 = 3000 at the
-// tip, and the beam's truncation is the criteria's at that R_k.
+// tip, and the beam's truncation is the criteria's at that R_k. The local stiffness comes from
+// the beam's finite elements (exact at a node for a point load, 1.5e-10 here; between nodes,
+// as at 0.5 m of 55 elements, within 1e-6).
 TEST(SceneAdvice, ZoneStiffnessRatioAndTruncationFollowTheCriteria) {
   const ValidityCriteria criteria = ShippedCriteria();
   const SceneAdvice a = AdviseScene(ShippedScene("cantilever_spring"), criteria);
   ASSERT_EQ(a.zones.size(), 1u);
-  EXPECT_NEAR(a.zones[0].r_k_a, 3000.0, 3000.0 * 1e-12);
+  EXPECT_NEAR(a.zones[0].r_k_a, 3000.0, 3000.0 * 1e-9);
   EXPECT_FALSE(a.zones[0].r_k_b);  // Against a stop.
   ASSERT_EQ(a.beams.size(), 1u);
   EXPECT_DOUBLE_EQ(a.beams[0].r_k_max, a.zones[0].r_k_a);
-  EXPECT_DOUBLE_EQ(a.beams[0].r_ftrunc, *criteria.RequiredRFtrunc(3000.0));
+  EXPECT_DOUBLE_EQ(a.beams[0].r_ftrunc, *criteria.RequiredRFtrunc(a.beams[0].r_k_max));
   EXPECT_DOUBLE_EQ(a.dt_ratio, *criteria.dt_ratio_max);
   EXPECT_NEAR(a.dt_s, a.dt_ratio * a.dt_sharp_s, 1e-15 * a.dt_s);
   EXPECT_TRUE(a.warnings.empty()) << a.warnings.front();
@@ -44,7 +46,7 @@ TEST(SceneAdvice, ZoneStiffnessRatioAndTruncationFollowTheCriteria) {
   // Half as far from the clamp, the beam is 8 times stiffer there: R_k falls 8-fold.
   Scene lower = ShippedScene("cantilever_spring");
   lower.zones[0].height_m = 0.5;
-  EXPECT_NEAR(AdviseScene(lower, criteria).zones[0].r_k_a, 375.0, 375.0 * 1e-12);
+  EXPECT_NEAR(AdviseScene(lower, criteria).zones[0].r_k_a, 375.0, 375.0 * 1e-6);
 }
 
 // The shipped bundles' zones lie inside the shipped criteria's R_k (0.01 to 1e6): no warning.
