@@ -449,7 +449,8 @@ std::optional<std::string> WindowWarning(const StudySpec& spec) {
   if (std::max(f1 / paper_f1, paper_f1 / f1) <= 1.5) return std::nullopt;
   std::set<double> windows;
   for (const StudyPoint& p : spec.points) windows.insert(p.window_s);
-  if (spec.scoring.window_periods && windows == std::set<double>{spec.scoring.window_s}) {
+  if (windows.empty() ||
+      (spec.scoring.window_periods && windows == std::set<double>{spec.scoring.window_s})) {
     return std::nullopt;
   }
   const double w = *windows.begin();

@@ -207,7 +207,7 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
 
 std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria) {
   if (criteria.unscored.empty()) return std::nullopt;
-  int total = 0;
+  long long total = 0;  // A baseline's counts are read from a file: summed without overflow.
   std::vector<std::string> each;
   for (const UnscoredRk& u : criteria.unscored) {
     total += u.n_points;
