@@ -67,11 +67,13 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              r.numerical.dt_requested_s, r.numerical.steps_taken);
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",
              r.bounds.dt_paper_s, r.bounds.dt_sharp_s);
+  const ReferenceConvergence& c = ref.convergence;
   fmt::print(
       "  reference         R_fref = {:g} ({} free / {} contact modes, {} transitions), "
-      "differs from R_fref = {:g} by {:.2e} of the amplitude\n",
-      ref.convergence.r_fref, ref.summary.n_modes_free, ref.summary.n_modes_contact,
-      ref.summary.n_transitions, ref.convergence.r_fref_check, ref.convergence.difference);
+      "estimated error {:.2e} (tip {:.2e} of the amplitude, first-shock impulse {:.2e}, induced "
+      "Err {:.2e}; checked up to R_fref = {:g})\n",
+      c.r_fref, ref.summary.n_modes_free, ref.summary.n_modes_contact, ref.summary.n_transitions,
+      c.difference, c.tip.error, c.impulse.error, c.induced_err.error, c.r_fref_check);
   PrintShock("numerical", r.shocks_numerical);
   PrintShock("reference", ref.shocks);
   fmt::print("  wall time         reference {:.4f} s, numerical {:.6f} s (CPU {:.6f} s)\n",

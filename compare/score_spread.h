@@ -1,24 +1,23 @@
 #pragma once
-// How much a point's scores owe to rounding (docs/physics.md §4): at stiff contact a single
+// How much a point's scores owe to rounding (docs/physics.md §4.5): at stiff contact a single
 // trajectory's Err and SRf move under perturbations of the size of rounding, so a score is a
 // sample; the spread over a few such runs says whether a threshold's verdict is decided.
 
+#include <memory>
 #include <vector>
 
 #include "compare/comparison.h"
 
 namespace shockmap {
 
+// The smallest and largest value of every registered score (validation/scores.h) over the runs
+// that were scored; a score none of them has a value for has none in either.
 struct ScoreSpread {
-  int runs = 0;  // Runs that reached their end and were scored.
-  double err_min = 0.0, err_max = 0.0;
-  double srf_min = 0.0, srf_max = 0.0;
-  // The spread holds values on both sides of the threshold: the verdict is not decided.
-  bool err_straddles = false;
-  bool srf_straddles = false;
+  int runs = 0;  // Runs that ended ok and were scored.
+  ScoreValues low, high;
 
-  double ErrWidth() const { return err_max - err_min; }
-  double SrfWidth() const { return srf_max - srf_min; }
+  // high - low of score `name`, 0 when it has no value.
+  double Width(std::string_view name) const;
 };
 
 // Relative perturbations of the release amplitude the spread is taken over (the nominal one
@@ -27,11 +26,18 @@ struct ScoreSpread {
 // end on the window.
 inline const std::vector<double> kRoundingPerturbations = {0.0, 1e-12, -1e-12, 1e-9, -1e-9};
 
-// Runs the point (RunComparison: its reference solved for each run) with the release amplitude
-// scaled by (1 + p) for each p of `perturbations`, and the spread of Err and SRf against
-// err_max and srf_min. Runs that are not scored (diverged, reference unconverged) are left out.
+// Runs the point's numerical run with the release amplitude scaled by (1 + p) for each p of
+// `perturbations`, each scored against `reference` (the nominal amplitude's: a relative change
+// of 1e-9 moves the reference by 1e-9 of itself, below any spread that decides a verdict).
+// Runs that do not end ok (unstable, diverged) are left out.
+ScoreSpread SpreadAgainstReference(
+    const CantileverImpact& problem, const ComparisonOptions& options,
+    const std::shared_ptr<const ReferenceRun>& reference,
+    const std::vector<double>& perturbations = kRoundingPerturbations);
+
+// As SpreadAgainstReference, against the point's own reference (RunComparison).
 ScoreSpread ScoreUnderPerturbations(
-    const CantileverImpact& problem, const ComparisonOptions& options, double err_max,
-    double srf_min, const std::vector<double>& perturbations = kRoundingPerturbations);
+    const CantileverImpact& problem, const ComparisonOptions& options,
+    const std::vector<double>& perturbations = kRoundingPerturbations);
 
 }  // namespace shockmap

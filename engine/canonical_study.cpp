@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/score_columns.h"
+#include "compare/score_spread.h"
 #include "engine/record_codec.h"
 #include "engine/reference_store.h"
 #include "formats/comparison_json.h"
@@ -46,6 +47,13 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
     s.first_shock_rebounds = f.Rebounds();
   }
   return s;
+}
+
+// The spread of a scored point's scores under rounding-level perturbations, into its row.
+void SetSpread(ScoreRow& row, const ScoreSpread& spread) {
+  row.spread_runs = spread.runs;
+  SetScoreColumns(row, kScoreColumns, spread.low, "_spread_low");
+  SetScoreColumns(row, kScoreColumns, spread.high, "_spread_high");
 }
 
 PointParameters ParametersOf(const StudyPoint& p) {
@@ -120,12 +128,15 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
                                               std::int64_t reference_id) const {
   Outcome out;
   try {
-    const ComparisonResult r =
-        ScoreAgainstReference(ProblemOf(spec_, point), OptionsOf(spec_, point), reference.run,
-                              RecordedHistories::kScored, kShortRunTiming);
+    const CantileverImpact problem = ProblemOf(spec_, point);
+    const ComparisonOptions options = OptionsOf(spec_, point);
+    const ComparisonResult r = ScoreAgainstReference(problem, options, reference.run,
+                                                     RecordedHistories::kScored, kShortRunTiming);
     out.status = r.status;
     out.message = r.message;
     out.score = ToScoreRow(r, reference_id);
+    if (r.status == RunStatus::kOk && point.r_k >= spec_.scoring.spread_from_rk)
+      SetSpread(*out.score, SpreadAgainstReference(problem, options, reference.run));
   } catch (const std::exception& e) {
     out.message = e.what();
   }

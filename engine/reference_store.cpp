@@ -46,6 +46,9 @@ ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& referenc
   row.r_fref_check = run.convergence.r_fref_check;
   row.window_s = window_s;
   row.convergence = run.convergence.difference;
+  row.estimate_tip = run.convergence.tip.error;
+  row.estimate_impulse = run.convergence.impulse.error;
+  row.estimate_err = run.convergence.induced_err.error;
   row.n_modes_free = run.summary.n_modes_free;
   row.n_modes_contact = run.summary.n_modes_contact;
   row.n_transitions = run.summary.n_transitions;
@@ -78,6 +81,9 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
   run.convergence.r_fref = row.r_fref;
   run.convergence.r_fref_check = row.r_fref_check;
   run.convergence.difference = row.convergence;
+  run.convergence.tip.error = row.estimate_tip.value_or(0.0);
+  run.convergence.impulse.error = row.estimate_impulse.value_or(0.0);
+  run.convergence.induced_err.error = row.estimate_err.value_or(0.0);
   run.wall_s = row.wall_s;
   return run;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -340,6 +341,12 @@ void ParseScoring(const Json& value, const std::string& file, const BeamProperti
                  {4.0, false, 1024.0}));
     p.tolerance = in_range(f, "tolerance", f.Number("tolerance", p.tolerance), {0.0, true, 1.0});
     f.Finish();
+  }
+  if (const Json* spread = r.Get("spread")) {
+    JsonObjectReader sp(*spread, file, r.PathOf("spread"));
+    s.spread_from_rk = in_range(sp, "from_rk", sp.Number("from_rk", s.spread_from_rk),
+                                {0.0, true, std::numeric_limits<double>::infinity()});
+    sp.Finish();
   }
   if (const Json* th = r.Get("thresholds")) {
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));

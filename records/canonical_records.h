@@ -56,6 +56,11 @@ struct ScoreRow {
   std::optional<int> first_shock_rebounds;
   std::string shocks_json = "[]";
   std::string srf_definition = "first_shock";  // What srf compares (paper eq. 9's readings).
+  // Each score's smallest and largest value over the point's runs under rounding-level
+  // perturbations (compare/score_spread.h), where the study takes them; NULL elsewhere.
+  std::optional<int> spread_runs;
+  std::optional<double> err_spread_low, err_spread_high, srf_spread_low, srf_spread_high,
+      pfr_spread_low, pfr_spread_high;
 };
 
 inline constexpr Column<ScoreRow> kScoreColumns[] = {
@@ -91,6 +96,16 @@ inline constexpr Column<ScoreRow> kScoreColumns[] = {
     {"srf_definition", &ScoreRow::srf_definition, "",
      "which reading of eq. 9 (`first_shock`, `first_contact`, `reference_window`; "
      "docs/fidelity.md)"},
+    {"spread_runs", &ScoreRow::spread_runs, "",
+     "runs scored under rounding-level perturbations of the release amplitude, the nominal one "
+     "included (docs/physics.md §4.5; NULL where the study took none: "
+     "`scoring.spread.from_rk`; schema 12)"},
+    {"err_spread_low", &ScoreRow::err_spread_low, "", "the smallest Err over those runs"},
+    {"err_spread_high", &ScoreRow::err_spread_high, "", "the largest Err over those runs"},
+    {"srf_spread_low", &ScoreRow::srf_spread_low, "", "the smallest SRf over those runs"},
+    {"srf_spread_high", &ScoreRow::srf_spread_high, "", "the largest SRf over those runs"},
+    {"pfr_spread_low", &ScoreRow::pfr_spread_low, "", "the smallest PFr over those runs"},
+    {"pfr_spread_high", &ScoreRow::pfr_spread_high, "", "the largest PFr over those runs"},
 };
 
 // A semi-analytical reference: one per problem, window and reference settings.
@@ -98,6 +113,8 @@ struct ReferenceRow {
   std::int64_t reference_id = 0;  // Its key in the database, given when it is stored.
   std::string reference_key;
   double r_k = 0.0, r_fref = 0.0, r_fref_check = 0.0, window_s = 0.0, convergence = 0.0;
+  // The parts of `convergence`; NULL in references stored before schema 12.
+  std::optional<double> estimate_tip, estimate_impulse, estimate_err;
   int n_modes_free = 0, n_modes_contact = 0, n_transitions = 0;
   double wall_s = 0.0, output_dt_s = 0.0;
   std::vector<double> tip_m, force_n;
@@ -118,6 +135,12 @@ inline constexpr Column<ReferenceRow> kReferenceColumns[] = {
      "amplitude), the first-shock impulse (relative) and the Err it induces, from r_fref / 9 to "
      "r_fref_check (docs/physics.md §2); in earlier versions' references: the tip difference "
      "from the coarser truncation"},
+    {"estimate_tip", &ReferenceRow::estimate_tip, "",
+     "the tip's part of that estimate, a fraction of the amplitude (NULL before schema 12)"},
+    {"estimate_impulse", &ReferenceRow::estimate_impulse, "",
+     "the first-shock impulse's part, relative (NULL before schema 12)"},
+    {"estimate_err", &ReferenceRow::estimate_err, "",
+     "the part of the Err the reference's own error induces (NULL before schema 12)"},
     {"n_modes_free", &ReferenceRow::n_modes_free, "", "modes of the free phase"},
     {"n_modes_contact", &ReferenceRow::n_modes_contact, "", "modes of the contact phase"},
     {"n_transitions", &ReferenceRow::n_transitions, "", "phase changes"},

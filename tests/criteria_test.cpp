@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -17,6 +18,8 @@
 #include "validation/advice.h"
 #include "validation/validity_criteria.h"
 #include "views/criteria_report.h"
+#include "views/map_grid.h"
+#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {
@@ -48,6 +51,35 @@ TEST_F(QuickStudyCriteria, AgreeWithTheShippedBaseline) {
                                  Source("studies/baselines/quick.json"));
   EXPECT_EQ(check.exit_code, 0) << check.output;
   EXPECT_NE(check.output.find("agrees"), std::string::npos) << check.output;
+}
+
+// From scoring.spread.from_rk (1e4 by default) every point that ended ok stores its scores'
+// spread over the rounding-level perturbations, its own scores inside it; below, none.
+TEST_F(QuickStudyCriteria, PointsFromTheSpreadsRkStoreTheirScoresSpread) {
+  const std::vector<ScoredPoint> points = LoadCriteriaPoints(db_, "quick");
+  int with_spread = 0;
+  for (const ScoredPoint& p : points) {
+    const bool expected = p.status == RunStatus::kOk && p.r_k >= 1e4;
+    ASSERT_EQ(p.spread_runs > 0, expected) << "point " << p.point_id;
+    if (!expected) continue;
+    ++with_spread;
+    EXPECT_LE(p.spread_runs, 5) << "point " << p.point_id;
+    for (const char* score : {"err", "srf"}) {
+      if (!p.scores[score]) continue;
+      EXPECT_LE(*p.spread_low[score], *p.scores[score]) << score << ", point " << p.point_id;
+      EXPECT_GE(*p.spread_high[score], *p.scores[score]) << score << ", point " << p.point_id;
+    }
+  }
+  EXPECT_GT(with_spread, 0);
+  // The criteria set aside exactly the points whose spread straddles a threshold.
+  const ValidityCriteria c = DeriveCriteria(points, CriteriaOptions{});
+  long long undecided = 0, listed = 0;
+  for (const ScoredPoint& p : points) undecided += c.options.Undecided(p);
+  for (const PointsSetAside& u : c.undecided) listed += u.n_points;
+  EXPECT_EQ(listed, undecided);
+  const auto derive = RunShockmap("criteria derive --db " + db_);
+  EXPECT_EQ(derive.output.find("undecided") != std::string::npos, undecided > 0) << derive.output;
+  std::printf("quick: %d points with a spread, %lld undecided\n", with_spread, undecided);
 }
 
 TEST_F(QuickStudyCriteria, DeriveReportsTheFitAndThePaperRules) {
@@ -258,6 +290,64 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
 
   point(1e6, 100.0, RunStatus::kOk, "");  // Scored at last: no longer listed as unscored.
   EXPECT_FALSE(UnscoredWarning(DeriveCriteria({points.back()}, {})));
+}
+
+// A point whose scores' spread under rounding-level perturbations straddles a threshold is
+// undecided: it passes nowhere, so the boundary rises past it, and the criteria name it in the
+// summary, the baseline, the advice and the maps' outcome.
+TEST(DeriveCriteria, AnUndecidedPointPassesNowhereAndIsNamed) {
+  std::vector<ScoredPoint> points;
+  for (double r_ftrunc : {10.0, 30.0, 100.0, 300.0}) {
+    ScoredPoint p;
+    p.point_id = static_cast<std::int64_t>(points.size()) + 1;
+    p.r_k = 1e4;
+    p.r_ftrunc = r_ftrunc;
+    p.status = RunStatus::kOk;
+    p.scores.Set("err", r_ftrunc >= 30.0 ? 0.05 : 0.5);
+    p.scores.Set("srf", 0.99);
+    p.dt_s = 1e-5;
+    p.dt_sharp_s = p.dt_paper_s = 1e-4;
+    p.spread_runs = 5;
+    p.spread_low = p.spread_high = p.scores;
+    points.push_back(p);
+  }
+  const CriteriaOptions options;
+  ASSERT_EQ(DeriveCriteria(points, options).boundary.at(0).r_ftrunc_min, 30.0);
+  EXPECT_FALSE(UndecidedWarning(DeriveCriteria(points, options).undecided));
+
+  // R_ftrunc 30 passes by its nominal run, but one perturbed run gives Err 0.13 (max 0.1).
+  points[1].spread_high.Set("err", 0.13);
+  EXPECT_TRUE(options.Undecided(points[1]));
+  EXPECT_FALSE(options.Passes(points[1]));
+  EXPECT_EQ(options.Straddling(points[1]), "Err from 0.05 to 0.13 (max 0.1) over 5 runs");
+  const ValidityCriteria c = DeriveCriteria(points, options);
+  EXPECT_EQ(c.boundary.at(0).r_ftrunc_min, 100.0);
+  EXPECT_EQ(c.boundary.at(0).n_passing, 2);
+  ASSERT_EQ(c.undecided.size(), 1u);
+  EXPECT_EQ(c.undecided[0].n_points, 1);
+  const auto warning = UndecidedWarning(c.undecided);
+  ASSERT_TRUE(warning);
+  EXPECT_NE(warning->find("left 1 point undecided, at R_k = 1e+04 (1)"), std::string::npos)
+      << *warning;
+  EXPECT_NE(warning->find("point 2 (R_ftrunc 30, dt 0.1 dt_sharp): Err from 0.05 to 0.13"),
+            std::string::npos)
+      << *warning;
+  EXPECT_NE(CriteriaSummary("s", c, points).find("undecided   " + *warning), std::string::npos);
+  EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(points[1], options)].label, "undecided");
+  EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(points[2], options)].label, "passes");
+
+  const ValidityCriteria read =
+      CriteriaFromJson(nlohmann::json::parse(CriteriaToJson("s", c).dump()), "b.json", nullptr);
+  EXPECT_EQ(UndecidedWarning(read.undecided), warning);
+  const Advice advice = Advise(CantileverImpact{}, 0.03, c, points, 1e4);
+  EXPECT_NE(std::ranges::find(advice.warnings, *warning), advice.warnings.end());
+
+  // A spread wholly on one side decides, however wide: Err from 0.11 to 0.4 fails.
+  points[1].scores.Set("err", 0.2);
+  points[1].spread_low.Set("err", 0.11);
+  points[1].spread_high.Set("err", 0.4);
+  EXPECT_FALSE(options.Undecided(points[1]));
+  EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(points[1], options)].label, "fails thresholds");
 }
 
 }  // namespace

@@ -110,14 +110,16 @@ TEST(QuickStudyReferenceChange, MovedScoresAgainstTheirSpreadAndTheReferenceAgai
     point.dt.rule = DtRule::kSharp;
     point.dt.factor = a.dt_factor;
     point.window_s = spec.scoring.window_s;
-    const ScoreSpread s =
-        ScoreUnderPerturbations(ProblemOf(spec, point), OptionsOf(spec, point), 1.0, 0.8);
-    row.max_err_width = std::max(row.max_err_width, s.ErrWidth());
-    row.max_srf_width = std::max(row.max_srf_width, s.SrfWidth());
-    row.old_err_in_spread += b.err >= s.err_min && b.err <= s.err_max;
-    row.old_srf_in_spread += b.srf >= s.srf_min && b.srf <= s.srf_max;
+    const ScoreSpread s = ScoreUnderPerturbations(ProblemOf(spec, point), OptionsOf(spec, point));
+    row.max_err_width = std::max(row.max_err_width, s.Width("err"));
+    row.max_srf_width = std::max(row.max_srf_width, s.Width("srf"));
+    auto within = [&s](std::string_view score, double v) {
+      return s.low[score] && v >= *s.low[score] && v <= *s.high[score];
+    };
+    row.old_err_in_spread += within("err", b.err);
+    row.old_srf_in_spread += within("srf", b.srf);
     // The new score within the old one plus or minus the spread's width.
-    row.new_err_in_old_band += err_move <= s.ErrWidth();
+    row.new_err_in_old_band += err_move <= s.Width("err");
   }
 
   std::printf(

@@ -96,10 +96,12 @@ TEST(ScoreSpread, HomogeneousProblemScoresAgreeAcrossAmplitudesWithinTheSpread) 
     CantileverImpact p;
     p.r_k = r_k;
     o.reference.r_fref = 30000.0;
-    const ScoreSpread spread = ScoreUnderPerturbations(p, o, 0.1, 0.8);
+    const ScoreSpread spread = ScoreUnderPerturbations(p, o);
     ASSERT_EQ(spread.runs, static_cast<int>(kRoundingPerturbations.size()));
-    const double err_band = std::max(spread.ErrWidth(), 1e-12);
-    const double srf_band = std::max(spread.SrfWidth(), 1e-12);
+    const double err_band = std::max(spread.Width("err"), 1e-12);
+    const double srf_band = std::max(spread.Width("srf"), 1e-12);
+    const double err_min = *spread.low["err"], err_max = *spread.high["err"];
+    const double srf_min = *spread.low["srf"], srf_max = *spread.high["srf"];
     for (double amplitude : {1.7e-3, 0.37e-3}) {
       CantileverImpact q = p;
       q.initial_tip_m = amplitude;
@@ -108,11 +110,11 @@ TEST(ScoreSpread, HomogeneousProblemScoresAgreeAcrossAmplitudesWithinTheSpread) 
       ASSERT_TRUE(err && srf) << r.message;
       std::printf(
           "R_k %g, A %g: Err %.15g SRf %.15g; spread Err [%.15g, %.15g] SRf [%.15g, %.15g]\n", r_k,
-          amplitude, *err, *srf, spread.err_min, spread.err_max, spread.srf_min, spread.srf_max);
-      EXPECT_GE(*err, spread.err_min - err_band) << "R_k " << r_k << ", A " << amplitude;
-      EXPECT_LE(*err, spread.err_max + err_band) << "R_k " << r_k << ", A " << amplitude;
-      EXPECT_GE(*srf, spread.srf_min - srf_band) << "R_k " << r_k << ", A " << amplitude;
-      EXPECT_LE(*srf, spread.srf_max + srf_band) << "R_k " << r_k << ", A " << amplitude;
+          amplitude, *err, *srf, err_min, err_max, srf_min, srf_max);
+      EXPECT_GE(*err, err_min - err_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_LE(*err, err_max + err_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_GE(*srf, srf_min - srf_band) << "R_k " << r_k << ", A " << amplitude;
+      EXPECT_LE(*srf, srf_max + srf_band) << "R_k " << r_k << ", A " << amplitude;
     }
   }
 }

@@ -757,9 +757,9 @@ TEST(ReportHtml, Base64MatchesRfc4648) {
   EXPECT_EQ(Base64(std::string("\xff\x00\x80", 3)), "/wCA");
 }
 
-TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
+TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndThreeForOk) {
   const auto& categories = OutcomeCategories();
-  ASSERT_EQ(categories.size(), kAllRunStatuses.size() + 1);
+  ASSERT_EQ(categories.size(), kAllRunStatuses.size() + 2);
   CriteriaOptions th;
   ScoredPoint p;
   p.status = RunStatus::kOk;
@@ -768,6 +768,10 @@ TEST(StatusMap, HasOneCategoryPerRunStatusBeyondOkAndTwoForOk) {
   EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "passes");
   p.scores.Set("err", 0.5);
   EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "fails thresholds");
+  p.spread_runs = 5;
+  p.spread_low.Set("err", 0.05);
+  p.spread_high.Set("err", 0.5);
+  EXPECT_EQ(categories[OutcomeCategoryOf(p, th)].label, "undecided");
   for (RunStatus s : kAllRunStatuses) {
     if (s == RunStatus::kOk) continue;
     p.status = s;

@@ -172,6 +172,18 @@ std::vector<ScoredPoint> NearestPoints(const std::vector<ScoredPoint>& points, c
   return nearest;
 }
 
+// The criteria's undecided points at the studied R_k an advice rests on: those that may have
+// raised its boundary.
+std::vector<PointsSetAside> UndecidedAt(const ValidityCriteria& criteria,
+                                        const std::vector<double>& studied_r_k) {
+  std::vector<PointsSetAside> at;
+  for (const PointsSetAside& u : criteria.undecided) {
+    if (std::ranges::any_of(studied_r_k, [&u](double r_k) { return Same(u.r_k, r_k); }))
+      at.push_back(u);
+  }
+  return at;
+}
+
 double MedianSecondsPerModeStep(const std::vector<ScoredPoint>& points) {
   std::vector<double> per_mode_step;
   for (const auto& p : points) {
@@ -208,6 +220,8 @@ Advice Advise(const CantileverImpact& problem, double window_s, const ValidityCr
   a.basis = std::move(basis.words);
   a.warnings = std::move(basis.warnings);
   if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
+  if (const auto undecided = UndecidedWarning(UndecidedAt(criteria, a.studied_r_k)))
+    a.warnings.push_back(*undecided);
   return a;
 }
 

@@ -82,6 +82,7 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
         r_k_min, r_k_max, lo->r_k, hi->r_k));
   }
   if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
+  if (const auto undecided = UndecidedWarning(criteria.undecided)) a.warnings.push_back(*undecided);
   return a;
 }
 

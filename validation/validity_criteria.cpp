@@ -30,13 +30,44 @@ bool CriteriaOptions::IsValid(std::string* error) const {
 }
 
 bool CriteriaOptions::Passes(const ScoredPoint& p) const {
-  if (p.status != RunStatus::kOk) return false;
+  if (p.status != RunStatus::kOk || Undecided(p)) return false;
   for (const auto& [name, threshold] : thresholds) {
     const std::optional<double> value = p.scores[name];
     const ScoreDefinition* score = FindScore(name);
     if (value ? !score->Meets(*value, threshold) : score->required) return false;
   }
   return true;
+}
+
+namespace {
+
+// Whether the spread of score `name` holds values on both sides of `threshold`.
+bool StraddlesThreshold(const ScoredPoint& p, std::string_view name, double threshold) {
+  const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
+  if (!low || !high) return false;
+  const ScoreDefinition* score = FindScore(name);
+  return score->Meets(*low, threshold) != score->Meets(*high, threshold);
+}
+
+}  // namespace
+
+bool CriteriaOptions::Undecided(const ScoredPoint& p) const {
+  if (p.status != RunStatus::kOk || p.spread_runs == 0) return false;
+  return std::ranges::any_of(thresholds, [&p](const auto& named) {
+    return StraddlesThreshold(p, named.first, named.second);
+  });
+}
+
+std::string CriteriaOptions::Straddling(const ScoredPoint& p) const {
+  std::vector<std::string> each;
+  for (const auto& [name, threshold] : thresholds) {
+    if (!StraddlesThreshold(p, name, threshold)) continue;
+    const ScoreDefinition* score = FindScore(name);
+    each.push_back(fmt::format("{} from {:.3g} to {:.3g} ({} {:g})", score->label,
+                               *p.spread_low[name], *p.spread_high[name],
+                               score->better == Better::kSmaller ? "max" : "min", threshold));
+  }
+  return fmt::format("{} over {} runs", fmt::join(each, ", "), p.spread_runs);
 }
 
 std::string CriteriaOptions::Judged(const ScoredPoint& p) const {
@@ -179,12 +210,20 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
   ValidityCriteria c;
   c.options = options;
   std::map<double, std::vector<const ScoredPoint*>> by_rk;
-  std::map<double, UnscoredRk> unscored;
+  std::map<double, PointsSetAside> unscored, undecided;
+  auto set_aside = [](std::map<double, PointsSetAside>& by, const ScoredPoint& p,
+                      std::string reason) {
+    ++by.try_emplace(p.r_k, PointsSetAside{p.r_k, 0, std::move(reason)}).first->second.n_points;
+  };
   for (const auto& p : points) {
     if (!Scorable(p)) {
-      auto at = unscored.try_emplace(p.r_k, UnscoredRk{p.r_k, 0, p.message}).first;
-      ++at->second.n_points;
+      set_aside(unscored, p, p.message);
       continue;
+    }
+    if (options.Undecided(p)) {
+      set_aside(undecided, p,
+                fmt::format("point {} (R_ftrunc {:g}, dt {:.3g} dt_sharp): {}", p.point_id,
+                            p.r_ftrunc, p.DtRatio(), options.Straddling(p)));
     }
     by_rk[p.r_k].push_back(&p);
     c.r_ftrunc_smallest_studied = c.r_ftrunc_smallest_studied == 0.0
@@ -201,24 +240,49 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
     }
   }
   for (auto& [r_k, u] : unscored) c.unscored.push_back(std::move(u));
+  for (auto& [r_k, u] : undecided) c.undecided.push_back(std::move(u));
   c.fit = FitBoundary(c.boundary, c.r_ftrunc_smallest_studied, options.confidence);
   return c;
 }
 
-std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria) {
-  if (criteria.unscored.empty()) return std::nullopt;
+namespace {
+
+// "4 points", "3.16e+05 (1), 1e+06 (3)" and "at R_k = 3.16e+05: " the first one's reason.
+struct SetAsideText {
+  std::string count, at, first;
+};
+SetAsideText Describe(const std::vector<PointsSetAside>& set_aside) {
   long long total = 0;  // A baseline's counts are read from a file: summed without overflow.
   std::vector<std::string> each;
-  for (const UnscoredRk& u : criteria.unscored) {
+  for (const PointsSetAside& u : set_aside) {
     total += u.n_points;
     each.push_back(fmt::format("{:.3g} ({})", u.r_k, u.n_points));
   }
-  const UnscoredRk& first = criteria.unscored.front();
+  const PointsSetAside& first = set_aside.front();
+  return {total == 1 ? std::string("1 point") : fmt::format("{} points", total),
+          fmt::format("{}", fmt::join(each, ", ")),
+          fmt::format("at R_k = {:.3g}: {}", first.r_k,
+                      first.reason.empty() ? "no reason stored" : first.reason)};
+}
+
+}  // namespace
+
+std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria) {
+  if (criteria.unscored.empty()) return std::nullopt;
+  const SetAsideText t = Describe(criteria.unscored);
   return fmt::format(
       "the criteria's study left {} unscored, at R_k = {}: their reference did not converge, so "
-      "the boundary there is not measured (at R_k = {:.3g}: {})",
-      total == 1 ? std::string("1 point") : fmt::format("{} points", total), fmt::join(each, ", "),
-      first.r_k, first.reason.empty() ? "no reason stored" : first.reason);
+      "the boundary there is not measured ({})",
+      t.count, t.at, t.first);
+}
+
+std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& undecided) {
+  if (undecided.empty()) return std::nullopt;
+  const SetAsideText t = Describe(undecided);
+  return fmt::format(
+      "the criteria's study left {} undecided, at R_k = {}: their scores' spread under "
+      "rounding-level perturbations straddles a threshold, so they make no setting pass ({})",
+      t.count, t.at, t.first);
 }
 
 std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
@@ -237,6 +301,8 @@ std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
         << p.DtRatio() << " <= " << *criteria.dt_ratio_max << ") but ";
     if (p.status != RunStatus::kOk) {
       why << "ended " << ToString(p.status);
+    } else if (criteria.options.Undecided(p)) {
+      why << "its verdict is not decided: " << criteria.options.Straddling(p);
     } else {
       why << criteria.options.Judged(p);
     }

@@ -33,6 +33,10 @@ struct ScoredPoint {
   // What the run stored beside its status: why it failed, or why it was not scored (for
   // reference_unconverged, the reference's estimate against its tolerance).
   std::string message;
+  // Each score's smallest and largest value over the point's runs under rounding-level
+  // perturbations (compare/score_spread.h), when its study took them (spread_runs > 0).
+  int spread_runs = 0;
+  ScoreValues spread_low, spread_high;
 
   double DtRatio() const { return dt_s / dt_sharp_s; }
 };
@@ -45,9 +49,14 @@ struct CriteriaOptions {
 
   // Each threshold within its score's range, and the confidence in [0.5, 0.9999].
   bool IsValid(std::string* error) const;
-  // Ended ok and meets every threshold: a score without a value fails when it is required,
-  // passes otherwise (validation/scores.h).
+  // Ended ok, its verdict decided, and meets every threshold: a score without a value fails
+  // when it is required, passes otherwise (validation/scores.h).
   bool Passes(const ScoredPoint& p) const;
+  // Ended ok but a thresholded score's spread under rounding-level perturbations holds values
+  // on both sides of its threshold: whether the setting passes is not a property of it.
+  bool Undecided(const ScoredPoint& p) const;
+  // "Err from 0.071 to 0.13 (max 0.1) over 5 runs": the spreads that straddle a threshold.
+  std::string Straddling(const ScoredPoint& p) const;
   // "Err = 0.12 (max 0.1), SRf = 0.9 (min 0.8)": the point's value of each thresholded score.
   std::string Judged(const ScoredPoint& p) const;
 };
@@ -78,18 +87,20 @@ struct PowerLawFit {
   double rms_residual_log10 = 0.0;
 };
 
-// The points of one R_k that carry no score because their reference did not converge: the
-// boundary does not see them, and the criteria say so.
-struct UnscoredRk {
+// The points of one R_k that decide nothing: unscored (their reference did not converge: the
+// boundary does not see them) or undecided (CriteriaOptions::Undecided: they cannot make a
+// setting pass); the criteria say so.
+struct PointsSetAside {
   double r_k = 0.0;
   int n_points = 0;
-  std::string reason;  // The first such point's stored message.
+  std::string reason;  // The first such point's: its stored message, or its straddling spread.
 };
 
 struct ValidityCriteria {
   CriteriaOptions options;
-  std::vector<RkBoundary> boundary;  // Ascending R_k.
-  std::vector<UnscoredRk> unscored;  // Ascending R_k.
+  std::vector<RkBoundary> boundary;       // Ascending R_k.
+  std::vector<PointsSetAside> unscored;   // Ascending R_k.
+  std::vector<PointsSetAside> undecided;  // Ascending R_k.
   double r_ftrunc_smallest_studied = 0.0;
   std::optional<PowerLawFit> fit;
   // Largest dt / dt_sharp that passes at every R_k with a boundary.
@@ -112,13 +123,17 @@ std::string ThresholdsText(const CriteriaOptions& options, bool with_sources);
 bool LostStability(RunStatus status);
 
 // Points with status reference_unconverged carry no score: the boundary ignores them and
-// `unscored` lists them by R_k.
+// `unscored` lists them by R_k. Undecided points fail (a setting passes only where every
+// verdict is decided) and `undecided` lists them by R_k.
 ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
                                 const CriteriaOptions& options);
 
 // "the criteria's study left 10 points unscored, at R_k = 3.16e+05 (4) and 1e+06 (6): ..."
 // naming each R_k, its count and the first one's reason; empty when every point was scored.
 std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria);
+// "the criteria's study left 12 points undecided, at R_k = ...", as UnscoredWarning, for the
+// R_k of `undecided` (the criteria's, or those an advice rests on); empty when it is.
+std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& undecided);
 
 struct Contradiction {
   ScoredPoint point;

@@ -99,21 +99,29 @@ bool WithinFactor(double a, double b, double factor) {
   return a > 0 && b > 0 && std::max(a / b, b / a) <= factor * (1 + 1e-12);
 }
 
-// "unscored": optional (baselines written before it have none), each item an R_k,
-// a count of at least 1 and a reason.
-std::vector<UnscoredRk> UnscoredFromJson(JsonObjectReader& r) {
-  std::vector<UnscoredRk> unscored;
-  const Json* list = r.Get("unscored");
+// "unscored" or "undecided": optional (baselines written before them have none), each item an
+// R_k, a count of at least 1 and a reason.
+std::vector<PointsSetAside> SetAsideFromJson(JsonObjectReader& r, const std::string& key) {
+  std::vector<PointsSetAside> unscored;
+  const Json* list = r.Get(key);
   if (list == nullptr) return unscored;
-  if (!list->is_array()) r.Fail("unscored", "expected a list, got " + Shown(*list));
+  if (!list->is_array()) r.Fail(key, "expected a list, got " + Shown(*list));
   for (std::size_t i = 0; i < list->size(); ++i) {
-    JsonObjectReader u((*list)[i], r.File(), r.PathOf("unscored") + "[" + std::to_string(i) + "]");
-    UnscoredRk item{RequiredIn(u, "r_k", kRk), u.Integer("n_points", 0), u.Text("reason", "")};
+    JsonObjectReader u((*list)[i], r.File(), r.PathOf(key) + "[" + std::to_string(i) + "]");
+    PointsSetAside item{RequiredIn(u, "r_k", kRk), u.Integer("n_points", 0), u.Text("reason", "")};
     if (item.n_points < 1) u.Fail("n_points", "must be at least 1");
     u.Finish();
     unscored.push_back(std::move(item));
   }
   return unscored;
+}
+
+Json SetAsideToJson(const std::vector<PointsSetAside>& set_aside) {
+  Json list = Json::array();
+  for (const PointsSetAside& u : set_aside) {
+    list.push_back({{"r_k", u.r_k}, {"n_points", u.n_points}, {"reason", u.reason}});
+  }
+  return list;
 }
 
 }  // namespace
@@ -129,10 +137,6 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
                         {"dt_ratio_max", OrNull(b.dt_ratio_max)},
                         {"largest_stable_dt_ratio", OrNull(b.largest_stable_dt_ratio)},
                         {"smallest_diverged_dt_ratio", OrNull(b.smallest_diverged_dt_ratio)}});
-  }
-  Json unscored = Json::array();
-  for (const UnscoredRk& u : c.unscored) {
-    unscored.push_back({{"r_k", u.r_k}, {"n_points", u.n_points}, {"reason", u.reason}});
   }
   Json fit = nullptr;
   if (c.fit) {
@@ -155,7 +159,8 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
           {"thresholds", ThresholdsJson(c.options)},
           {"r_ftrunc_smallest_studied", c.r_ftrunc_smallest_studied},
           {"boundary", boundary},
-          {"unscored", unscored},
+          {"unscored", SetAsideToJson(c.unscored)},
+          {"undecided", SetAsideToJson(c.undecided)},
           {"fit", fit},
           {"dt_ratio_max", OrNull(c.dt_ratio_max)},
           {"largest_stable_dt_ratio", OrNull(c.largest_stable_dt_ratio)},
@@ -205,7 +210,8 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
   } else {
     r.Fail("boundary", "required list is missing");
   }
-  c.unscored = UnscoredFromJson(r);
+  c.unscored = SetAsideFromJson(r, "unscored");
+  c.undecided = SetAsideFromJson(r, "undecided");
   if (const Json* fit = r.Get("fit"); fit != nullptr && !fit->is_null()) {
     JsonObjectReader f(*fit, file, r.PathOf("fit"));
     PowerLawFit p;
@@ -324,6 +330,8 @@ std::string RuleLines(const ValidityCriteria& c, const std::vector<ScoredPoint>&
   s += PaperStepLine(points);
   s += StabilityLine(c, points);
   if (const auto unscored = UnscoredWarning(c)) s += "  not scored  " + *unscored + "\n";
+  if (const auto undecided = UndecidedWarning(c.undecided))
+    s += "  undecided   " + *undecided + "\n";
   return s;
 }
 

@@ -56,9 +56,10 @@ std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th
     scores += fmt::format("{} = {}, ", score.label, Scored(p.scores[score.name]));
     data += fmt::format("data-{}=\"{}\" ", score.name, Scored(p.scores[score.name]));
   }
+  const std::string spread = th.Undecided(p) ? "; " + th.Straddling(p) : "";
   const std::string tip = fmt::format(
-      "{}R_k = {:.6g}, R_ftrunc = {:.6g}, dt = {:.4g} s ({:.3g} dt_sharp), {}status {} ({})", shown,
-      p.r_k, p.r_ftrunc, p.dt_s, p.DtRatio(), scores, status, category.label);
+      "{}R_k = {:.6g}, R_ftrunc = {:.6g}, dt = {:.4g} s ({:.3g} dt_sharp), {}status {} ({}{})",
+      shown, p.r_k, p.r_ftrunc, p.dt_s, p.DtRatio(), scores, status, category.label, spread);
   const double x = f.X(c.x_low), y = f.Y(c.y_high), w = f.X(c.x_high) - x, h = f.Y(c.y_low) - y;
   return fmt::format(
       "<a href=\"{href}\"><rect class=\"cell\" x=\"{x:.2f}\" y=\"{y:.2f}\" width=\"{w:.2f}\" "

@@ -42,7 +42,8 @@ OutcomeCategory StatusCategory(RunStatus s) {
 
 std::vector<OutcomeCategory> MakeCategories() {
   std::vector<OutcomeCategory> categories = {{"passes", "#1a9850"},
-                                             {"fails thresholds", "#fdae61"}};
+                                             {"fails thresholds", "#fdae61"},
+                                             {"undecided", "#fee08b", CellMarker::kDiamond}};
   for (RunStatus s : kAllRunStatuses) {
     if (s != RunStatus::kOk) categories.push_back(StatusCategory(s));
   }
@@ -91,8 +92,8 @@ const std::vector<OutcomeCategory>& OutcomeCategories() {
 }
 
 int OutcomeCategoryOf(const ScoredPoint& p, const CriteriaOptions& thresholds) {
-  if (p.status == RunStatus::kOk) return thresholds.Passes(p) ? 0 : 1;
-  int index = 2;
+  if (p.status == RunStatus::kOk) return thresholds.Passes(p) ? 0 : thresholds.Undecided(p) ? 2 : 1;
+  int index = 3;
   for (RunStatus s : kAllRunStatuses) {
     if (s == p.status) return index;
     if (s != RunStatus::kOk) ++index;

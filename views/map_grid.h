@@ -16,15 +16,17 @@ enum class MapAxis { kRFtrunc, kDt };
 std::string ToString(MapAxis a);
 std::optional<MapAxis> MapAxisFromString(std::string_view s);
 
-// The glyph drawn over a cell whose run did not end well, whatever the map's metric: a cell's
-// colour alone never tells a run that blew up from a finished bad one.
-enum class CellMarker { kNone, kCross, kSquare, kCircle };
+// The glyph drawn over a cell whose run did not end well or whose verdict is not decided,
+// whatever the map's metric: a cell's colour alone never tells a run that blew up from a
+// finished bad one, nor a score rounding can move across its threshold from a settled one.
+enum class CellMarker { kNone, kCross, kSquare, kCircle, kDiamond };
 
-// The outcome categories of the status map, in legend order: "passes" and "fails thresholds"
-// (status ok, split by the thresholds), then every other status of kAllRunStatuses
-// (core/run_status.h) by its stored name. Diverged (x), unstable (open square) and failed (open
-// circle) cells are white under their marker, which no score palette uses; cells whose
-// reference did not converge are grey, unmarked (nothing was judged there).
+// The outcome categories of the status map, in legend order: "passes", "fails thresholds" and
+// "undecided" (status ok, split by the thresholds and by CriteriaOptions::Undecided: an open
+// diamond over a yellow cell), then every other status of kAllRunStatuses (core/run_status.h)
+// by its stored name. Diverged (x), unstable (open square) and failed (open circle) cells are
+// white under their marker, which no score palette uses; cells whose reference did not
+// converge are grey, unmarked (nothing was judged there).
 struct OutcomeCategory {
   std::string label;   // "passes", "fails thresholds", "diverged", ...
   std::string colour;  // "#rrggbb": the cell's fill where the map has no value for it.

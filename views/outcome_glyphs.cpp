@@ -25,6 +25,11 @@ std::string MarkerShape(CellMarker marker, double x, double y, double w, double 
     case CellMarker::kCircle:
       return fmt::format("<circle class=\"marker\" cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"{:.1f}\" {}/>",
                          cx, cy, r, style);
+    case CellMarker::kDiamond:
+      return fmt::format(
+          "<path class=\"marker\" d=\"M{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}L{:.1f} {:.1f}Z\" "
+          "{}/>",
+          cx, cy - r, cx + r, cy, cx, cy + r, cx - r, cy, style);
     case CellMarker::kNone:
       break;
   }
@@ -42,6 +47,8 @@ std::string LegendSample(const OutcomeCategory& category) {
       return "<b class=\"marker\">&#9633;</b>";
     case CellMarker::kCircle:
       return "<b class=\"marker\">&#9675;</b>";
+    case CellMarker::kDiamond:
+      return "<b class=\"marker\">&#9671;</b>";
     case CellMarker::kNone:
       break;
   }

@@ -11,6 +11,13 @@
 #include "formats/study_file.h"
 
 namespace shockmap {
+namespace {
+
+// More runs than this under perturbations is a corrupt row (compare/score_spread.h makes 5).
+constexpr std::int64_t kMaxSpreadRuns = 1000;
+
+}  // namespace
+
 std::string ResolveStudyName(const std::string& database_path, const std::string& study) {
   const std::vector<std::string> stored = StudyNames(database_path);
   std::string names;
@@ -87,8 +94,16 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                        " has the unknown status \"" + status + "\"");
     }
     p.status = *parsed;
-    for (const ScoreDefinition& score : Scores())
-      p.scores.Set(score.name, NumberIn(row[score.name]));
+    for (const ScoreDefinition& score : Scores()) {
+      const std::string name(score.name);
+      p.scores.Set(name, NumberIn(row[name]));
+      p.spread_low.Set(name, NumberIn(row[name + "_spread_low"]));
+      p.spread_high.Set(name, NumberIn(row[name + "_spread_high"]));
+    }
+    if (!std::holds_alternative<std::monostate>(row["spread_runs"])) {  // NULL: none taken.
+      p.spread_runs = static_cast<int>(
+          StoredCount(row["spread_runs"], database_path, what, "spread_runs", kMaxSpreadRuns));
+    }
     p.dt_s = NumberIn(row["dt_requested_s"]).value_or(0.0);
     p.dt_sharp_s = NumberIn(row["dt_sharp_s"]).value_or(0.0);
     p.dt_paper_s = NumberIn(row["dt_paper_s"]).value_or(0.0);

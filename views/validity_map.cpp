@@ -96,7 +96,8 @@ MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th) {
   return ScoreStyle(*FindScore(metric), th);
 }
 
-// gnuplot's point type of a marker: 2 a cross, 4 an open square, 6 an open circle.
+// gnuplot's point type of a marker: 2 a cross, 4 an open square, 6 an open circle, 12 an open
+// diamond.
 int PointType(CellMarker m) {
   switch (m) {
     case CellMarker::kCross:
@@ -105,6 +106,8 @@ int PointType(CellMarker m) {
       return 4;
     case CellMarker::kCircle:
       return 6;
+    case CellMarker::kDiamond:
+      return 12;
     case CellMarker::kNone:
       break;
   }
