@@ -101,7 +101,9 @@ TEST_F(QuickStudyAdvice, AtAStudiedRkIsItsBoundaryAndBetweenTwoTheSaferSide) {
     const bool undecided = std::ranges::any_of(
         criteria_.undecided, [&b](const PointsSetAside& u) { return u.r_k == b.r_k; });
     EXPECT_EQ(a.warnings.size(), undecided ? 1u : 0u) << b.r_k;
-    if (undecided) EXPECT_NE(a.warnings[0].find("undecided"), std::string::npos) << a.warnings[0];
+    if (undecided) {
+      EXPECT_NE(a.warnings[0].find("undecided"), std::string::npos) << a.warnings[0];
+    }
   }
   // Below the knee R_k = 100 needs 21.5 where 31.6 needs 10: R_k = 90 takes 100's truncation
   // (the old advice, 10, gave Err 0.135) and the finer of the two steps, with a warning.
