@@ -348,6 +348,14 @@ TEST(DeriveCriteria, AnUndecidedPointPassesNowhereAndIsNamed) {
   points[1].spread_high.Set("err", 0.4);
   EXPECT_FALSE(options.Undecided(points[1]));
   EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(points[1], options)].label, "fails thresholds");
+  // SRf straddling its threshold decides nothing when Err fails in every run.
+  points[1].spread_low.Set("srf", 0.79);
+  points[1].spread_high.Set("srf", 0.9);
+  EXPECT_FALSE(options.Undecided(points[1]));
+  points[1].spread_low.Set("err", 0.05);  // Now Err straddles too: undecided.
+  EXPECT_TRUE(options.Undecided(points[1]));
+  EXPECT_EQ(options.Straddling(points[1]),
+            "Err from 0.05 to 0.4 (max 0.1), SRf from 0.79 to 0.9 (min 0.8) over 5 runs");
 }
 
 }  // namespace

@@ -53,9 +53,17 @@ bool StraddlesThreshold(const ScoredPoint& p, std::string_view name, double thre
 
 bool CriteriaOptions::Undecided(const ScoredPoint& p) const {
   if (p.status != RunStatus::kOk || p.spread_runs == 0) return false;
-  return std::ranges::any_of(thresholds, [&p](const auto& named) {
-    return StraddlesThreshold(p, named.first, named.second);
-  });
+  bool straddles = false;
+  for (const auto& [name, threshold] : thresholds) {
+    const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
+    if (!low || !high) continue;
+    const ScoreDefinition* score = FindScore(name);
+    const bool low_meets = score->Meets(*low, threshold),
+               high_meets = score->Meets(*high, threshold);
+    if (!low_meets && !high_meets) return false;  // Fails in every run: decided.
+    straddles = straddles || low_meets != high_meets;
+  }
+  return straddles;
 }
 
 std::string CriteriaOptions::Straddling(const ScoredPoint& p) const {

@@ -52,8 +52,9 @@ struct CriteriaOptions {
   // Ended ok, its verdict decided, and meets every threshold: a score without a value fails
   // when it is required, passes otherwise (validation/scores.h).
   bool Passes(const ScoredPoint& p) const;
-  // Ended ok but a thresholded score's spread under rounding-level perturbations holds values
-  // on both sides of its threshold: whether the setting passes is not a property of it.
+  // Ended ok, a thresholded score's spread under rounding-level perturbations holds values on
+  // both sides of its threshold, and no score fails in every run: whether the setting passes
+  // is not a property of it.
   bool Undecided(const ScoredPoint& p) const;
   // "Err from 0.071 to 0.13 (max 0.1) over 5 runs": the spreads that straddle a threshold.
   std::string Straddling(const ScoredPoint& p) const;
