@@ -1,6 +1,9 @@
 #include "compare/score_spread.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "core/modal_basis.h"
 
 namespace shockmap {
 
@@ -12,13 +15,22 @@ double ScoreSpread::Width(std::string_view name) const {
 ScoreSpread SpreadAgainstReference(const CantileverImpact& problem,
                                    const ComparisonOptions& options,
                                    const std::shared_ptr<const ReferenceRun>& reference,
-                                   const std::vector<double>& perturbations) {
+                                   const std::vector<Perturbation>& perturbations) {
   ScoreSpread s;
-  for (double p : perturbations) {
+  const int elements =
+      options.n_elements > 0 ? options.n_elements : DefaultElementCount(options.r_ftrunc);
+  for (const Perturbation& p : perturbations) {
     CantileverImpact perturbed = problem;
-    perturbed.initial_tip_m *= 1.0 + p;
+    perturbed.initial_tip_m *= 1.0 + p.amplitude;
+    ComparisonOptions refined = options;
+    if (p.mesh != 1.0) {
+      // Within the eigensolution's budget; a mesh the budget cannot refine adds nothing.
+      refined.n_elements =
+          std::min(static_cast<int>(std::ceil(p.mesh * elements)), kEigenBudgetElements);
+      if (refined.n_elements <= elements) continue;
+    }
     const ComparisonResult r =
-        ScoreAgainstReference(perturbed, options, reference, RecordedHistories::kScored);
+        ScoreAgainstReference(perturbed, refined, reference, RecordedHistories::kScored);
     if (r.status != RunStatus::kOk) continue;
     ++s.runs;
     for (const ScoreDefinition& score : Scores()) {
@@ -34,7 +46,7 @@ ScoreSpread SpreadAgainstReference(const CantileverImpact& problem,
 
 ScoreSpread ScoreUnderPerturbations(const CantileverImpact& problem,
                                     const ComparisonOptions& options,
-                                    const std::vector<double>& perturbations) {
+                                    const std::vector<Perturbation>& perturbations) {
   return SpreadAgainstReference(problem, options, RunComparison(problem, options).reference,
                                 perturbations);
 }

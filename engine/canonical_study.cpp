@@ -49,7 +49,7 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   return s;
 }
 
-// The spread of a scored point's scores under rounding-level perturbations, into its row.
+// The spread of a scored point's scores over its perturbed runs, into its row.
 void SetSpread(ScoreRow& row, const ScoreSpread& spread) {
   row.spread_runs = spread.runs;
   SetScoreColumns(row, kScoreColumns, spread.low, "_spread_low");

@@ -56,9 +56,10 @@ struct ScoringSpec {
   double rest_duration_t1 = ComparisonOptions{}.rest_duration_t1;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
   ReferencePolicy reference;
-  // Points at R_k >= spread_from_rk that are scored are run again under the rounding-level
-  // perturbations of compare/score_spread.h and store their scores' spread ("spread":
-  // {"from_rk": ...}); below it rounding moves Err by less than 4e-6 (docs/fidelity.md).
+  // Points at R_k >= spread_from_rk that are scored are run again under the perturbations of
+  // compare/score_spread.h (the release at rounding level, two finer meshes) and store their
+  // scores' spread ("spread": {"from_rk": ...}); below it they move Err by less than 4e-6
+  // (docs/fidelity.md).
   double spread_from_rk = 1e4;
   // Validity thresholds by score name (validation/scores.h), read from "thresholds" as each
   // score's key (err_max, srf_min, ...).

@@ -56,8 +56,8 @@ struct ScoreRow {
   std::optional<int> first_shock_rebounds;
   std::string shocks_json = "[]";
   std::string srf_definition = "first_shock";  // What srf compares (paper eq. 9's readings).
-  // Each score's smallest and largest value over the point's runs under rounding-level
-  // perturbations (compare/score_spread.h), where the study takes them; NULL elsewhere.
+  // Each score's smallest and largest value over the point's perturbed runs
+  // (compare/score_spread.h), where the study takes them; NULL elsewhere.
   std::optional<int> spread_runs;
   std::optional<double> err_spread_low, err_spread_high, srf_spread_low, srf_spread_high,
       pfr_spread_low, pfr_spread_high;
@@ -97,9 +97,9 @@ inline constexpr Column<ScoreRow> kScoreColumns[] = {
      "which reading of eq. 9 (`first_shock`, `first_contact`, `reference_window`; "
      "docs/fidelity.md)"},
     {"spread_runs", &ScoreRow::spread_runs, "",
-     "runs scored under rounding-level perturbations of the release amplitude, the nominal one "
-     "included (docs/physics.md §4.5; NULL where the study took none: "
-     "`scoring.spread.from_rk`; schema 12)"},
+     "runs scored under perturbations that leave the setting as it is (the release amplitude "
+     "at rounding level, two finer meshes), the nominal one included (docs/physics.md §4.5; "
+     "NULL where the study took none: `scoring.spread.from_rk`; schema 12)"},
     {"err_spread_low", &ScoreRow::err_spread_low, "", "the smallest Err over those runs"},
     {"err_spread_high", &ScoreRow::err_spread_high, "", "the largest Err over those runs"},
     {"srf_spread_low", &ScoreRow::srf_spread_low, "", "the smallest SRf over those runs"},

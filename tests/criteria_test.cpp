@@ -11,6 +11,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "compare/score_spread.h"
 #include "core/input_error.h"
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
@@ -54,7 +55,7 @@ TEST_F(QuickStudyCriteria, AgreeWithTheShippedBaseline) {
 }
 
 // From scoring.spread.from_rk (1e4 by default) every point that ended ok stores its scores'
-// spread over the rounding-level perturbations, its own scores inside it; below, none.
+// spread over the perturbed runs, its own scores inside it; below, none.
 TEST_F(QuickStudyCriteria, PointsFromTheSpreadsRkStoreTheirScoresSpread) {
   const std::vector<ScoredPoint> points = LoadCriteriaPoints(db_, "quick");
   int with_spread = 0;
@@ -63,7 +64,8 @@ TEST_F(QuickStudyCriteria, PointsFromTheSpreadsRkStoreTheirScoresSpread) {
     ASSERT_EQ(p.spread_runs > 0, expected) << "point " << p.point_id;
     if (!expected) continue;
     ++with_spread;
-    EXPECT_LE(p.spread_runs, 5) << "point " << p.point_id;
+    EXPECT_LE(p.spread_runs, static_cast<int>(kScorePerturbations.size()))
+        << "point " << p.point_id;
     for (const char* score : {"err", "srf"}) {
       if (!p.scores[score]) continue;
       EXPECT_LE(*p.spread_low[score], *p.scores[score]) << score << ", point " << p.point_id;
@@ -292,7 +294,7 @@ TEST(DeriveCriteria, NamesThePointsItCouldNotScore) {
   EXPECT_FALSE(UnscoredWarning(DeriveCriteria({points.back()}, {})));
 }
 
-// A point whose scores' spread under rounding-level perturbations straddles a threshold is
+// A point whose scores' spread over its perturbed runs straddles a threshold is
 // undecided: it passes nowhere, so the boundary rises past it, and the criteria name it in the
 // summary, the baseline, the advice and the maps' outcome.
 TEST(DeriveCriteria, AnUndecidedPointPassesNowhereAndIsNamed) {

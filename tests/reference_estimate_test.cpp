@@ -1,5 +1,5 @@
 // The reference's error estimate against finer truncations (docs/physics.md §2) and the spread
-// of scores under rounding-level perturbations (docs/physics.md §4).
+// of scores under perturbations that leave the setting as it is (docs/physics.md §4.5).
 
 #include <gtest/gtest.h>
 
@@ -97,7 +97,7 @@ TEST(ScoreSpread, HomogeneousProblemScoresAgreeAcrossAmplitudesWithinTheSpread) 
     p.r_k = r_k;
     o.reference.r_fref = 30000.0;
     const ScoreSpread spread = ScoreUnderPerturbations(p, o);
-    ASSERT_EQ(spread.runs, static_cast<int>(kRoundingPerturbations.size()));
+    ASSERT_EQ(spread.runs, static_cast<int>(kScorePerturbations.size()));
     const double err_band = std::max(spread.Width("err"), 1e-12);
     const double srf_band = std::max(spread.Width("srf"), 1e-12);
     const double err_min = *spread.low["err"], err_max = *spread.high["err"];

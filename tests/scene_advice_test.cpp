@@ -4,6 +4,7 @@
 
 #include "validation/scene_advice.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -75,6 +76,32 @@ TEST(SceneAdvice, ShippedBundlesNeedNoExtrapolationAndAStifferZoneIsNamed) {
   EXPECT_NE(a.warnings[0].find("beyond the criteria's studied range [0.01, 1e+06]"),
             std::string::npos)
       << a.warnings[0];
+}
+
+// A studied R_k where no truncation passes has no boundary, so the fit's envelope does not
+// cover it: around the zones' R_k, the advice names it; away from them, not.
+TEST(SceneAdvice, AStudiedRkWithoutAPassingTruncationAroundTheZonesIsNamed) {
+  ValidityCriteria criteria = ShippedCriteria();
+  const SceneAdvice before = AdviseScene(ShippedScene("bundle_row"), criteria);
+  double r_k_max = 0.0;
+  for (const ZoneAdvice& z : before.zones) r_k_max = std::max(r_k_max, z.r_k_a);
+  // The studied R_k just below the stiffest zone loses its boundary.
+  auto below = std::ranges::find_if(criteria.boundary.rbegin(), criteria.boundary.rend(),
+                                    [&](const RkBoundary& b) { return b.r_k <= r_k_max; });
+  ASSERT_NE(below, criteria.boundary.rend());
+  below->r_ftrunc_min.reset();
+  const SceneAdvice a = AdviseScene(ShippedScene("bundle_row"), criteria);
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_NE(
+      a.warnings[0].find(fmt::format("no studied truncation passes at R_k = {:.3g}", below->r_k)),
+      std::string::npos)
+      << a.warnings[0];
+  // Far from the zones' R_k (the Fig. 3 scene's one zone at 3000), a hole at R_k = 1 is not.
+  ValidityCriteria far = ShippedCriteria();
+  auto one = std::ranges::find(far.boundary, 1.0, &RkBoundary::r_k);
+  ASSERT_NE(one, far.boundary.end());
+  one->r_ftrunc_min.reset();
+  EXPECT_TRUE(AdviseScene(ShippedScene("cantilever_spring"), far).warnings.empty());
 }
 
 }  // namespace

@@ -1,8 +1,10 @@
 #include "validation/scene_advice.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "core/input_error.h"
 #include "core/scene_model.h"
@@ -23,6 +25,26 @@ Scene AtAdvisedTruncations(Scene scene, const std::vector<BeamAdvice>& beams) {
   }
   scene.outputs = SceneOutputs{};
   return scene;
+}
+
+// Studied R_k where no truncation passes carry no boundary, so the fit's envelope does not
+// cover them: those from the studied R_k at or below r_k_min to the one at or above r_k_max
+// are named, since the advice there is not a measured boundary.
+std::optional<std::string> UnpassedWarning(const ValidityCriteria& criteria, double r_k_min,
+                                           double r_k_max) {
+  std::vector<double> unpassed;
+  const auto& all = criteria.boundary;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const bool next_below = i + 1 < all.size() && all[i + 1].r_k <= r_k_min;
+    const bool previous_above = i > 0 && all[i - 1].r_k >= r_k_max;
+    if (!all[i].r_ftrunc_min && !next_below && !previous_above) unpassed.push_back(all[i].r_k);
+  }
+  if (unpassed.empty()) return std::nullopt;
+  return fmt::format(
+      "no studied truncation passes at R_k = {:.3g}, among the studied R_k around the zones' "
+      "[{:.3g}, {:.3g}]: the fit's envelope does not cover it, so the truncation advised near it "
+      "is not a measured boundary; study larger truncations there",
+      fmt::join(unpassed, ", "), r_k_min, r_k_max);
 }
 
 }  // namespace
@@ -82,7 +104,7 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
         r_k_min, r_k_max, lo->r_k, hi->r_k));
   }
   if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
-  if (const auto undecided = UndecidedWarning(criteria.undecided)) a.warnings.push_back(*undecided);
+  if (const auto holes = UnpassedWarning(criteria, r_k_min, r_k_max)) a.warnings.push_back(*holes);
   return a;
 }
 

@@ -289,7 +289,8 @@ std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& u
   const SetAsideText t = Describe(undecided);
   return fmt::format(
       "the criteria's study left {} undecided, at R_k = {}: their scores' spread under "
-      "rounding-level perturbations straddles a threshold, so they make no setting pass ({})",
+      "perturbations that leave the setting as it is straddles a threshold, so they make no "
+      "setting pass ({})",
       t.count, t.at, t.first);
 }
 

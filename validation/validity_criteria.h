@@ -33,8 +33,8 @@ struct ScoredPoint {
   // What the run stored beside its status: why it failed, or why it was not scored (for
   // reference_unconverged, the reference's estimate against its tolerance).
   std::string message;
-  // Each score's smallest and largest value over the point's runs under rounding-level
-  // perturbations (compare/score_spread.h), when its study took them (spread_runs > 0).
+  // Each score's smallest and largest value over the point's perturbed runs
+  // (compare/score_spread.h), when its study took them (spread_runs > 0).
   int spread_runs = 0;
   ScoreValues spread_low, spread_high;
 
@@ -52,7 +52,7 @@ struct CriteriaOptions {
   // Ended ok, its verdict decided, and meets every threshold: a score without a value fails
   // when it is required, passes otherwise (validation/scores.h).
   bool Passes(const ScoredPoint& p) const;
-  // Ended ok, a thresholded score's spread under rounding-level perturbations holds values on
+  // Ended ok, a thresholded score's spread over the point's perturbed runs holds values on
   // both sides of its threshold, and no score fails in every run: whether the setting passes
   // is not a property of it.
   bool Undecided(const ScoredPoint& p) const;
