@@ -24,6 +24,7 @@
 #include "views/fig3_svg.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
+#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {
@@ -399,6 +400,15 @@ void CheckVerdict(const Place& at) {
   EXPECT_NE(text.find("Of 308 points, " + count("ok") + " ran to the end"), std::string::npos)
       << text;
   EXPECT_NE(text.find("; " + count("diverged") + " diverged ("), std::string::npos) << text;
+  // Points whose verdict the spread leaves undecided are counted apart from those a score fails.
+  const CriteriaOptions thresholds;
+  const auto points = LoadCriteriaPoints(at.db, "quick");
+  const auto undecided =
+      std::ranges::count_if(points, [&](const ScoredPoint& p) { return thresholds.Undecided(p); });
+  EXPECT_EQ(text.find(fmt::format("{} undecided: their scores over perturbed runs", undecided)) !=
+                std::string::npos,
+            undecided > 0)
+      << text;
   // The criteria are a table, one row per studied R_k.
   EXPECT_EQ(TableRowCount(dom, "criteria-table"), 11u);
 }

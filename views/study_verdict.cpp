@@ -118,7 +118,7 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
       messages[std::get<std::int64_t>(row[id_column])] = CellText(row[message_column]);
     }
   }
-  int ok = 0, passing = 0;
+  int ok = 0, passing = 0, undecided = 0;
   std::map<std::string, int> failing_by;  // By score label.
   struct Others {
     int n = 0;
@@ -131,6 +131,10 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
       ++ok;
       if (c.options.Passes(p)) {
         ++passing;
+        continue;
+      }
+      if (c.options.Undecided(p)) {
+        ++undecided;
         continue;
       }
       for (const auto& [name, threshold] : c.options.thresholds) {
@@ -154,6 +158,10 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
   std::string by;
   for (const auto& [label, n] : failing_by) {
     by += fmt::format("{}{} by {}", by.empty() ? "" : ", ", n, label);
+  }
+  if (undecided > 0) {
+    by += fmt::format("{}{} undecided: their scores over perturbed runs straddle a threshold",
+                      by.empty() ? "" : ", ", undecided);
   }
   if (!by.empty()) s += " (" + by + ")";
   for (const auto& [status, o] : others) {
