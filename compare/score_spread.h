@@ -31,6 +31,8 @@ struct ScoreSpread {
 struct Perturbation {
   double amplitude = 0.0;
   double mesh = 1.0;
+
+  bool IsNominal() const { return amplitude == 0.0 && mesh == 1.0; }
 };
 
 // The nominal run first, then rounding-level scales of the release and two finer meshes:
@@ -40,13 +42,14 @@ struct Perturbation {
 inline const std::vector<Perturbation> kScorePerturbations = {
     {0.0, 1.0}, {1e-12, 1.0}, {-1e-12, 1.0}, {1e-9, 1.0}, {-1e-9, 1.0}, {0.0, 1.1}, {0.0, 1.25}};
 
-// Runs the point's numerical run under each of `perturbations`, each scored against
-// `reference` (the nominal amplitude's: a relative change of 1e-9 moves the reference by 1e-9 of
-// itself, below any spread that decides a verdict; it does not depend on the mesh). Runs that
-// do not end ok (unstable, diverged) are left out.
+// Runs the point's numerical run under each of `perturbations`, each scored against the
+// reference of `nominal`, the point's own run already scored (the nominal amplitude's: a
+// relative change of 1e-9 moves the reference by 1e-9 of itself, below any spread that decides
+// a verdict; it does not depend on the mesh); the nominal perturbation takes `nominal`'s scores
+// instead of running again. Runs that do not end ok (unstable, diverged) are left out.
 ScoreSpread SpreadAgainstReference(
     const CantileverImpact& problem, const ComparisonOptions& options,
-    const std::shared_ptr<const ReferenceRun>& reference,
+    const ComparisonResult& nominal,
     const std::vector<Perturbation>& perturbations = kScorePerturbations);
 
 // As SpreadAgainstReference, against the point's own reference (RunComparison).

@@ -52,8 +52,8 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
 // The spread of a scored point's scores over its perturbed runs, into its row.
 void SetSpread(ScoreRow& row, const ScoreSpread& spread) {
   row.spread_runs = spread.runs;
-  SetScoreColumns(row, kScoreColumns, spread.low, "_spread_low");
-  SetScoreColumns(row, kScoreColumns, spread.high, "_spread_high");
+  SetScoreColumns(row, kScoreColumns, spread.low, kSpreadLowSuffix);
+  SetScoreColumns(row, kScoreColumns, spread.high, kSpreadHighSuffix);
 }
 
 PointParameters ParametersOf(const StudyPoint& p) {
@@ -136,7 +136,7 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
     out.message = r.message;
     out.score = ToScoreRow(r, reference_id);
     if (r.status == RunStatus::kOk && point.r_k >= spec_.scoring.spread_from_rk)
-      SetSpread(*out.score, SpreadAgainstReference(problem, options, reference.run));
+      SetSpread(*out.score, SpreadAgainstReference(problem, options, r));
   } catch (const std::exception& e) {
     out.message = e.what();
   }

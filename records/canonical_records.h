@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "records/columns.h"
@@ -39,6 +40,10 @@ inline constexpr Column<PointParameters> kPointParameterColumns[] = {
     {"mass_damping_per_s", &PointParameters::mass_damping_per_s, "1/s",
      "mass-proportional damping α"},
 };
+
+// A score's spread columns are its name with these suffixes (err_spread_low, ...).
+inline constexpr std::string_view kSpreadLowSuffix = "_spread_low";
+inline constexpr std::string_view kSpreadHighSuffix = "_spread_high";
 
 // The measurements of a computed point. Each score of the registry (validation/scores.h) that
 // the paper's problem carries is an optional real column named after it.

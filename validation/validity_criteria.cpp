@@ -41,12 +41,17 @@ bool CriteriaOptions::Passes(const ScoredPoint& p) const {
 
 namespace {
 
-// Whether the spread of score `name` holds values on both sides of `threshold`.
-bool StraddlesThreshold(const ScoredPoint& p, std::string_view name, double threshold) {
+// What the spread of score `name` says of `threshold`: nothing (no spread), met or failed in
+// every run, or both.
+enum class SpreadVerdict { kNone, kMet, kFailed, kStraddles };
+
+SpreadVerdict VerdictOfSpread(const ScoredPoint& p, std::string_view name, double threshold) {
   const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
-  if (!low || !high) return false;
+  if (!low || !high) return SpreadVerdict::kNone;
   const ScoreDefinition* score = FindScore(name);
-  return score->Meets(*low, threshold) != score->Meets(*high, threshold);
+  const bool low_meets = score->Meets(*low, threshold), high_meets = score->Meets(*high, threshold);
+  if (low_meets != high_meets) return SpreadVerdict::kStraddles;
+  return low_meets ? SpreadVerdict::kMet : SpreadVerdict::kFailed;
 }
 
 }  // namespace
@@ -55,13 +60,9 @@ bool CriteriaOptions::Undecided(const ScoredPoint& p) const {
   if (p.status != RunStatus::kOk || p.spread_runs == 0) return false;
   bool straddles = false;
   for (const auto& [name, threshold] : thresholds) {
-    const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
-    if (!low || !high) continue;
-    const ScoreDefinition* score = FindScore(name);
-    const bool low_meets = score->Meets(*low, threshold),
-               high_meets = score->Meets(*high, threshold);
-    if (!low_meets && !high_meets) return false;  // Fails in every run: decided.
-    straddles = straddles || low_meets != high_meets;
+    const SpreadVerdict v = VerdictOfSpread(p, name, threshold);
+    if (v == SpreadVerdict::kFailed) return false;  // Fails in every run: decided.
+    straddles = straddles || v == SpreadVerdict::kStraddles;
   }
   return straddles;
 }
@@ -69,7 +70,7 @@ bool CriteriaOptions::Undecided(const ScoredPoint& p) const {
 std::string CriteriaOptions::Straddling(const ScoredPoint& p) const {
   std::vector<std::string> each;
   for (const auto& [name, threshold] : thresholds) {
-    if (!StraddlesThreshold(p, name, threshold)) continue;
+    if (VerdictOfSpread(p, name, threshold) != SpreadVerdict::kStraddles) continue;
     const ScoreDefinition* score = FindScore(name);
     each.push_back(fmt::format("{} from {:.3g} to {:.3g} ({} {:g})", score->label,
                                *p.spread_low[name], *p.spread_high[name],

@@ -9,11 +9,12 @@
 #include "db/study_queries.h"
 #include "formats/json_reader.h"
 #include "formats/study_file.h"
+#include "records/canonical_records.h"
 
 namespace shockmap {
 namespace {
 
-// More runs than this under perturbations is a corrupt row (compare/score_spread.h makes 5).
+// More runs than this under perturbations is a corrupt row (compare/score_spread.h makes 7).
 constexpr std::int64_t kMaxSpreadRuns = 1000;
 
 }  // namespace
@@ -97,8 +98,8 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     for (const ScoreDefinition& score : Scores()) {
       const std::string name(score.name);
       p.scores.Set(name, NumberIn(row[name]));
-      p.spread_low.Set(name, NumberIn(row[name + "_spread_low"]));
-      p.spread_high.Set(name, NumberIn(row[name + "_spread_high"]));
+      p.spread_low.Set(name, NumberIn(row[name + std::string(kSpreadLowSuffix)]));
+      p.spread_high.Set(name, NumberIn(row[name + std::string(kSpreadHighSuffix)]));
     }
     if (!std::holds_alternative<std::monostate>(row["spread_runs"])) {  // NULL: none taken.
       p.spread_runs = static_cast<int>(
