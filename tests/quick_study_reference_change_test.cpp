@@ -34,8 +34,6 @@ namespace {
 constexpr double kErrMoved = 1e-10;
 constexpr double kSrfMoved = 1e-10;
 
-constexpr const char* kEarlierScores = "/tests/data/quick_results_earlier_reference.txt";
-
 struct StoredPoint {
   double r_k = 0.0, r_ftrunc = 0.0, dt_factor = 0.0;
   std::string status;

@@ -21,7 +21,7 @@ namespace shockmap {
 namespace {
 
 using testing::Count;
-using testing::kSlowStudy;
+using testing::kInterruptibleStudy;
 using testing::ReadBytes;
 using testing::RunShockmap;
 using testing::WriteText;
@@ -165,7 +165,7 @@ TEST_F(StudyFaults, TwoRunsStartedTogetherNeverComputeAPointTwice) {
 // A stopped (SIGSTOP) run still holds the database while its heartbeat is within the grace
 // period: a second run is refused, and the stopped one completes once continued.
 TEST_F(StudyFaults, AStoppedRunIsNamedAndFinishesWhenContinued) {
-  const std::string spec = Spec(kSlowStudy), db = Path("s.db");
+  const std::string spec = Spec(kInterruptibleStudy), db = Path("s.db");
   const pid_t pid = StartStudy(spec, db, Path("run.log"));
   WaitForStoredPoints(db, 2);
   kill(pid, SIGSTOP);
@@ -181,7 +181,7 @@ TEST_F(StudyFaults, AStoppedRunIsNamedAndFinishesWhenContinued) {
 // closed as interrupted, no point stays 'running', and a rerun completes the study with the
 // outcomes of an uninterrupted run.
 TEST_F(StudyFaults, SignalsEndARunCleanlyAndTheRerunCompletesIt) {
-  const std::string spec = Spec(kSlowStudy), whole = Path("whole.db");
+  const std::string spec = Spec(kInterruptibleStudy), whole = Path("whole.db");
   ASSERT_EQ(RunShockmap("study run " + spec + " --db " + whole + " --quiet").exit_code, 0);
   for (const auto& [signal, name] :
        {std::pair{SIGTERM, "SIGTERM"}, std::pair{SIGINT, "SIGINT"}, std::pair{SIGHUP, "SIGHUP"}}) {

@@ -23,7 +23,7 @@ namespace shockmap {
 namespace {
 
 using testing::Count;
-using testing::kSlowStudy;
+using testing::kInterruptibleStudy;
 using testing::ReadBytes;
 using testing::RunShockmap;
 using testing::WriteText;
@@ -57,7 +57,7 @@ pid_t StartStudy(const std::string& spec, const std::string& db) {
 
 TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
   const std::string spec = Path("slow.json");
-  WriteText(spec, kSlowStudy);
+  WriteText(spec, kInterruptibleStudy);
   const std::string whole = Path("whole.db"), killed = Path("killed.db");
   const auto uninterrupted = RunShockmap("study run " + spec + " --db " + whole + " --quiet");
   ASSERT_EQ(uninterrupted.exit_code, 0) << uninterrupted.output;
@@ -102,7 +102,7 @@ TEST_F(StudyProcess, KilledWithSigkillResumesWithNothingLostOrDuplicated) {
 // completes the study with the outcomes of an uninterrupted one.
 TEST_F(StudyProcess, KilledRepeatedlyAtRandomMomentsLosesAndDuplicatesNothing) {
   const std::string spec = Path("slow.json");
-  WriteText(spec, kSlowStudy);
+  WriteText(spec, kInterruptibleStudy);
   const std::string whole = Path("whole.db"), killed = Path("killed.db");
   const auto started = std::chrono::steady_clock::now();
   ASSERT_EQ(RunShockmap("study run " + spec + " --db " + whole + " --quiet").exit_code, 0);
