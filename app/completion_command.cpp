@@ -65,10 +65,11 @@ void Collect(CLI::App& app, const std::string& path, std::vector<CompletionNode>
   }
   for (CLI::Option* option : app.get_options({})) {
     if (!option->nonpositional()) {
-      // A study's name, unless the argument is a file (`study run STUDY`).
-      node.study_name =
-          node.study_name || (option->get_name() == "STUDY" &&
-                              option->get_type_name().find("FILE") == std::string::npos);
+      // A study's name (a positional named or typed STUDY), unless the argument is a file
+      // (`study run STUDY`).
+      const std::string type = option->get_type_name();
+      node.study_name = node.study_name || ((option->get_name() == "STUDY" || type == "STUDY") &&
+                                            type.find("FILE") == std::string::npos);
       continue;
     }
     const bool takes_value = option->get_expected_max() != 0;

@@ -51,8 +51,8 @@ void AddDiffCommand(CLI::App& app) {
       "Compare two studies of the paper's problem: the settings they differ in, their criteria "
       "at each R_k, the points whose outcome changed and those studied in one only, and (--out) "
       "both validity boundaries on one map");
-  diff->add_option("A", flags->study_a, "the first study's name")->required();
-  diff->add_option("B", flags->study_b, "the second study's name")->required();
+  diff->add_option("A", flags->study_a, "the first study's name")->required()->type_name("STUDY");
+  diff->add_option("B", flags->study_b, "the second study's name")->required()->type_name("STUDY");
   AddDatabaseFlag(diff, flags->database_path);
   diff->add_option("--db-b", flags->database_b,
                    "the database of study B, when not --db's (a study compared across databases)");

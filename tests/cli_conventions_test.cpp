@@ -176,6 +176,9 @@ TEST_F(CliCompletionValues, StudyArgumentsCompleteTheStoredStudiesOfTheDatabase)
   EXPECT_EQ(Completes("map --db " + Path("s.db") + " \"\"", 4).rfind("g --help", 0), 0u);
   EXPECT_EQ(Completes("report --db " + Path("s.db") + " g", 4), "g\n");
   EXPECT_EQ(Completes("advise --json --db " + Path("s.db") + " g", 5), "g\n");
+  // Both studies `diff` compares.
+  EXPECT_EQ(Completes("diff --db " + Path("s.db") + " g", 4), "g\n");
+  EXPECT_EQ(Completes("diff --db " + Path("s.db") + " g g", 5), "g\n");
   // The default database, as the command opens it: $SHOCKMAP_DB.
   EXPECT_EQ(Completes("criteria derive g", 3, "SHOCKMAP_DB=" + Path("s.db") + " "), "g\n");
   // A study file, not a name, follows `study run`; no database, no names.
