@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "app/flag_checks.h"
 #include "core/input_error.h"
@@ -17,6 +19,7 @@
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
 #include "formats/table_output.h"
+#include "views/setting_names.h"
 #include "views/sizing_plots.h"
 #include "views/sizing_tables.h"
 
@@ -67,9 +70,23 @@ void PrintWrapped(const std::string& text, std::size_t indent = 2) {
   fmt::print("{}\n", line);
 }
 
+// The terminal's table with its settings named; a study of one setting has it said once above
+// the table instead of in every row.
+Table ForTerminal(Table table, const EnsembleSizing& s, const Scene& scene) {
+  std::set<std::string> settings;
+  for (const GroupSizing& g : s.groups) settings.insert(g.setting_json);
+  if (settings.size() > 1) return WithSettingNames(std::move(table), s, scene);
+  fmt::print("  setting: {}\n", SettingName(s.groups.front(), scene, false));
+  const auto column = std::ranges::find(table.columns, "setting") - table.columns.begin();
+  if (static_cast<std::size_t>(column) == table.columns.size()) return table;
+  table.columns.erase(table.columns.begin() + column);
+  for (auto& row : table.rows) row.erase(row.begin() + column);
+  return table;
+}
+
 // The hottest zone of each family per state and setting, then how each setting compares and
 // what the members cost.
-void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
+void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored, const Scene& scene) {
   PrintWrapped(
       fmt::format("study {}: P{:g} of the largest force per zone, {:g} % intervals (order "
                   "statistics; bootstrap as a cross-check), settings agreeing within {:g} %",
@@ -82,7 +99,7 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
   if (s.superseded > 0) {
     fmt::print("  {} stored members the study file no longer has: not counted\n", s.superseded);
   }
-  WriteTable(HottestZoneTable(s, true), TableFormat::kTable, std::cout);
+  WriteTable(ForTerminal(HottestZoneTable(s, true), s, scene), TableFormat::kTable, std::cout);
   for (const std::string& line : SizingFootnotes(s, false)) PrintWrapped(line);
   for (const GroupSizing& g : s.groups) {
     const std::vector<double> forces = ZoneForces(stored, g, g.hottest);
@@ -91,15 +108,15 @@ void PrintTable(const EnsembleSizing& s, const StoredEnsemble& stored) {
     PrintWrapped(fmt::format(
         "{} {}: the hottest zone's interval narrows as members^{:.2f} (its mean width "
         "over 400 resamples of {} to {} members; the members in order: ^{:.2f})",
-        g.state, g.setting_json, scaling.slope, scaling.mean_width.front().first,
+        g.state, SettingName(g, scene, false), scaling.slope, scaling.mean_width.front().first,
         scaling.mean_width.back().first, WidthSlope(SizingConvergence(forces, s.options))));
   }
-  for (const std::string& line : AgreementLines(s)) PrintWrapped(line);
+  for (const std::string& line : AgreementLines(s, scene)) PrintWrapped(line);
 }
 
 // The most worn zone of each state and setting, when the members have wear volumes (every
 // zone with --format csv|json).
-void PrintWearTable(const EnsembleSizing& s) {
+void PrintWearTable(const EnsembleSizing& s, const Scene& scene) {
   const Table table = MostWornZoneTable(s);
   if (table.rows.empty()) {
     fmt::print(
@@ -113,7 +130,7 @@ void PrintWearTable(const EnsembleSizing& s) {
                            "limit, the design value",
                            s.study, 100 * s.options.quantile, 100 * s.options.confidence),
                0);
-  WriteTable(table, TableFormat::kTable, std::cout);
+  WriteTable(ForTerminal(table, s, scene), TableFormat::kTable, std::cout);
   for (const std::string& line : SizingFootnotes(s, true)) PrintWrapped(line);
 }
 
@@ -124,8 +141,9 @@ void Size(const SizingFlags& f) {
   const std::string study = ResolveEnsemble(db, f.study);
   const StoredEnsemble stored = CurrentMembers(ReadEnsemble(db, study));
   const EnsembleSizing sizing = SizeEnsemble(stored, study, f.options);
+  const Scene scene = StoredEnsembleScene(stored, f.database_path, study);
   if (f.format == "table") {
-    f.wear ? PrintWearTable(sizing) : PrintTable(sizing, stored);
+    f.wear ? PrintWearTable(sizing, scene) : PrintTable(sizing, stored, scene);
   } else {
     WriteTable(f.wear ? WearTable(sizing) : ZoneTable(sizing), *TableFormatFromString(f.format),
                std::cout);
@@ -137,11 +155,10 @@ void Size(const SizingFlags& f) {
         std::pair{"sizing_zones.csv", ZoneTable(sizing)},
         std::pair{"sizing_wear.csv", WearTable(sizing)}}) {
     AtomicFile file(std::filesystem::path(f.out) / name);
-    WriteTable(table, TableFormat::kCsv, file.Stream());
+    WriteTable(WithSettingNames(table, sizing, scene), TableFormat::kCsv, file.Stream());
     file.Commit();
   }
-  const auto pictures = DrawSizingPictures(
-      sizing, stored, StoredEnsembleScene(stored, f.database_path, study), f.out);
+  const auto pictures = DrawSizingPictures(sizing, stored, scene, f.out);
   std::ostream& note = f.format == "table" ? std::cout : std::cerr;
   note << "tables written to " << f.out
        << "/sizing_hottest.csv, sizing_zones.csv and sizing_wear.csv\n";

@@ -259,6 +259,11 @@ TEST_F(EnsembleStudyTest, EachFamilysHottestZoneIsTheHighestOfItsZones) {
       family_rows += line.find("  " + family + " ") != std::string::npos;
   }
   EXPECT_EQ(family_rows, 6) << table.output;
+  // One setting, said once by name above the table, never as its stored JSON.
+  EXPECT_NE(table.output.find("setting: the scene's own: R_ftrunc = 300, dt = 0.1 dt_sharp\n"),
+            std::string::npos)
+      << table.output;
+  EXPECT_EQ(table.output.find("{}"), std::string::npos) << table.output;
 }
 
 TEST_F(EnsembleStudyTest, BadStudyFilesAreRefusedWithExitCode2) {

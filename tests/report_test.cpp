@@ -131,10 +131,12 @@ void CheckIndex(const Place& at) {
   EXPECT_NE(dom.find(fmt::format("data-images-loaded=\"{0}/{0}\"", images)), std::string::npos)
       << dom.substr(0, dom.find("<h1>"));
   EXPECT_NE(dom.find(fmt::format("data-sortable-tables=\"{}\"", tables)), std::string::npos);
-  for (const char* id : {"outcomes", "points", "provenance"}) {
+  // The cost front's points as a table, not terminal text.
+  for (const char* id : {"outcomes", "points", "provenance", "cost-table"}) {
     EXPECT_NE(dom.find(std::string("<table class=\"sortable\" id=\"") + id), std::string::npos)
         << id;
   }
+  EXPECT_EQ(html.find("<pre>R_k ="), std::string::npos);
   for (const char* section : {"criteria", "maps", "fig4", "cost", "study-file"}) {
     EXPECT_NE(dom.find(std::string("href=\"#") + section + "\""), std::string::npos) << section;
   }
@@ -682,9 +684,13 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   EXPECT_EQ(html.find("<b>small"), std::string::npos) << "the study name went in as markup";
   EXPECT_EQ(html.find("<i>bundle"), std::string::npos) << "the description went in as markup";
   const std::string dom = Dom(at, page);
-  // Per state its map, convergence and histogram; then states and settings.
-  EXPECT_EQ(Count(html, "<img "), 2u * 3u + 2u);
-  EXPECT_NE(dom.find("data-images-loaded=\"8/8\""), std::string::npos) << dom.substr(0, 600);
+  // Per state its map, and per family (wire, pad, pin-wrapper) its convergence and histogram;
+  // then per family the states and the settings.
+  EXPECT_EQ(Count(html, "<img "), 2u * (1u + 3u * 2u) + 3u * 2u);
+  EXPECT_NE(dom.find("data-images-loaded=\"20/20\""), std::string::npos) << dom.substr(0, 600);
+  // Twelve members leave the P95's upper side unbounded: an empty cell, never "inf".
+  EXPECT_EQ(html.find(">inf<"), std::string::npos);
+  EXPECT_NE(html.find("data-sort=\"Infinity\" title=\"unbounded\"></td>"), std::string::npos);
   EXPECT_NE(dom.find("data-sortable-tables=\"4\""), std::string::npos);
   const auto columns = TableColumns(dom, "sizing-hottest-table");
   const auto p95 = std::ranges::find(columns, "p95_n") - columns.begin();
@@ -709,16 +715,20 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
   // both sides, an upward arrow where some upper side is open; states are never joined.
   for (const std::string state : {"new", "worn"}) {
     const auto dir = at.dir / "report" / "sizing";
-    const auto rows = DataBlock((dir / ("convergence_" + state + ".dat")).string(), 0);
-    const std::string script = ReadBytes((dir / ("convergence_" + state + ".gp")).string());
+    const std::string convergence = "convergence_" + state + "_pin-pin_wire";
+    const auto rows = DataBlock((dir / (convergence + ".dat")).string(), 0);
+    const std::string script = ReadBytes((dir / (convergence + ".gp")).string());
     const bool closed = std::ranges::any_of(rows, [](auto& r) { return r[4] > 0 && r[5] > 0; });
     const bool open_up = std::ranges::any_of(rows, [](auto& r) { return r[5] == 0; });
     EXPECT_EQ(script.find("both sides bounded") != std::string::npos, closed) << script;
     EXPECT_EQ(script.find("open upward") != std::string::npos, open_up) << script;
     EXPECT_EQ(script.find("set key below"), script.find("set key")) << script;
   }
-  const std::string states = ReadBytes((at.dir / "report" / "sizing" / "states.gp").string());
-  EXPECT_EQ(states.find("lines"), std::string::npos) << states;
+  for (const std::string family : {"pin-pin_wire", "duct_pad", "pin-wrapper"}) {
+    const std::string states =
+        ReadBytes((at.dir / "report" / "sizing" / ("states_" + family + ".gp")).string());
+    EXPECT_EQ(states.find("lines"), std::string::npos) << states;
+  }
   std::filesystem::remove_all(at.dir);
 }
 

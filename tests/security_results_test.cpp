@@ -70,14 +70,25 @@ TEST_F(SecurityResults, SmallEnsembleWritesItsPicturesAndReport) {
   ASSERT_EQ(RunStudy(SmallEnsemble(3)).exit_code, 0);
   const Outcome sizing = RunShockmap("sizing --db " + Path("e.db") + " --out " + Path("sizing"));
   ASSERT_EQ(sizing.exit_code, 0) << sizing.output;
-  for (const char* picture : {"convergence_new.png", "convergence_worn.png", "histogram_new.png",
-                              "map_worn.png", "states.png", "settings.png"}) {
-    EXPECT_GT(fs::file_size(Path(std::string("sizing/") + picture)), 1000u) << picture;
+  // Per state the maps; per state and zone family (the hottest wire, pad and pin-wrapper
+  // contact, never the pad alone) the convergence and the histogram; per family the states and
+  // the settings.
+  std::vector<std::string> pictures = {"map_new.png", "map_worn.png"};
+  for (const std::string family : {"pin-pin_wire", "duct_pad", "pin-wrapper"}) {
+    for (const std::string state : {"new", "worn"}) {
+      pictures.push_back("convergence_" + state + "_" + family + ".png");
+      pictures.push_back("histogram_" + state + "_" + family + ".png");
+    }
+    pictures.push_back("states_" + family + ".png");
+    pictures.push_back("settings_" + family + ".png");
+  }
+  for (const std::string& picture : pictures) {
+    EXPECT_GT(fs::file_size(Path("sizing/" + picture)), 1000u) << picture;
   }
   const Outcome report = RunShockmap("report --db " + Path("e.db") + " --out " + Path("report"));
   ASSERT_EQ(report.exit_code, 0) << report.output;
   EXPECT_TRUE(fs::exists(Path("report/index.html")));
-  EXPECT_TRUE(fs::exists(Path("report/sizing/convergence_new.png")));
+  EXPECT_TRUE(fs::exists(Path("report/sizing/convergence_new_pin-pin_wire.png")));
 }
 
 // Class 8: "refined": 100.0 names the setting 100 (as the study file accepted it).
@@ -85,12 +96,14 @@ TEST_F(SecurityResults, RefinedSettingIsMatchedByValue) {
   ASSERT_EQ(RunStudy(SmallEnsemble(3)).exit_code, 0);
   const Outcome o = RunShockmap("sizing --db " + Path("e.db") + " --out " + Path("sizing"));
   ASSERT_EQ(o.exit_code, 0) << o.output;
-  // The refined setting's rows say so in their "agrees" column.
-  EXPECT_TRUE(
-      std::regex_search(o.output, std::regex("\\{\"solver.r_ftrunc\":100\\} [^\n]* refined *\n")))
+  // The refined setting's rows, the setting named by its value, say so in their "agrees"
+  // column.
+  EXPECT_TRUE(std::regex_search(o.output, std::regex("solver\\.r_ftrunc = 100 [^\n]* refined *\n")))
       << o.output;
-  EXPECT_FALSE(Has(o, "{\"solver.r_ftrunc\":100} against the refined setting")) << o.output;
-  EXPECT_GT(fs::file_size(Path("sizing/settings.png")), 1000u);
+  EXPECT_TRUE(Has(o, "solver.r_ftrunc = 30 against the refined setting")) << o.output;
+  EXPECT_FALSE(Has(o, "solver.r_ftrunc = 100 against the refined setting")) << o.output;
+  EXPECT_FALSE(Has(o, "{\"solver")) << o.output;
+  EXPECT_GT(fs::file_size(Path("sizing/settings_duct_pad.png")), 1000u);
 }
 
 // Two states whose names give the same picture files are refused, naming both.

@@ -85,26 +85,51 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
   return tables;
 }
 
+std::string CostHeadline(const CostTable& t) {
+  std::string s = fmt::format("R_k = {:.4g}", t.r_k);
+  if (t.asked_r_k && std::abs(*t.asked_r_k - t.r_k) > 1e-9 * t.r_k) {
+    s += fmt::format(" (the studied R_k nearest to --rk {:g})", *t.asked_r_k);
+  }
+  const auto passing = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.passes; });
+  const auto fragile = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.fragile; });
+  s += fmt::format(": {} scored, {} within the thresholds",
+                   Counted(static_cast<long long>(t.rows.size()), "point"), passing);
+  s += fragile == 0 ? " (the front is built from those)"
+                    : fmt::format(
+                          ", {} of them only by error cancellation (passes \"fragile\": a "
+                          "finer dt at the same R_ftrunc fails; left off the front)",
+                          fragile);
+  if (t.implicit_over_explicit) {
+    s += fmt::format("; implicit / explicit CPU time at equal accuracy: {:.3g} (median of {})",
+                     *t.implicit_over_explicit, t.ratio_pairs);
+  }
+  return s;
+}
+
+namespace {
+
+std::string Passes(const CostRow& r) { return r.fragile ? "fragile" : r.passes ? "yes" : "no"; }
+
+}  // namespace
+
+Table CostRowsTable(const CostTable& t) {
+  Table table;
+  table.columns = {"scheme", "r_ftrunc", "dt_over_dt_sharp", "cpu_s", "steps_x_modes",
+                   "err",    "srf",      "passes",           "pareto"};
+  for (const auto& r : t.rows) {
+    const auto srf = r.point.scores["srf"];
+    table.rows.push_back({r.scheme, r.point.r_ftrunc, r.point.DtRatio(), r.point.cpu_s,
+                          static_cast<double>(r.point.steps) * r.point.n_modes,
+                          *r.point.scores["err"], srf ? TableCell(*srf) : TableCell(), Passes(r),
+                          std::string(r.pareto ? "*" : "")});
+  }
+  return table;
+}
+
 std::string CostSummary(const std::vector<CostTable>& tables) {
   std::string s;
   for (const auto& t : tables) {
-    s += fmt::format("R_k = {:.4g}", t.r_k);
-    if (t.asked_r_k && std::abs(*t.asked_r_k - t.r_k) > 1e-9 * t.r_k) {
-      s += fmt::format(" (the studied R_k nearest to --rk {:g})", *t.asked_r_k);
-    }
-    const auto passing = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.passes; });
-    const auto fragile = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.fragile; });
-    s += fmt::format(": {} scored, {} within the thresholds",
-                     Counted(static_cast<long long>(t.rows.size()), "point"), passing);
-    s += fragile == 0 ? " (the front is built from those)"
-                      : fmt::format(
-                            ", {} of them only by error cancellation (passes \"fragile\": a "
-                            "finer dt at the same R_ftrunc fails; left off the front)",
-                            fragile);
-    if (t.implicit_over_explicit) {
-      s += fmt::format("; implicit / explicit CPU time at equal accuracy: {:.3g} (median of {})",
-                       *t.implicit_over_explicit, t.ratio_pairs);
-    }
+    s += CostHeadline(t);
     s += fmt::format("\n  {:<15} {:>9} {:>11} {:>11} {:>13} {:>8} {:>7} {:>7} {}\n", "scheme",
                      "R_ftrunc", "dt/dt_sharp", "CPU (s)", "steps x modes", "Err", "SRf", "passes",
                      "Pareto");
@@ -113,10 +138,7 @@ std::string CostSummary(const std::vector<CostTable>& tables) {
                        r.scheme, r.point.r_ftrunc, r.point.DtRatio(), r.point.cpu_s,
                        static_cast<double>(r.point.steps) * r.point.n_modes, *r.point.scores["err"],
                        r.point.scores["srf"] ? fmt::format("{:.4f}", *r.point.scores["srf"]) : "-",
-                       r.fragile  ? "fragile"
-                       : r.passes ? "yes"
-                                  : "no",
-                       r.pareto ? "*" : "");
+                       Passes(r), r.pareto ? "*" : "");
     }
   }
   return s;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "db/read_only_query.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
@@ -42,6 +43,13 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
                                        const std::vector<ScoredPoint>& implicit_points,
                                        std::optional<double> r_k,
                                        const CriteriaOptions& thresholds = {});
+// The sentence heading a table: its R_k (and the --rk asked), how many points pass, those that
+// pass only by error cancellation, the implicit / explicit ratio.
+std::string CostHeadline(const CostTable& table);
+// The table's rows as columns, for the report's sortable table: scheme, r_ftrunc,
+// dt_over_dt_sharp, cpu_s, steps_x_modes, err, srf, passes (yes, no, fragile), pareto ("*").
+Table CostRowsTable(const CostTable& table);
+// Every table as terminal text: its headline, then its rows.
 std::string CostSummary(const std::vector<CostTable>& tables);
 // Err against CPU time of one table, the Pareto front joined. Throws InputError when empty.
 void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file);

@@ -4,62 +4,17 @@
 
 #include <fmt/format.h>
 
-#include <map>
 #include <nlohmann/json.hpp>
-#include <set>
 
 #include "db/report_queries.h"
 #include "views/html_report.h"
 #include "views/html_text.h"
+#include "views/setting_names.h"
 #include "views/sizing_plots.h"
 #include "views/sizing_tables.h"
 
 namespace shockmap {
 namespace {
-
-// A setting as an engineer names it: the scene's own solver settings when the study has one
-// setting ("the scene's own: R_ftrunc = 300, dt = 0.1 dt_sharp"), else its swept values, the
-// refined one marked.
-std::string SettingName(const GroupSizing& g, const Scene& scene, bool several) {
-  const auto setting = nlohmann::json::parse(g.setting_json, nullptr, false);
-  std::string name;
-  if (setting.is_object()) {
-    for (const auto& [path, value] : setting.items()) {
-      name += fmt::format("{}{} = {}", name.empty() ? "" : ", ", path, value.dump());
-    }
-  }
-  if (name.empty()) {
-    const SceneSolver& solver = scene.solver;
-    const std::string truncation = solver.f_trunc_hz
-                                       ? fmt::format("f_trunc = {:g} Hz", *solver.f_trunc_hz)
-                                       : fmt::format("R_ftrunc = {:g}", solver.r_ftrunc);
-    const std::string dt =
-        solver.dt.dt_s ? fmt::format("dt = {:g} s", *solver.dt.dt_s)
-                       : fmt::format("dt = {:g} dt_{}", solver.dt.factor, ToString(solver.dt.rule));
-    name = "the scene's own: " + truncation + ", " + dt;
-  }
-  return several && g.refined ? name + " (refined)" : name;
-}
-
-// `table` with its "setting" cells (the stored setting, " (refined)" after the refined one)
-// named by SettingName.
-Table WithSettingNames(Table table, const EnsembleSizing& s, const Scene& scene) {
-  const auto column = std::ranges::find(table.columns, "setting") - table.columns.begin();
-  if (static_cast<std::size_t>(column) == table.columns.size()) return table;
-  std::set<std::string> settings;
-  for (const GroupSizing& g : s.groups) settings.insert(g.setting_json);
-  std::map<std::string, std::string> names;
-  for (const GroupSizing& g : s.groups) {
-    names[g.setting_json + (g.refined ? " (refined)" : "")] =
-        SettingName(g, scene, settings.size() > 1);
-  }
-  for (auto& row : table.rows) {
-    if (const auto name = names.find(CellText(row[column])); name != names.end()) {
-      row[column] = name->second;
-    }
-  }
-  return table;
-}
 
 // What the study is and what the tables count, from the stored study file.
 std::string About(const EnsembleSizing& s, const std::string& spec_json) {
@@ -90,8 +45,8 @@ std::string About(const EnsembleSizing& s, const std::string& spec_json) {
   return html;
 }
 
-std::string Agreement(const EnsembleSizing& s) {
-  const std::vector<std::string> lines = AgreementLines(s);
+std::string Agreement(const EnsembleSizing& s, const Scene& scene) {
+  const std::vector<std::string> lines = AgreementLines(s, scene);
   if (lines.empty()) return "<p>One numerical setting: nothing to compare.</p>\n";
   std::string html = fmt::format(
       "<p>A setting agrees with the refined one at a zone where their {:g} % intervals of the "
@@ -182,7 +137,7 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
       {"sizing-zones", "Sizing statistics per zone",
        SortableTable(WithSettingNames(ZoneTable(sizing), sizing, scene), "sizing-zones-table",
                      "Every zone per clearance state and setting")},
-      {"settings-agreement", "Settings against the refined one", Agreement(sizing)},
+      {"settings-agreement", "Settings against the refined one", Agreement(sizing, scene)},
       {"impacts", "Impact statistics", Impacts(sizing, scene)},
       {"wear-sizing", "Wear sizing", Wear(sizing, scene)},
       {"sizing-pictures", "Sizing pictures", Pictures(ctx, sizing, stored, scene)},

@@ -90,9 +90,14 @@ std::string CostSection(const ReportContext& ctx, const std::vector<ScoredPoint>
   if (tables.empty()) return "<p>No scored point: no cost front.</p>\n";
   const auto cost_png = ctx.dir / "cost.png";
   DrawCost(ctx.study, tables.front(), cost_png);
-  return Figure(cost_png, fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k),
-                ctx.dir) +
-         Preformatted(CostSummary(tables));
+  std::string html = Figure(
+      cost_png, fmt::format("Err against wall time at R_k = {:.4g}", tables.front().r_k), ctx.dir);
+  for (const CostTable& t : tables) {
+    html += "<p>" + HtmlEscaped(CostHeadline(t)) + ".</p>\n" +
+            SortableTable(CostRowsTable(t), "cost-table",
+                          fmt::format("Every scored point at R_k = {:.4g}, fastest first", t.r_k));
+  }
+  return html;
 }
 
 // The criteria per R_k as a table, then the fit and the paper's rules, each line its label in

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -78,6 +79,12 @@ bool IsNumberColumn(const Table& r, std::size_t column) {
 
 std::string Cell(const TableCell& cell) {
   if (const auto* d = std::get_if<double>(&cell)) {
+    // An infinite bound (an interval's side too few members bound) is shown empty and sorts
+    // past every number.
+    if (std::isinf(*d)) {
+      return fmt::format("<td data-sort=\"{}Infinity\" title=\"unbounded\"></td>",
+                         *d < 0 ? "-" : "");
+    }
     // The shortest text that reads back as the stored double, to sort and to copy.
     const std::string full = fmt::format("{}", *d);
     return fmt::format("<td data-sort=\"{0}\" title=\"{0}\">{1}</td>", full, CellText(cell));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -89,10 +90,14 @@ std::string MemberTics(const std::vector<ConvergencePoint>& points) {
   return "set xtics (" + tics + ")\n";
 }
 
-fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
+// A family's part of a picture's file name: "pin-pin_wire", "duct_pad", "pin-wrapper", "other".
+std::string FamilyFilePart(ZoneFamily family) { return FileNamePart(FamilyName(family)); }
+
+fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g, const FamilyHottest& f,
                      const std::vector<double>& forces, const fs::path& folder) {
   const auto points = SizingConvergence(forces, s.options);
-  const fs::path image = folder / ("convergence_" + FileNamePart(g.state) + ".png");
+  const fs::path image = folder / fmt::format("convergence_{}_{}.png", FileNamePart(g.state),
+                                              FamilyFilePart(f.family));
   const fs::path data = fs::path(image).replace_extension(".dat");
   std::string text = "# members estimate lower upper lower_bounded upper_bounded\n";
   ForceAxis axis;
@@ -104,9 +109,10 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g,
     axis.Add(p.sizing), kinds.Add(p.sizing);
   }
   WriteFileAtomically(data, text);
-  const std::string title = fmt::format("{} ({}): P{} at {}, {} % interval", s.study, g.state,
-                                        Percent(s.options.quantile), g.zones[g.hottest].name,
-                                        Percent(s.options.confidence));
+  const std::string title =
+      fmt::format("{} ({}): P{} at {}, the hottest {}, {} % interval", s.study, g.state,
+                  Percent(s.options.quantile), g.zones[f.zone].name, FamilyName(f.family),
+                  Percent(s.options.confidence));
   const std::string band =
       kinds.closed ? "using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' "
                      "fs solid 0.5 title 'interval (both sides bounded)', \\\n     '' "
@@ -128,10 +134,11 @@ plot {data} {band}using 1:2 with linespoints pt 7 lc rgb '#08519c' title 'estima
           fmt::arg("band", band), fmt::arg("open", OpenIntervalClauses(kinds, axis))));
 }
 
-fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vector<double>& forces,
-                   const fs::path& folder) {
-  const ZoneSizing& z = g.zones[g.hottest];
-  const fs::path image = folder / ("histogram_" + FileNamePart(g.state) + ".png");
+fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const FamilyHottest& f,
+                   const std::vector<double>& forces, const fs::path& folder) {
+  const ZoneSizing& z = g.zones[f.zone];
+  const fs::path image =
+      folder / fmt::format("histogram_{}_{}.png", FileNamePart(g.state), FamilyFilePart(f.family));
   const fs::path data = fs::path(image).replace_extension(".dat");
   const auto [lo, hi] = std::minmax_element(forces.begin(), forces.end());
   const int bins = std::clamp(static_cast<int>(std::sqrt(forces.size())), 5, 40);
@@ -141,8 +148,9 @@ fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const std::vec
   std::string text = "# bin_centre_n members\n";
   for (int i = 0; i < bins; ++i) text += fmt::format("{} {}\n", *lo + (i + 0.5) * width, counts[i]);
   WriteFileAtomically(data, text);
-  const std::string title = fmt::format("{} ({}): largest force at {} over {} members", s.study,
-                                        g.state, z.name, forces.size());
+  const std::string title =
+      fmt::format("{} ({}): largest force at {}, the hottest {}, over {} members", s.study, g.state,
+                  z.name, FamilyName(f.family), forces.size());
   std::string marks = fmt::format(
       "set arrow from {0},graph 0 to {0},graph 1 nohead lw 2 lc rgb '#08519c'\n"
       "set label {1} at {0},graph 0.95 left offset 0.5,0 tc rgb '#08519c'\n",
@@ -181,11 +189,16 @@ std::string Tics(const std::vector<std::string>& labels) {
   return "set xtics (" + tics + ")\n";
 }
 
-// The hottest zone's sizing force (and, when streamed, its wear work rate) against the state:
-// categories, drawn as points, never joined.
-fs::path States(const EnsembleSizing& s, const fs::path& folder) {
+// The index in g.zones of `family`'s hottest zone. Precondition: g has the family.
+int HottestOf(const GroupSizing& g, ZoneFamily family) {
+  return std::ranges::find(g.families, family, &FamilyHottest::family)->zone;
+}
+
+// The family's hottest zone's sizing force (and, when streamed, its wear work rate) against the
+// state: categories, drawn as points, never joined.
+fs::path States(const EnsembleSizing& s, ZoneFamily family, const fs::path& folder) {
   const auto refined = RefinedGroups(s);
-  const fs::path image = folder / "states.png";
+  const fs::path image = folder / ("states_" + FamilyFilePart(family) + ".png");
   const fs::path data = fs::path(image).replace_extension(".dat");
   std::string text =
       "# state_index sizing_n lower_n upper_n lower_bounded upper_bounded wear_work_rate_w\n";
@@ -194,7 +207,7 @@ fs::path States(const EnsembleSizing& s, const fs::path& folder) {
   ForceAxis axis;
   IntervalKinds kinds;
   for (std::size_t i = 0; i < refined.size(); ++i) {
-    const ZoneSizing& z = refined[i]->zones[refined[i]->hottest];
+    const ZoneSizing& z = refined[i]->zones[HottestOf(*refined[i], family)];
     labels.push_back(refined[i]->state + " (" + z.name + ")");
     const auto w = z.impacts ? z.impacts->wear_work_rate_w : std::nullopt;
     wear = wear || w.has_value();
@@ -205,8 +218,8 @@ fs::path States(const EnsembleSizing& s, const fs::path& folder) {
   }
   WriteFileAtomically(data, text);
   const std::string title =
-      fmt::format("{}: P{} of the hottest zone's largest force per clearance state", s.study,
-                  Percent(s.options.quantile));
+      fmt::format("{}: P{} of the hottest {}'s largest force per clearance state", s.study,
+                  Percent(s.options.quantile), FamilyName(family));
   std::string plot = fmt::format(
       "plot {} using 1:2 with points pt 7 ps 1.5 lc rgb '#08519c' title 'P{} (estimate)'",
       GnuplotFileName(data), Percent(s.options.quantile));
@@ -219,7 +232,8 @@ fs::path States(const EnsembleSizing& s, const fs::path& folder) {
   plot += OpenIntervalClauses(kinds, axis);
   if (wear) {
     plot +=
-        ", \\\n     '' using ($1 + 0.1):7 axes x1y2 with points pt 5 ps 1.3 lc rgb '#31a354' title 'mean "
+        ", \\\n     '' using ($1 + 0.1):7 axes x1y2 with points pt 5 ps 1.3 lc rgb '#31a354' title "
+        "'mean "
         "wear work rate (W, right axis)'";
   }
   return Draw(
@@ -246,9 +260,9 @@ std::optional<double> SettingValue(const std::string& setting_json) {
   return s.begin()->get<double>();
 }
 
-// Per state: the sizing force of its hottest zone against the setting.
-fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
-  const fs::path image = folder / "settings.png";
+// Per state: the sizing force of the family's hottest zone against the setting.
+fs::path Settings(const EnsembleSizing& s, ZoneFamily family, const fs::path& folder) {
+  const fs::path image = folder / ("settings_" + FamilyFilePart(family) + ".png");
   const fs::path data = fs::path(image).replace_extension(".dat");
   bool numeric = true;
   std::vector<std::string> settings;
@@ -260,10 +274,11 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
   std::string text, plot;
   int block = 0;
   for (const GroupSizing* r : RefinedGroups(s)) {
+    const int zone = HottestOf(*r, family);
     text += "# " + r->state + ": x sizing_n lower_n upper_n\n";
     for (const GroupSizing& g : s.groups) {
       if (g.state != r->state) continue;
-      const ZoneSizing& z = g.zones[r->hottest];
+      const ZoneSizing& z = g.zones[zone];
       const double x =
           numeric
               ? *SettingValue(g.setting_json)
@@ -274,7 +289,7 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
     text += "\n\n";
     plot += fmt::format("{}{} index {} using 1:2:3:4 with yerrorlines pt 7 lw 2 title {}",
                         block ? ", " : "plot ", GnuplotFileName(data), block,
-                        GnuplotQuoted(r->state + " (" + r->zones[r->hottest].name + ")"));
+                        GnuplotQuoted(r->state + " (" + r->zones[zone].name + ")"));
     ++block;
   }
   WriteFileAtomically(data, text);
@@ -283,8 +298,8 @@ fs::path Settings(const EnsembleSizing& s, const fs::path& folder) {
                     GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
               : "set xlabel 'setting'\n" + Tics(settings);
   const std::string title =
-      fmt::format("{}: P{} of the hottest zone's largest force per setting ({} % intervals)",
-                  s.study, Percent(s.options.quantile), Percent(s.options.confidence));
+      fmt::format("{}: P{} of the hottest {}'s largest force per setting ({} % intervals)", s.study,
+                  Percent(s.options.quantile), FamilyName(family), Percent(s.options.confidence));
   return Draw(image, fmt::format("set title {} noenhanced\nset ylabel 'force (N)'\nset offsets "
                                  "graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset key top "
                                  "right\n{}{}\n",
@@ -301,6 +316,44 @@ std::optional<std::vector<double>> WearSizingValues(const GroupSizing& g) {
   return values;
 }
 
+// A state's pictures at its refined setting: the maps, then each family's convergence and
+// histogram.
+std::vector<SizingPicture> StatePictures(const EnsembleSizing& s, const StoredEnsemble& stored,
+                                         const Scene& scene, const GroupSizing& g,
+                                         const fs::path& folder) {
+  const std::string q = "P" + Percent(s.options.quantile);
+  std::vector<double> sizing;
+  for (const ZoneSizing& z : g.zones) sizing.push_back(z.sizing.estimate);
+  const fs::path map = folder / ("map_" + FileNamePart(g.state) + ".png");
+  DrawContactForceMap(scene, sizing, map,
+                      {fmt::format("{} of {} members, {}", q, g.members, g.state), "N"});
+  std::vector<SizingPicture> pictures = {
+      {map, fmt::format("{}: every zone coloured by its {} of the largest force (paper Fig. 5b)",
+                        g.state, q)}};
+  if (const auto wear = WearSizingValues(g)) {
+    const fs::path wear_map = folder / ("wear_map_" + FileNamePart(g.state) + ".png");
+    DrawContactForceMap(
+        scene, *wear, wear_map,
+        {fmt::format("{} wear volume of {} members, {}", q, g.members, g.state), "m^3"});
+    pictures.push_back({wear_map, fmt::format("{}: every zone coloured by the {} of its wear "
+                                              "volume over the scene's wear life",
+                                              g.state, q)});
+  }
+  for (const FamilyHottest& f : g.families) {
+    const std::string zone = g.zones[f.zone].name, family = FamilyName(f.family);
+    const std::vector<double> forces = ZoneForces(stored, g, f.zone);
+    pictures.push_back({Convergence(s, g, f, forces, folder),
+                        fmt::format("{}: {} of the hottest {} ({}) against the number of "
+                                    "members, with its {} % interval",
+                                    g.state, q, family, zone, Percent(s.options.confidence))});
+    pictures.push_back({Histogram(s, g, f, forces, folder),
+                        fmt::format("{}: histogram of the hottest {}'s ({}) largest force over "
+                                    "the members",
+                                    g.state, family, zone)});
+  }
+  return pictures;
+}
+
 }  // namespace
 
 std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
@@ -308,45 +361,24 @@ std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const Sto
   CreateOutputDirectory(folder);
   const std::string q = "P" + Percent(s.options.quantile);
   std::vector<SizingPicture> pictures;
-  for (const GroupSizing* g : RefinedGroups(s)) {
-    std::vector<double> sizing;
-    for (const ZoneSizing& z : g->zones) sizing.push_back(z.sizing.estimate);
-    const fs::path map = folder / ("map_" + FileNamePart(g->state) + ".png");
-    DrawContactForceMap(scene, sizing, map,
-                        {fmt::format("{} of {} members, {}", q, g->members, g->state), "N"});
-    pictures.push_back({map, fmt::format("{}: every zone coloured by its {} of the largest force "
-                                         "(paper Fig. 5b)",
-                                         g->state, q)});
-    if (const auto wear = WearSizingValues(*g)) {
-      const fs::path wear_map = folder / ("wear_map_" + FileNamePart(g->state) + ".png");
-      DrawContactForceMap(
-          scene, *wear, wear_map,
-          {fmt::format("{} wear volume of {} members, {}", q, g->members, g->state), "m^3"});
-      pictures.push_back({wear_map, fmt::format("{}: every zone coloured by the {} of its wear "
-                                                "volume over the scene's wear life",
-                                                g->state, q)});
+  const auto refined = RefinedGroups(s);
+  for (const GroupSizing* g : refined) {
+    std::ranges::move(StatePictures(s, stored, scene, *g, folder), std::back_inserter(pictures));
+  }
+  if (refined.empty()) return pictures;
+  for (const FamilyHottest& f : refined.front()->families) {
+    const std::string family = FamilyName(f.family);
+    if (refined.size() > 1) {
+      pictures.push_back({States(s, f.family, folder),
+                          fmt::format("{} of the hottest {} (and its wear work rate, where "
+                                      "streamed) per clearance state",
+                                      q, family)});
     }
-    const std::string hottest = g->zones[g->hottest].name;
-    const std::vector<double> forces = ZoneForces(stored, *g, g->hottest);
-    pictures.push_back({Convergence(s, *g, forces, folder),
-                        fmt::format("{}: {} of the hottest zone ({}) against the number of "
-                                    "members, with its {} % interval",
-                                    g->state, q, hottest, Percent(s.options.confidence))});
-    pictures.push_back({Histogram(s, *g, forces, folder),
-                        fmt::format("{}: histogram of the hottest zone's ({}) largest force over "
-                                    "the members",
-                                    g->state, hottest)});
-  }
-  if (RefinedGroups(s).size() > 1) {
-    pictures.push_back(
-        {States(s, folder), fmt::format("{} of the hottest zone (and its wear work rate, where "
-                                        "streamed) per clearance state",
-                                        q)});
-  }
-  // Each state's settings are drawn about its refined group's hottest zone.
-  if (!RefinedGroups(s).empty() && s.groups.size() > RefinedGroups(s).size()) {
-    pictures.push_back(
-        {Settings(s, folder), fmt::format("{} of the hottest zone per numerical setting", q)});
+    // Each state's settings are drawn about its refined group's hottest zone of the family.
+    if (s.groups.size() > refined.size()) {
+      pictures.push_back({Settings(s, f.family, folder),
+                          fmt::format("{} of the hottest {} per numerical setting", q, family)});
+    }
   }
   return pictures;
 }

@@ -1,10 +1,11 @@
 #pragma once
 // The pictures of `shockmap sizing` (docs/ensembles.md, "Pictures"), drawn with gnuplot: per
 // clearance state at its refined setting, the paper's Fig. 5b map coloured by the sizing value
-// (and, where the members have wear volumes, the same map of the wear volume's), the convergence of
-// the hottest zone's estimate with the number of members (its interval as a band) and the histogram
-// of the hottest zone's maximum; across states, the hottest zone's sizing force and wear work rate;
-// across settings, its sizing force against the setting.
+// (and, where the members have wear volumes, the same map of the wear volume's); per state and
+// zone family (the hottest wire, pad, pin-wrapper contact: formats/zone_family.h), the
+// convergence of its hottest zone's estimate with the number of members (its interval as a band)
+// and the histogram of that zone's maximum; per family, across states, the sizing force and wear
+// work rate, and across settings, the sizing force against the setting.
 
 #include <filesystem>
 #include <string>

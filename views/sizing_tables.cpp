@@ -8,6 +8,7 @@
 
 #include "formats/zone_family.h"
 #include "statistics/wilks.h"
+#include "views/setting_names.h"
 
 namespace shockmap {
 namespace {
@@ -20,6 +21,11 @@ std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 // `query` prints infinities), not a missing value.
 TableCell Bound(double value, bool bounded, double unbounded) {
   return TableCell(bounded ? value : unbounded);
+}
+
+// Wilks' order, none (an empty cell) while the members are too few for order 1.
+TableCell WilksOrder(int order) {
+  return order > 0 ? TableCell(static_cast<std::int64_t>(order)) : TableCell(std::monostate{});
 }
 
 TableCell Optional(const std::optional<double>& v) {
@@ -93,7 +99,7 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
   interval(z.p99);
   const std::string q = Percent(s.options.quantile);
   if (q != "50" && q != "95" && q != "99") interval(z.sizing);
-  row.push_back(static_cast<std::int64_t>(z.wilks_order));
+  row.push_back(WilksOrder(z.wilks_order));
   row.push_back(z.wilks ? TableCell(z.wilks->value) : TableCell(std::monostate{}));
   row.emplace_back(std::in_place_type<std::int64_t>,
                    WilksMembersNeeded(s.options.quantile, s.options.confidence, 1));
@@ -184,7 +190,7 @@ std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool c
                                 static_cast<std::int64_t>(z.members), z.name};
   row.insert(row.end(), {w.estimate, Bound(w.lower, w.lower_bounded, -kInfinity),
                          Bound(w.upper, w.upper_bounded, kInfinity)});
-  row.push_back(static_cast<std::int64_t>(z.wear->wilks_order));
+  row.push_back(WilksOrder(z.wear->wilks_order));
   row.push_back(z.wear->wilks ? TableCell(z.wear->wilks->value) : TableCell(std::monostate{}));
   row.insert(row.end(), {z.wear->mean_m3, z.sizing.estimate});
   return row;
@@ -254,18 +260,18 @@ std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
   return lines;
 }
 
-std::vector<std::string> AgreementLines(const EnsembleSizing& s) {
+std::vector<std::string> AgreementLines(const EnsembleSizing& s, const Scene& scene) {
   std::vector<std::string> lines;
   for (const GroupSizing& g : s.groups) {
     if (g.refined) continue;
     const std::size_t undecided = g.zones.size() - g.zones_agreeing - g.zones_disagreeing;
-    lines.push_back(
-        fmt::format("{} {} against the refined setting: {} zones agree, {} do not, {} undecided "
-                    "(an unbounded interval); hottest zone {}",
-                    g.state, g.setting_json, g.zones_agreeing, g.zones_disagreeing, undecided,
-                    !g.hottest_agrees   ? "undecided"
-                    : *g.hottest_agrees ? "agrees"
-                                        : "does not agree"));
+    lines.push_back(fmt::format(
+        "{} {} against the refined setting: {} zones agree, {} do not, {} undecided "
+        "(an unbounded interval); hottest zone {}",
+        g.state, SettingName(g, scene, false), g.zones_agreeing, g.zones_disagreeing, undecided,
+        !g.hottest_agrees   ? "undecided"
+        : *g.hottest_agrees ? "agrees"
+                            : "does not agree"));
   }
   return lines;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/scene.h"
 #include "db/read_only_query.h"
 #include "views/ensemble_sizing.h"
 
@@ -30,8 +31,9 @@ Table MostWornZoneTable(const EnsembleSizing& sizing);
 // where the columns left out are.
 std::vector<std::string> SizingFootnotes(const EnsembleSizing& sizing, bool wear);
 
-// One line per setting other than the refined one, per state: how many zones agree with the
-// refined setting, how many do not, how many are undecided, and what the hottest zone does.
-std::vector<std::string> AgreementLines(const EnsembleSizing& sizing);
+// One line per setting other than the refined one (named by views/setting_names.h), per state:
+// how many zones agree with the refined setting, how many do not, how many are undecided, and
+// what the hottest zone does.
+std::vector<std::string> AgreementLines(const EnsembleSizing& sizing, const Scene& scene);
 
 }  // namespace shockmap

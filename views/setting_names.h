@@ -1,0 +1,24 @@
+#pragma once
+// An ensemble's numerical settings as an engineer names them (docs/ensembles.md, "Sizing"): the
+// scene's own solver settings when the study has one setting ("the scene's own: R_ftrunc = 300,
+// dt = 0.1 dt_sharp"), else the swept values ("solver.r_ftrunc = 1000"), the refined one
+// marked " (refined)". The terminal's tables, the CSV files of `sizing --out` and the report
+// name settings so; `sizing --format csv|json` keeps the stored setting JSON for scripts.
+
+#include <string>
+
+#include "core/scene.h"
+#include "db/read_only_query.h"
+#include "views/ensemble_sizing.h"
+
+namespace shockmap {
+
+// `g`'s setting; `several`: the study has more than one setting (the refined one is marked).
+std::string SettingName(const GroupSizing& g, const Scene& scene, bool several);
+
+// `table` with its "setting" cells (the stored setting JSON, " (refined)" after the refined
+// one, as the sizing tables write them, or without it on the terminal's table) replaced by
+// SettingName; a table without a "setting" column unchanged.
+Table WithSettingNames(Table table, const EnsembleSizing& sizing, const Scene& scene);
+
+}  // namespace shockmap
