@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "app/check_advice_command.h"
 #include "app/compare_command.h"
 #include "app/completion_command.h"
 #include "app/criteria_command.h"
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
   shockmap::AddSimulateCommand(app);
   shockmap::AddSizingCommand(app);
   shockmap::AddViewCommands(app);
+  shockmap::AddCheckAdviceCommand(app);
   shockmap::AddReportCommand(app);
   shockmap::AddExportCommand(app);
   shockmap::AddCompletionCommand(app);

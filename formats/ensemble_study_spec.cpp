@@ -186,25 +186,39 @@ std::vector<ClearanceState> ParseStates(JsonObjectReader& r, const Json& scene,
   return states;
 }
 
+// "scene_set": {"path": value, ...}: numbers or true/false written into the scene before
+// anything else reads it, so that keys the scene leaves at their default (a bundle pin's own
+// "r_ftrunc") can then be set by "settings". Each path's parent object must be in the scene.
+void ApplySceneSet(JsonObjectReader& r, Json& scene) {
+  const Json* v = r.Get("scene_set");
+  if (v == nullptr) return;
+  if (!v->is_object())
+    r.Fail("scene_set", "expected {\"parameter.path\": value, ...}, got " + Shown(*v));
+  for (const auto& [path, value] : v->items()) {
+    const std::string where = r.PathOf("scene_set") + "." + path;
+    const auto pointer = ParameterPointer(path);
+    if (!pointer) FailAt(r.File(), where, "is not a parameter path (keys joined by dots)");
+    if (!value.is_number() && !value.is_boolean())
+      FailAt(r.File(), where, "expected a number or true/false, got " + Shown(value));
+    if (!scene.contains(pointer->parent_pointer()) ||
+        !scene.at(pointer->parent_pointer()).is_object())
+      FailAt(r.File(), where, "the scene has no object to hold it");
+    scene[*pointer] = value;
+  }
+}
+
 using SettingAxes = std::vector<std::pair<std::string, std::vector<Json>>>;
 
-SettingAxes ParseSettingAxes(JsonObjectReader& r, const Json& scene, const std::string& file) {
+// "settings": {"path": [values...], ...}, the axes whose full product is run.
+SettingAxes ParseSettingAxes(const Json& v, const Json& scene, const std::string& file,
+                             const std::string& where) {
   SettingAxes axes;
-  const Json* v = r.Get("settings");
-  if (v == nullptr) return axes;
-  if (!v->is_object() || v->empty()) {
-    r.Fail("settings",
-           "expected {\"parameter.path\": [values...], ...}, e.g. "
-           "{\"solver.r_ftrunc\": [30, 100, 300, 1000]}, got " +
-               Shown(*v));
-  }
-  for (const auto& [path, values] : v->items()) {
-    const std::string where = r.PathOf("settings") + "." + path;
+  for (const auto& [path, values] : v.items()) {
+    const std::string at = where + "." + path;
     if (!values.is_array() || values.empty())
-      FailAt(file, where,
-             "expected a non-empty list of numbers or true/false, got " + Shown(values));
+      FailAt(file, at, "expected a non-empty list of numbers or true/false, got " + Shown(values));
     for (std::size_t i = 0; i < values.size(); ++i) {
-      SameTypeParameter(scene, path, values[i], file, where + "[" + std::to_string(i) + "]");
+      SameTypeParameter(scene, path, values[i], file, at + "[" + std::to_string(i) + "]");
     }
     axes.emplace_back(path, std::vector<Json>(values.begin(), values.end()));
   }
@@ -227,6 +241,48 @@ std::vector<Json> SettingProduct(const SettingAxes& axes) {
   std::sort(settings.begin(), settings.end());
   settings.erase(std::unique(settings.begin(), settings.end()), settings.end());
   return settings;
+}
+
+// "settings": [{"path": value, ...}, ...], settings listed one by one (parameters that change
+// together, e.g. each beam's truncation and the mesh resolving it), in the file's order; each
+// sets the same paths, and no two are equal.
+std::vector<Json> ParseSettingList(const Json& v, const Json& scene, const std::string& file,
+                                   const std::string& where) {
+  std::vector<Json> settings;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Json& setting = v[i];
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    if (!setting.is_object() || setting.empty())
+      FailAt(file, at, "expected {\"parameter.path\": value, ...}, got " + Shown(setting));
+    for (const auto& [path, value] : setting.items()) {
+      SameTypeParameter(scene, path, value, file, at + "." + path);
+      if (!v[0].contains(path))
+        FailAt(file, at + "." + path,
+               "is not set by " + where + "[0]: every setting sets the same paths");
+    }
+    if (setting.size() != v[0].size())
+      FailAt(file, at, "sets other paths than " + where + "[0]: every setting sets the same paths");
+    if (std::ranges::find(settings, setting) != settings.end())
+      FailAt(file, at, Shown(setting) + " is listed twice");
+    settings.push_back(setting);
+  }
+  return settings;
+}
+
+// The numerical settings: the product of axes, a list, or (absent) the one empty setting.
+std::vector<Json> ParseSettings(JsonObjectReader& r, const Json& scene, const std::string& file) {
+  const Json* v = r.Get("settings");
+  if (v == nullptr) return {Json::object()};
+  const std::string where = r.PathOf("settings");
+  if (v->is_array() && !v->empty()) return ParseSettingList(*v, scene, file, where);
+  if (!v->is_object() || v->empty()) {
+    r.Fail("settings",
+           "expected {\"parameter.path\": [values...], ...} (their product), e.g. "
+           "{\"solver.r_ftrunc\": [30, 100, 300, 1000]}, or a list of settings "
+           "[{\"parameter.path\": value, ...}, ...], got " +
+               Shown(*v));
+  }
+  return SettingProduct(ParseSettingAxes(*v, scene, file, where));
 }
 
 int ParseRefined(JsonObjectReader& r, const std::vector<Json>& settings) {
@@ -385,6 +441,7 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   spec.scene_file =
       (std::filesystem::path(file).parent_path() / r.RequiredString("scene")).lexically_normal();
   spec.scene = ReadJsonFile(spec.scene_file);
+  ApplySceneSet(r, spec.scene);
   const Scene base = ParseScene(spec.scene, spec.scene_file, access);
   spec.seed = ParseSeed(r);
   spec.members = ParseMembers(r);
@@ -394,7 +451,7 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   spec.impact_counting = ParseStudyImpactCounting(r, spec.window_s);
   spec.draws = ParseDraws(r, spec.scene, file);
   spec.states = ParseStates(r, spec.scene, file);
-  spec.settings = SettingProduct(ParseSettingAxes(r, spec.scene, file));
+  spec.settings = ParseSettings(r, spec.scene, file);
   spec.refined = ParseRefined(r, spec.settings);
   const double points =
       static_cast<double>(spec.members) * spec.states.size() * spec.settings.size();

@@ -57,7 +57,8 @@ struct EnsembleStudySpec {
   // Without "clearance_states" in the file, one state named "scene": the scene's own gaps.
   std::vector<ClearanceState> states;
   // Numerical settings: each an object {"path": value} (numbers or true/false) applied over
-  // the scene; the full product of the file's "settings" axes, or one empty setting.
+  // the scene; the full product of the file's "settings" axes ({"path": [values]}), the
+  // settings it lists ([{"path": value, ...}, ...], in its order), or one empty setting.
   std::vector<nlohmann::json> settings;
   int refined = 0;                     // Index of the setting every other is judged against.
   std::vector<EnsembleMember> points;  // Member-major: every state and setting of member 0 first.

@@ -294,7 +294,8 @@ TEST_F(DatabaseCorruption, PendingSettingsAndTheSpecsMemberFieldsAreCheckedBefor
       {spec + "'$.clearance_states', json('{\"name\": \"new\"}'))",
        "database corrupt: study ens: spec_json: type must be array, but is object"},
       {spec + "'$.settings', json('[1]'))",
-       "database corrupt: study ens: spec_json: settings: not a JSON object"}};
+       "database corrupt: study ens: spec_json: settings: neither a JSON object nor a list of "
+       "objects"}};
   ExpectEachRefusedBySizingAndReport(cases);
 }
 

@@ -36,9 +36,13 @@ Json RefinedSetting(const Json& spec, const std::vector<StoredMember>& members) 
   return Json::parse(members.front().setting_json);
 }
 
-// Whether `setting` (a member's, {"path": value}) is one of the product of the file's
-// "settings" axes ({"path": [values]}; absent: the empty setting).
-bool IsSettingOf(const Json& setting, const Json& axes) {
+// Whether `setting` (a member's, {"path": value}) is one of the file's "settings": one of the
+// list ([{"path": value}, ...]), or of the product of the axes ({"path": [values]}; absent:
+// the empty setting). Compared by value (100.0 is 100).
+bool IsSettingOf(const Json& setting, const Json& settings) {
+  if (settings.is_array())
+    return std::find(settings.begin(), settings.end(), setting) != settings.end();
+  const Json& axes = settings;
   if (setting.size() != (axes.is_object() ? axes.size() : 0)) return false;
   for (const auto& [path, value] : setting.items()) {
     const auto axis = axes.find(path);
@@ -50,16 +54,17 @@ bool IsSettingOf(const Json& setting, const Json& axes) {
 }
 
 // What the stored spec, as last run, says of its members: how many, in which clearance states
-// (absent: the one state "scene"), at the settings of which axes ({"path": [values]}).
+// (absent: the one state "scene"), at which settings (the file's "settings": axes
+// {"path": [values]} or a list [{"path": value}, ...]).
 struct CurrentSpec {
   std::int64_t members = 0;
   std::vector<std::string> states;
-  Json axes;
+  Json settings;
 };
 
 // DbError "<file>: database corrupt: study <name>: spec_json: <reason>" unless "members" is a
 // whole number in [1, kMaxEnsembleMembers], "clearance_states" a list of objects with a text
-// "name" and "settings" an object.
+// "name" and "settings" an object or a list of objects.
 CurrentSpec ReadCurrentSpec(const StoredEnsemble& stored) {
   const StoredCell cell{stored.database_path, "study " + stored.study, "spec_json"};
   return ReadStoredJson(cell, stored.spec_json, [&](const Json& spec) {
@@ -75,8 +80,12 @@ CurrentSpec ReadCurrentSpec(const StoredEnsemble& stored) {
     for (const Json& s : states.get<std::vector<Json>>()) {
       current.states.push_back(s.at("name").get<std::string>());
     }
-    current.axes = spec.value("settings", Json::object());
-    if (!current.axes.is_object()) ThrowCorruptCell(cell, "settings: not a JSON object");
+    current.settings = spec.value("settings", Json::object());
+    const bool list_of_objects =
+        current.settings.is_array() &&
+        std::ranges::all_of(current.settings, [](const Json& s) { return s.is_object(); });
+    if (!current.settings.is_object() && !list_of_objects)
+      ThrowCorruptCell(cell, "settings: neither a JSON object nor a list of objects");
     return current;
   });
 }
@@ -287,7 +296,7 @@ StoredEnsemble CurrentMembers(StoredEnsemble stored) {
   const CurrentSpec spec = ReadCurrentSpec(stored);
   const auto superseded = [&](const StoredMember& m) {
     return !(m.member < spec.members && std::ranges::count(spec.states, m.state) > 0 &&
-             IsSettingOf(Json::parse(m.setting_json), spec.axes));
+             IsSettingOf(Json::parse(m.setting_json), spec.settings));
   };
   stored.superseded = static_cast<std::int64_t>(std::erase_if(stored.members, superseded));
   std::erase_if(stored.not_ok, superseded);

@@ -1,0 +1,184 @@
+#include "app/check_advice_command.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "app/flag_checks.h"
+#include "app/shared_data.h"
+#include "core/input_error.h"
+#include "db/ensemble_members.h"
+#include "db/schema.h"
+#include "db/study_database.h"
+#include "engine/study_run.h"
+#include "formats/advice_check_study.h"
+#include "formats/json_reader.h"
+#include "formats/output_file.h"
+#include "formats/scene_file.h"
+#include "formats/study_file.h"
+#include "formats/table_output.h"
+#include "validation/scene_advice.h"
+#include "views/advice_check.h"
+#include "views/criteria_report.h"
+#include "views/ensemble_sizing.h"
+
+namespace shockmap {
+namespace {
+
+using Json = nlohmann::json;
+
+struct CheckAdviceFlags {
+  std::string study_file;
+  std::string criteria = "studies/baselines/paper_fig4.json";
+  std::string database_path = kDefaultDatabasePath;
+  int members = 0;  // 0: the study file's.
+  int jobs = 0;
+  int max_rungs = 6;
+  SizingOptions options;
+  std::string write_study;
+  bool quiet = false;
+  SceneFileAccess access;
+};
+
+// The rung at factor 1 in LadderFactors' order (1/3 first).
+constexpr int kAdvisedRung = 1;
+// The first ladder: 1/3, 1, 3 and 9 times the advised truncations.
+constexpr int kFirstRungs = 4;
+
+// The ensemble study file's JSON, refused unless it is an ensemble.
+Json ReadEnsembleJson(const std::string& file) {
+  const Json json = ReadJsonFile(file);
+  if (StudyKindOf(json, file) != StudyFileKind::kSceneEnsemble) {
+    throw InputError(file + ": kind \"" + ToString(StudyKindOf(json, file)) +
+                     "\": check-advice needs an ensemble study (\"kind\": \"scene_ensemble\"), "
+                     "whose draws and clearance states the advice is checked on");
+  }
+  return json;
+}
+
+// Each advised truncation with the beams that take it: "224.1 (wrapper), 1254 (17 pins)".
+std::string AdvisedTruncations(const SceneAdvice& advice) {
+  std::map<double, std::vector<std::string>> beams;
+  for (const BeamAdvice& b : advice.beams) beams[b.r_ftrunc].push_back(b.name);
+  std::string text;
+  for (const auto& [r_ftrunc, names] : beams) {
+    text += fmt::format("{}{:.4g} ({})", text.empty() ? "" : ", ", r_ftrunc,
+                        names.size() == 1 ? names.front() : fmt::format("{} beams", names.size()));
+  }
+  return text;
+}
+
+// Runs the ladder's study (only the members not stored yet) and reads its sizing statistics.
+EnsembleSizing RunLadder(const CheckAdviceFlags& f, const Json& study) {
+  const StudyFile parsed = ParseStudyFile(study, f.study_file, f.access);
+  StudyRunOptions options;
+  options.database_path = f.database_path;
+  options.jobs = f.jobs;
+  options.progress = !f.quiet;
+  const StudyRunSummary s = RunStudy(parsed, options);
+  fmt::print("  {} members in the ladder, {} computed now\n", s.points_in_study, s.points_computed);
+  Connection db(f.database_path, Connection::Mode::kReadOnly);
+  CheckSchema(db);
+  const std::string name = study.at("name");
+  return SizeEnsemble(CurrentMembers(ReadEnsemble(db, name)), name, f.options);
+}
+
+void PrintCheck(const AdviceCheck& check, const SizingOptions& options) {
+  fmt::print("\n{}\n\n", AdviceVerdict(check, options.quantile));
+  WriteTable(AdviceCheckTable(check), TableFormat::kTable, std::cout);
+  std::string cpu;
+  for (std::size_t k = 0; k < check.factors.size(); ++k) {
+    cpu += fmt::format("{}x {:.4g}: {:.3g} s", k ? ", " : "", check.factors[k],
+                       check.cpu_s_per_member[k]);
+  }
+  fmt::print("  CPU per member by rung: {}\n", cpu);
+}
+
+void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
+  const Json ensemble = ReadEnsembleJson(f.study_file);
+  const std::filesystem::path scene_file =
+      (std::filesystem::path(f.study_file).parent_path() / ensemble.at("scene").get<std::string>())
+          .lexically_normal();
+  const Json scene_json = ReadJsonFile(scene_file);
+  const Scene scene = ParseScene(scene_json, scene_file, f.access);
+  CriteriaTolerances tolerances;
+  const SceneAdvice advice =
+      AdviseScene(scene, CriteriaFromJson(ReadJsonFile(criteria_file), criteria_file, &tolerances));
+  fmt::print("advice for scene {} from {}: dt = {:g} dt_sharp, R_ftrunc {}\n", scene.name,
+             criteria_file, advice.dt_ratio, AdvisedTruncations(advice));
+  for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);
+  for (int rungs = kFirstRungs;; ++rungs) {
+    const std::vector<double> factors = LadderFactors(rungs);
+    const Json study =
+        AdviceCheckStudy(ensemble, f.study_file, scene_json, scene, advice, factors, f.members);
+    if (!f.write_study.empty()) {
+      WriteFileAtomically(f.write_study, study.dump(2) + "\n");
+      fmt::print(
+          "ladder study written to {} ({} rungs): run it (e.g. mpirun -np N shockmap study run "
+          "{} --db {}), then check-advice again with the same flags\n",
+          f.write_study, rungs, f.write_study, f.database_path);
+      return;
+    }
+    fmt::print("ladder: x {:.4g} of the advised truncations\n", fmt::join(factors, ", x "));
+    const EnsembleSizing sizing = RunLadder(f, study);
+    std::vector<std::string> settings;
+    for (const Json& s : study.at("settings")) settings.push_back(s.dump());
+    const AdviceCheck check = CheckAdvice(sizing, settings, factors, kAdvisedRung);
+    const bool may_refine =
+        rungs < f.max_rungs && RungFits(advice, LadderFactors(rungs + 1).back());
+    if (check.converged || check.undecided || !may_refine) return PrintCheck(check, f.options);
+  }
+}
+
+}  // namespace
+
+void AddCheckAdviceCommand(CLI::App& app) {
+  auto flags = std::make_shared<CheckAdviceFlags>();
+  CLI::App* cmd = app.add_subcommand(
+      "check-advice",
+      "Check the advice for an ensemble study's scene on its members: the ensemble run at the "
+      "advised truncations and dt, at a third of them and at 3, 9, ... times until each zone "
+      "family's sizing quantile stops moving, and the verdict per clearance state and family");
+  cmd->add_option("STUDY", flags->study_file, "ensemble study file (\"kind\": \"scene_ensemble\")")
+      ->required()
+      ->type_name("FILE");
+  AddDatabaseFlag(cmd, flags->database_path);
+  CLI::Option* criteria =
+      cmd->add_option("--criteria", flags->criteria,
+                      "criteria JSON written by `criteria derive --out` (looked up in the working "
+                      "folder, then in the shared data installed with shockmap)")
+          ->capture_default_str();
+  cmd->add_option("--members", flags->members,
+                  "members per clearance state and rung (default: the study file's)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--jobs", flags->jobs, "worker threads (default: number of cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
+      ->capture_default_str()
+      ->check(FiniteIn(0.0, true, 1.0 - 1e-12));
+  cmd->add_option("--tolerance", flags->options.tolerance,
+                  "two rungs agree where their intervals of the sizing quantile, widened by this "
+                  "fraction of the finer estimate, overlap")
+      ->capture_default_str()
+      ->check(FiniteIn(0.0, false, 1.0));
+  cmd->add_option("--max-rungs", flags->max_rungs,
+                  "rungs at most (1/3, 1, 3, 9, ... times the advised truncations)")
+      ->capture_default_str()
+      ->check(CLI::Range(kFirstRungs, 12));
+  cmd->add_option("--write-study", flags->write_study,
+                  "write the ladder's study file here instead of running it (to run it under "
+                  "MPI with `study run`)");
+  cmd->add_flag("--quiet", flags->quiet, "no progress on stderr");
+  AddAllowPathFlag(cmd, flags->access);
+  cmd->callback([flags, criteria] {
+    Check(*flags,
+          criteria->count() > 0 ? flags->criteria : DefaultDataFile(flags->criteria, "--criteria"));
+  });
+}
+
+}  // namespace shockmap

@@ -1,0 +1,44 @@
+#pragma once
+// Advice checked on an ensemble (docs/ensembles.md, "Advice checked on the bundle"): the study
+// that runs an ensemble study's members at the settings `advise` gives for its scene
+// (validation/scene_advice.h), at one coarser and at finer ones, on the same draws. Each rung of
+// the ladder scales every beam's advised truncation by a factor (1/3, 1, 3, 9, ...) with a mesh
+// that resolves it, at the advised dt / dt_sharp; the finest rung is the refined setting.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+#include "validation/scene_advice.h"
+
+namespace shockmap {
+
+// The ladder's factors on the advised truncations, coarsest first: 1/3, 1, then 3^k up to
+// `rungs` rungs in all.
+std::vector<double> LadderFactors(int rungs);
+
+// Whether every beam's advised truncation times `factor` stays within 1e5, the largest a scene
+// file takes.
+bool RungFits(const SceneAdvice& advice, double factor);
+
+// The setting of one rung, by path: each beam's advised truncation times `factor` (a bundle's
+// pins share the largest of theirs: "bundle.pin.r_ftrunc"; the wrapper "bundle.wrapper.
+// r_ftrunc"; a listed beam "beams[i].r_ftrunc"), its mesh at least the scene's and fine enough
+// for the truncated mode (core/cantilever_impact.h DefaultElementCount), and
+// "solver.dt.factor" at the advised dt / dt_sharp. Throws InputError when a truncation would
+// exceed 1e5 (the scene file's largest) or the scene's dt is not a rule of the sharp bound.
+// `scene_json` is the scene file's JSON, `scene` the scene it parses to.
+nlohmann::json RungSetting(const nlohmann::json& scene_json, const Scene& scene,
+                           const SceneAdvice& advice, double factor);
+
+// The ensemble study `ensemble` (its JSON, from `file`) as the ladder's study: named
+// "<name>_advice_check", its scene by absolute path, the rung settings listed coarsest first
+// (the finest refined), the keys they set written into the scene where it left them at their
+// default ("scene_set"), `members` members per state and rung when positive.
+nlohmann::json AdviceCheckStudy(const nlohmann::json& ensemble, const std::string& file,
+                                const nlohmann::json& scene_json, const Scene& scene,
+                                const SceneAdvice& advice, const std::vector<double>& factors,
+                                int members);
+
+}  // namespace shockmap

@@ -1,0 +1,188 @@
+#include "views/advice_check.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/input_error.h"
+
+namespace shockmap {
+namespace {
+
+std::string Factor(double f) {
+  return f < 1.0 ? fmt::format("1/{:.3g}", 1.0 / f) : fmt::format("{:.3g}", f);
+}
+
+std::string Shown(const QuantileInterval& q) {
+  auto side = [](bool bounded, double v) { return bounded ? fmt::format("{:.4g}", v) : "-"; };
+  return fmt::format("{:.4g} [{}, {}]", q.estimate, side(q.lower_bounded, q.lower),
+                     side(q.upper_bounded, q.upper));
+}
+
+// The group of `state` at `setting` (compared by value, as the study matched it).
+const GroupSizing& GroupAt(const EnsembleSizing& sizing, const std::string& state,
+                           const nlohmann::json& setting) {
+  for (const GroupSizing& g : sizing.groups) {
+    if (g.state == state && nlohmann::json::parse(g.setting_json) == setting) return g;
+  }
+  throw InputError(fmt::format("study {}: state {} has no computed member at the setting {}",
+                               sizing.study, state, setting.dump()));
+}
+
+std::string Families(const AdviceCheck& check, const std::vector<const FamilyLadder*>& held) {
+  std::map<ZoneFamily, std::pair<int, int>> counts;  // Held, in all.
+  for (const FamilyLadder& f : check.families) ++counts[f.family].second;
+  for (const FamilyLadder* f : held) ++counts[f->family].first;
+  std::string text;
+  for (const auto& [family, n] : counts) {
+    text += fmt::format("{}{} {} of {}", text.empty() ? "" : ", ", FamilyName(family), n.first,
+                        n.second);
+  }
+  return text;
+}
+
+}  // namespace
+
+LadderConvergence ConvergedRung(const std::vector<ZoneSizing>& rungs, double tolerance) {
+  LadderConvergence c;
+  for (const ZoneSizing& z : rungs) {
+    c.undecided = c.undecided || !z.sizing.lower_bounded || !z.sizing.upper_bounded;
+  }
+  if (c.undecided) return c;
+  for (std::size_t r = 0; r + 1 < rungs.size(); ++r) {
+    bool every_finer_agrees = true;
+    for (std::size_t j = r + 1; j < rungs.size(); ++j) {
+      every_finer_agrees = every_finer_agrees && *Agrees(rungs[r], rungs[j], tolerance);
+    }
+    if (every_finer_agrees) {
+      c.rung = static_cast<int>(r);
+      return c;
+    }
+  }
+  return c;
+}
+
+AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::string>& rung_settings,
+                        const std::vector<double>& factors, int advised) {
+  AdviceCheck check;
+  check.factors = factors;
+  check.advised = advised;
+  check.tolerance = sizing.options.tolerance;
+  std::vector<nlohmann::json> settings;
+  for (const std::string& s : rung_settings) settings.push_back(nlohmann::json::parse(s));
+  check.cpu_s_per_member.assign(settings.size(), 0.0);
+  std::vector<std::string> states;
+  for (const GroupSizing& g : sizing.groups) {
+    if (std::ranges::find(states, g.state) == states.end()) states.push_back(g.state);
+  }
+  bool all_converged = true;
+  int finest_needed = 0;
+  for (const std::string& state : states) {
+    const GroupSizing& finest = GroupAt(sizing, state, settings.back());
+    for (std::size_t k = 0; k < settings.size(); ++k) {
+      check.cpu_s_per_member[k] += GroupAt(sizing, state, settings[k]).mean_cpu_s / states.size();
+    }
+    for (const FamilyHottest& f : finest.families) {
+      FamilyLadder ladder{state, f.family, finest.zones[f.zone].name, {}, {}};
+      for (const nlohmann::json& s : settings) {
+        ladder.rungs.push_back(GroupAt(sizing, state, s).zones[f.zone]);
+      }
+      ladder.convergence = ConvergedRung(ladder.rungs, check.tolerance);
+      check.undecided = check.undecided || ladder.convergence.undecided;
+      all_converged = all_converged && ladder.convergence.rung.has_value();
+      if (ladder.convergence.rung)
+        finest_needed = std::max(finest_needed, *ladder.convergence.rung);
+      check.families.push_back(std::move(ladder));
+    }
+  }
+  if (all_converged && !check.undecided) check.converged = finest_needed;
+  return check;
+}
+
+std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family) {
+  if (!check.converged || family.convergence.undecided) return std::nullopt;
+  return Agrees(family.rungs[check.advised], family.rungs[*check.converged], check.tolerance);
+}
+
+std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
+  const std::string q = fmt::format("P{:g}", 100 * quantile);
+  if (check.undecided) {
+    return fmt::format(
+        "Undecided: some {} interval is unbounded, too few members to judge the advice; run "
+        "more members (a two-sided 95 % interval of a P95 needs about 100).",
+        q);
+  }
+  if (!check.converged) {
+    std::string moving;
+    for (const FamilyLadder& f : check.families) {
+      if (f.convergence.rung) continue;
+      moving += fmt::format("{}{} {} ({}: {} {} N at x {}, {} N at x {})",
+                            moving.empty() ? "" : "; ", f.state, FamilyName(f.family), f.zone, q,
+                            fmt::format("{:.4g}", f.rungs[f.rungs.size() - 2].sizing.estimate),
+                            Factor(check.factors[f.rungs.size() - 2]),
+                            fmt::format("{:.4g}", f.rungs.back().sizing.estimate),
+                            Factor(check.factors.back()));
+    }
+    std::string verdict = fmt::format(
+        "Not converged: the finest rungs still differ beyond their intervals at {}; the advice "
+        "cannot be confirmed until a finer rung agrees.",
+        moving);
+    for (const FamilyLadder& f : check.families) {
+      const QuantileInterval& a = f.rungs[check.advised].sizing;
+      const QuantileInterval& finest = f.rungs.back().sizing;
+      if (*Agrees(f.rungs[check.advised], f.rungs.back(), check.tolerance)) continue;
+      verdict += fmt::format(
+          " It failed already at {} {} ({}): advised {} N against {} N at x {} ({:+.1f} %).",
+          f.state, FamilyName(f.family), f.zone, Shown(a), Shown(finest),
+          Factor(check.factors.back()), 100 * (a.estimate / finest.estimate - 1));
+    }
+    return verdict;
+  }
+  std::vector<const FamilyLadder*> held, failed;
+  for (const FamilyLadder& f : check.families)
+    (*AdviceHolds(check, f) ? held : failed).push_back(&f);
+  const double advised_cpu = check.cpu_s_per_member[check.advised];
+  const double converged_cpu = check.cpu_s_per_member[*check.converged];
+  std::string verdict = fmt::format(
+      "Advice held at {} of {} state and zone family pairs ({}) at {:.3g} s of CPU per member; "
+      "the converged setting (x {} of the advised truncations, where every finer rung agrees "
+      "within the {} intervals widened by {:g} %) costs {:.3g} s, {:.3g} times {}.",
+      held.size(), check.families.size(), Families(check, held), advised_cpu,
+      Factor(check.factors[*check.converged]), q, 100 * check.tolerance, converged_cpu,
+      converged_cpu >= advised_cpu ? converged_cpu / advised_cpu : advised_cpu / converged_cpu,
+      converged_cpu >= advised_cpu ? "as much" : "less");
+  for (const FamilyLadder* f : failed) {
+    const QuantileInterval& a = f->rungs[check.advised].sizing;
+    const QuantileInterval& c = f->rungs[*check.converged].sizing;
+    verdict += fmt::format(
+        " It failed at {} {} ({}): advised {} N against converged {} N ({:+.1f} %); x {} of the "
+        "advised truncations would do.",
+        f->state, FamilyName(f->family), f->zone, Shown(a), Shown(c),
+        100 * (a.estimate / c.estimate - 1), Factor(check.factors[*f->convergence.rung]));
+  }
+  return verdict;
+}
+
+Table AdviceCheckTable(const AdviceCheck& check) {
+  Table t;
+  t.columns = {"state",         "family", "hottest zone",  "advised (N)",
+               "converged (N)", "holds",  "coarser holds", "suffices from"};
+  auto yes_no = [](std::optional<bool> b) { return std::string(!b ? "-" : *b ? "yes" : "no"); };
+  for (const FamilyLadder& f : check.families) {
+    std::optional<bool> coarser;
+    if (check.converged && !f.convergence.undecided && check.advised > 0) {
+      coarser = Agrees(f.rungs[check.advised - 1], f.rungs[*check.converged], check.tolerance);
+    }
+    t.rows.push_back({f.state, FamilyName(f.family), f.zone, Shown(f.rungs[check.advised].sizing),
+                      check.converged ? Shown(f.rungs[*check.converged].sizing) : std::string("-"),
+                      yes_no(AdviceHolds(check, f)), yes_no(coarser),
+                      f.convergence.rung ? "x " + Factor(check.factors[*f.convergence.rung])
+                                         : std::string("-")});
+  }
+  return t;
+}
+
+}  // namespace shockmap

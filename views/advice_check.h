@@ -1,0 +1,64 @@
+#pragma once
+// Whether the advice held on the bundle (docs/ensembles.md, "Advice checked on the bundle"):
+// the sizing statistics of an advice-check study (formats/advice_check_study.h), one group per
+// clearance state and rung of the ladder, read per zone family an engineer sizes (the hottest
+// wire, duct pad, pin-wrapper contact). The ladder has converged at the coarsest rung every finer
+// rung agrees with at every state and family (views/ensemble_sizing.h Agrees: their intervals of
+// the sizing quantile, widened by the tolerance, overlap); the advice holds at a state and
+// family when its rung agrees with the converged one.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "records/table.h"
+#include "views/ensemble_sizing.h"
+
+namespace shockmap {
+
+// Where a ladder of one zone's sizing statistics (coarsest first) stops moving.
+struct LadderConvergence {
+  std::optional<int> rung;  // The coarsest rung every finer rung agrees with.
+  bool undecided = false;   // An interval is unbounded: too few members to judge.
+};
+// Needs a finer rung to confirm a rung: nullopt with fewer than two rungs.
+LadderConvergence ConvergedRung(const std::vector<ZoneSizing>& rungs, double tolerance);
+
+// One clearance state and zone family along the ladder.
+struct FamilyLadder {
+  std::string state;
+  ZoneFamily family = ZoneFamily::kOther;
+  std::string zone;               // The family's hottest zone at the finest rung.
+  std::vector<ZoneSizing> rungs;  // Coarsest first.
+  LadderConvergence convergence;
+};
+
+struct AdviceCheck {
+  std::vector<double> factors;  // Of each rung on the advised truncations, coarsest first.
+  int advised = 1;              // The rung at factor 1.
+  double tolerance = 0.0;
+  std::vector<FamilyLadder> families;
+  std::optional<int> converged;  // The finest rung any family needs; nullopt: not converged.
+  bool undecided = false;        // Some family cannot be judged: too few members.
+  std::vector<double> cpu_s_per_member;  // Per rung, the mean over its states' members.
+};
+
+// `rung_settings`: each rung's setting JSON as stored (EnsembleSizing's setting_json), in the
+// order of `factors`. Throws InputError when a state lacks a rung's members.
+AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::string>& rung_settings,
+                        const std::vector<double>& factors, int advised);
+
+// Whether the advised rung agrees with the converged one at a family (nullopt: undecided, or
+// the ladder has not converged).
+std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family);
+
+// The verdict a designer can sign, one paragraph: where the advice held, at what CPU per member
+// and how much cheaper than the converged rung; or where it failed, by how much, and which
+// rung would do.
+std::string AdviceVerdict(const AdviceCheck& check, double quantile);
+
+// Per state and family: the advised rung's and the converged rung's sizing quantile with their
+// intervals, whether the advice holds, whether the coarser rung would, the rung that suffices.
+Table AdviceCheckTable(const AdviceCheck& check);
+
+}  // namespace shockmap
