@@ -102,9 +102,16 @@ AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::str
   return check;
 }
 
-std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family) {
+std::optional<bool> RungHolds(const AdviceCheck& check, const FamilyLadder& family, int rung) {
   if (!check.converged || family.convergence.undecided) return std::nullopt;
-  return Agrees(family.rungs[check.advised], family.rungs[*check.converged], check.tolerance);
+  for (std::size_t k = *check.converged; k < family.rungs.size(); ++k) {
+    if (!*Agrees(family.rungs[rung], family.rungs[k], check.tolerance)) return false;
+  }
+  return true;
+}
+
+std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family) {
+  return RungHolds(check, family, check.advised);
 }
 
 std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
@@ -155,12 +162,15 @@ std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
       converged_cpu >= advised_cpu ? converged_cpu / advised_cpu : advised_cpu / converged_cpu,
       converged_cpu >= advised_cpu ? "as much" : "less");
   for (const FamilyLadder* f : failed) {
+    // The first converged rung the advised one disagrees with.
+    std::size_t k = *check.converged;
+    while (*Agrees(f->rungs[check.advised], f->rungs[k], check.tolerance)) ++k;
     const QuantileInterval& a = f->rungs[check.advised].sizing;
-    const QuantileInterval& c = f->rungs[*check.converged].sizing;
+    const QuantileInterval& c = f->rungs[k].sizing;
     verdict += fmt::format(
-        " It failed at {} {} ({}): advised {} N against converged {} N ({:+.1f} %); x {} of the "
+        " It failed at {} {} ({}): advised {} N against {} N at x {} ({:+.1f} %); x {} of the "
         "advised truncations would do.",
-        f->state, FamilyName(f->family), f->zone, Shown(a), Shown(c),
+        f->state, FamilyName(f->family), f->zone, Shown(a), Shown(c), Factor(check.factors[k]),
         100 * (a.estimate / c.estimate - 1), Factor(check.factors[*f->convergence.rung]));
   }
   return verdict;
@@ -172,10 +182,8 @@ Table AdviceCheckTable(const AdviceCheck& check) {
                "converged (N)", "holds",  "coarser holds", "suffices from"};
   auto yes_no = [](std::optional<bool> b) { return std::string(!b ? "-" : *b ? "yes" : "no"); };
   for (const FamilyLadder& f : check.families) {
-    std::optional<bool> coarser;
-    if (check.converged && !f.convergence.undecided && check.advised > 0) {
-      coarser = Agrees(f.rungs[check.advised - 1], f.rungs[*check.converged], check.tolerance);
-    }
+    const std::optional<bool> coarser =
+        check.advised > 0 ? RungHolds(check, f, check.advised - 1) : std::nullopt;
     t.rows.push_back({f.state, FamilyName(f.family), f.zone, Shown(f.rungs[check.advised].sizing),
                       check.converged ? Shown(f.rungs[*check.converged].sizing) : std::string("-"),
                       yes_no(AdviceHolds(check, f)), yes_no(coarser),

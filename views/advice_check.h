@@ -5,7 +5,7 @@
 // wire, duct pad, pin-wrapper contact). The ladder has converged at the coarsest rung every finer
 // rung agrees with at every state and family (views/ensemble_sizing.h Agrees: their intervals of
 // the sizing quantile, widened by the tolerance, overlap); the advice holds at a state and
-// family when its rung agrees with the converged one.
+// family when its rung agrees with the converged one and every finer rung.
 
 #include <optional>
 #include <string>
@@ -48,8 +48,10 @@ struct AdviceCheck {
 AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::string>& rung_settings,
                         const std::vector<double>& factors, int advised);
 
-// Whether the advised rung agrees with the converged one at a family (nullopt: undecided, or
-// the ladder has not converged).
+// Whether `rung` agrees at a family with the converged rung and every finer one (nullopt:
+// undecided, or the ladder has not converged).
+std::optional<bool> RungHolds(const AdviceCheck& check, const FamilyLadder& family, int rung);
+// RungHolds of the advised rung: the advice gives what the converged settings give.
 std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family);
 
 // The verdict a designer can sign, one paragraph: where the advice held, at what CPU per member
