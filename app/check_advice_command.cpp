@@ -114,8 +114,9 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
   for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);
   for (int rungs = kFirstRungs;; ++rungs) {
     const std::vector<double> factors = LadderFactors(rungs);
+    const AdviceCheckRecord record{factors, kAdvisedRung, f.options.quantile, f.options.tolerance};
     const Json study =
-        AdviceCheckStudy(ensemble, f.study_file, scene_json, scene, advice, factors, f.members);
+        AdviceCheckStudy(ensemble, f.study_file, scene_json, scene, advice, record, f.members);
     if (!f.write_study.empty()) {
       WriteFileAtomically(f.write_study, study.dump(2) + "\n");
       fmt::print(

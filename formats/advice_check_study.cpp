@@ -80,9 +80,44 @@ Json RungSetting(const Json& scene_json, const Scene& scene, const SceneAdvice& 
   return setting;
 }
 
+Json AdviceCheckRecordJson(const AdviceCheckRecord& r) {
+  return {{"factors", r.factors},
+          {"advised", r.advised},
+          {"quantile", r.quantile},
+          {"tolerance", r.tolerance}};
+}
+
+AdviceCheckRecord ParseAdviceCheckRecord(const Json& json, const std::string& file,
+                                         const std::string& where, std::size_t settings) {
+  JsonObjectReader r(json, file, where);
+  AdviceCheckRecord record;
+  const Json* factors = r.Get("factors");
+  if (factors == nullptr || !factors->is_array() || factors->size() != settings)
+    r.Fail("factors", fmt::format("expected a list of {} numbers, one per setting", settings));
+  for (const Json& f : *factors) {
+    const double factor = f.is_number() ? f.get<double>() : 0.0;
+    if (!(factor > 0.0) || !std::isfinite(factor) ||
+        (!record.factors.empty() && factor <= record.factors.back()))
+      r.Fail("factors", Shown(f) + " is not a positive number above the one before");
+    record.factors.push_back(factor);
+  }
+  record.advised = r.Integer("advised", record.advised);
+  if (record.advised < 0 || record.advised >= static_cast<int>(settings))
+    r.Fail("advised", fmt::format("{} is not a rung from 0 to {}", record.advised, settings - 1));
+  record.quantile = r.Number("quantile", record.quantile);
+  if (!(record.quantile > 0.0 && record.quantile < 1.0))
+    r.Fail("quantile", Shown(Json(record.quantile)) + " does not lie in (0, 1)");
+  record.tolerance = r.Number("tolerance", record.tolerance);
+  if (!(record.tolerance >= 0.0 && record.tolerance <= 1.0))
+    r.Fail("tolerance", Shown(Json(record.tolerance)) + " does not lie in [0, 1]");
+  r.Finish();
+  return record;
+}
+
 Json AdviceCheckStudy(const Json& ensemble, const std::string& file, const Json& scene_json,
                       const Scene& scene, const SceneAdvice& advice,
-                      const std::vector<double>& factors, int members) {
+                      const AdviceCheckRecord& record, int members) {
+  const std::vector<double>& factors = record.factors;
   Json study = ensemble;
   const std::string name = ensemble.value("name", std::string("ensemble"));
   study["name"] = name + "_advice_check";
@@ -105,6 +140,7 @@ Json AdviceCheckStudy(const Json& ensemble, const std::string& file, const Json&
   study["scene_set"] = scene_set;
   study["settings"] = settings;
   study["refined"] = settings.back();
+  study["advice_check"] = AdviceCheckRecordJson(record);
   return study;
 }
 

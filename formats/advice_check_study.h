@@ -32,13 +32,29 @@ bool RungFits(const SceneAdvice& advice, double factor);
 nlohmann::json RungSetting(const nlohmann::json& scene_json, const Scene& scene,
                            const SceneAdvice& advice, double factor);
 
+// What an advice-check study records of its ladder ("advice_check" in the study file): each
+// listed setting's factor on the advised truncations, the advised rung, and the sizing quantile
+// and tolerance the check judges at (so that the report gives the same verdict).
+struct AdviceCheckRecord {
+  std::vector<double> factors;
+  int advised = 1;
+  double quantile = 0.95, tolerance = 0.05;
+};
+nlohmann::json AdviceCheckRecordJson(const AdviceCheckRecord& record);
+// Throws InputError naming `file` and `where` unless the factors are positive and increasing,
+// one per setting (`settings`), the advised rung one of them, the quantile in (0, 1) and the
+// tolerance in [0, 1].
+AdviceCheckRecord ParseAdviceCheckRecord(const nlohmann::json& json, const std::string& file,
+                                         const std::string& where, std::size_t settings);
+
 // The ensemble study `ensemble` (its JSON, from `file`) as the ladder's study: named
 // "<name>_advice_check", its scene by absolute path, the rung settings listed coarsest first
 // (the finest refined), the keys they set written into the scene where it left them at their
-// default ("scene_set"), `members` members per state and rung when positive.
+// default ("scene_set"), `members` members per state and rung when positive, and the ladder
+// recorded ("advice_check", record.factors its factors).
 nlohmann::json AdviceCheckStudy(const nlohmann::json& ensemble, const std::string& file,
                                 const nlohmann::json& scene_json, const Scene& scene,
-                                const SceneAdvice& advice, const std::vector<double>& factors,
+                                const SceneAdvice& advice, const AdviceCheckRecord& record,
                                 int members);
 
 }  // namespace shockmap

@@ -9,6 +9,7 @@
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "core/scene_model.h"
+#include "formats/advice_check_study.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/parameter_path.h"
@@ -453,6 +454,9 @@ EnsembleStudySpec ParseEnsembleStudySpec(const Json& json, const std::string& fi
   spec.states = ParseStates(r, spec.scene, file);
   spec.settings = ParseSettings(r, spec.scene, file);
   spec.refined = ParseRefined(r, spec.settings);
+  if (const Json* ladder = r.Get("advice_check")) {
+    ParseAdviceCheckRecord(*ladder, file, r.PathOf("advice_check"), spec.settings.size());
+  }
   const double points =
       static_cast<double>(spec.members) * spec.states.size() * spec.settings.size();
   if (points > static_cast<double>(kMaxStudyPoints)) {

@@ -129,7 +129,7 @@ TEST_F(AdviceCheckCli, ListedSettingsAndSceneSetAreReadAndRefusedAsFilesAre) {
   const json scene_json = ReadJson(kRowScene);
   const std::vector<double> factors = LadderFactors(4);
   const json study = AdviceCheckStudy(ensemble, Path("row.json"), scene_json, LoadScene(kRowScene),
-                                      RowAdvice(), factors, 7);
+                                      RowAdvice(), {factors, 1, 0.95, 0.05}, 7);
   const EnsembleStudySpec spec = ParseEnsembleStudySpec(study, Path("study.json"));
   ASSERT_EQ(spec.settings.size(), factors.size());
   for (std::size_t k = 0; k < factors.size(); ++k)
@@ -158,6 +158,12 @@ TEST_F(AdviceCheckCli, ListedSettingsAndSceneSetAreReadAndRefusedAsFilesAre) {
   json unset = study;
   unset.erase("scene_set");
   refused(unset, "the scene has no number at \"bundle.pin.r_ftrunc\"");
+  json ladder = study;
+  ladder["advice_check"]["factors"].erase(0);
+  refused(ladder, "advice_check.factors: expected a list of 4 numbers, one per setting");
+  ladder = study;
+  ladder["advice_check"]["factors"][2] = 0.5;
+  refused(ladder, "advice_check.factors: 0.5 is not a positive number above the one before");
 }
 
 // Criteria whose truncations are a tenth of the shipped ones (the pins at ~125 f1, the duct at
@@ -181,6 +187,14 @@ TEST_F(AdviceCheckCli, ADeliberatelyBadAdviceIsReportedAsFailing) {
       std::regex_search(out.output, std::regex("It failed (already )?at mid_life duct pad")))
       << out.output;
   EXPECT_EQ(out.output.find("Advice held at 3 of 3"), std::string::npos) << out.output;
+  // The study's report opens with the same verdict.
+  const auto report =
+      RunShockmap("report row_advice_check --db " + Path("c.db") + " --out " + Path("report"));
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  std::ifstream page(Path("report/index.html"));
+  const std::string html((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_LT(html.find("id=\"advice-check-table\""), html.find("id=\"sizing-hottest-table\""));
+  EXPECT_TRUE(std::regex_search(html, std::regex("It failed (already )?at mid_life duct pad")));
 }
 
 TEST_F(AdviceCheckCli, AStudyOfAnotherKindIsRefusedWithExitCode2) {

@@ -1,12 +1,19 @@
 // The report's sections for an ensemble study (declared in views/html_report.h): the sizing
 // statistics of `shockmap sizing` (docs/ensembles.md, "Sizing") as sortable tables, the
-// settings' agreement, the impact statistics, the wear sizing and the sizing pictures.
+// settings' agreement, the impact statistics, the wear sizing and the sizing pictures; first,
+// for an advice check (`check-advice`), its verdict.
 
 #include <fmt/format.h>
 
+#include <iterator>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "core/input_error.h"
 #include "db/report_queries.h"
+#include "db/stored_json.h"
+#include "formats/advice_check_study.h"
+#include "views/advice_check.h"
 #include "views/html_report.h"
 #include "views/html_text.h"
 #include "views/setting_names.h"
@@ -122,13 +129,51 @@ std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
   return html;
 }
 
+// The advice's verdict when the study is an advice check (formats/advice_check_study.h): what
+// `check-advice` prints, at the quantile and tolerance it judged with; nullopt for any other
+// ensemble.
+std::optional<ReportSection> AdviceCheckSection(const ReportContext& ctx,
+                                                const StoredEnsemble& stored) {
+  const StoredCell cell{ctx.database_path, "study " + ctx.study, "spec_json"};
+  struct Ladder {
+    AdviceCheckRecord record;
+    std::vector<std::string> settings;
+  };
+  const auto ladder = ReadStoredJson(
+      cell, stored.spec_json, [&](const nlohmann::json& spec) -> std::optional<Ladder> {
+        if (!spec.contains("advice_check")) return std::nullopt;
+        Ladder l;
+        for (const nlohmann::json& s : spec.at("settings")) l.settings.push_back(s.dump());
+        try {
+          l.record = ParseAdviceCheckRecord(spec.at("advice_check"), ctx.database_path,
+                                            "advice_check", l.settings.size());
+        } catch (const InputError& e) {
+          ThrowCorruptCell(cell, e.what());
+        }
+        return l;
+      });
+  if (!ladder) return std::nullopt;
+  SizingOptions options;
+  options.quantile = ladder->record.quantile;
+  options.tolerance = ladder->record.tolerance;
+  const AdviceCheck check = CheckAdvice(SizeEnsemble(stored, ctx.study, options), ladder->settings,
+                                        ladder->record.factors, ladder->record.advised);
+  return ReportSection{
+      "advice-check", "Does the advice hold?",
+      "<p class=\"verdict\">" + HtmlEscaped(AdviceVerdict(check, options.quantile)) + "</p>\n" +
+          SortableTable(AdviceCheckTable(check), "advice-check-table",
+                        "The advised and the converged rung per clearance state and zone family")};
+}
+
 }  // namespace
 
 std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const StoredEnsemble& stored,
                                             const Scene& scene) {
   const EnsembleSizing sizing = SizeEnsemble(stored, ctx.study, SizingOptions{});
   const ReportTables tables = LoadReportTables(ctx.database_path, ctx.study);
-  return {
+  std::vector<ReportSection> sections;
+  if (auto advice = AdviceCheckSection(ctx, stored)) sections.push_back(std::move(*advice));
+  std::vector<ReportSection> sizing_sections = {
       {"sizing-hottest", "Sizing force of the hottest zone of each family",
        About(sizing, stored.spec_json) +
            SortableTable(WithSettingNames(HottestZoneTable(sizing, false), sizing, scene),
@@ -145,6 +190,8 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
        SortableTable(tables.provenance, "provenance-table", "Runs of the study")},
       {"study-file", "Study file", Preformatted(tables.spec_json)},
   };
+  std::ranges::move(sizing_sections, std::back_inserter(sections));
+  return sections;
 }
 
 }  // namespace shockmap
