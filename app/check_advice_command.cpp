@@ -9,12 +9,14 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "app/shared_data.h"
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
 #include "db/schema.h"
 #include "db/study_database.h"
+#include "engine/stop_request.h"
 #include "engine/study_run.h"
 #include "formats/advice_check_study.h"
 #include "formats/json_reader.h"
@@ -61,7 +63,7 @@ Json ReadEnsembleJson(const std::string& file) {
   return json;
 }
 
-// Each advised truncation with the beams that take it: "224.1 (wrapper), 1254 (17 pins)".
+// Each advised truncation with the beams that take it: "224.1 (wrapper), 1254 (17 beams)".
 std::string AdvisedTruncations(const SceneAdvice& advice) {
   std::map<double, std::vector<std::string>> beams;
   for (const BeamAdvice& b : advice.beams) beams[b.r_ftrunc].push_back(b.name);
@@ -81,6 +83,13 @@ EnsembleSizing RunLadder(const CheckAdviceFlags& f, const Json& study) {
   options.jobs = f.jobs;
   options.progress = !f.quiet;
   const StudyRunSummary s = RunStudy(parsed, options);
+  if (s.stop_signal != 0) {
+    fmt::print(stderr,
+               "shockmap: {} received: {} of the {} members to compute are stored; run "
+               "check-advice again to resume\n",
+               SignalName(s.stop_signal), s.points_computed, s.points_to_compute);
+    throw CLI::RuntimeError(kExitSignalBase + s.stop_signal);
+  }
   fmt::print("  {} members in the ladder, {} computed now\n", s.points_in_study, s.points_computed);
   Connection db(f.database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
@@ -112,6 +121,7 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
   fmt::print("advice for scene {} from {}: dt = {:g} dt_sharp, R_ftrunc {}\n", scene.name,
              criteria_file, advice.dt_ratio, AdvisedTruncations(advice));
   for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);
+  InstallStopHandlers();
   for (int rungs = kFirstRungs;; ++rungs) {
     const std::vector<double> factors = LadderFactors(rungs);
     const AdviceCheckRecord record{factors, kAdvisedRung, f.options.quantile, f.options.tolerance};
