@@ -137,9 +137,7 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
     }
     fmt::print("ladder: x {:.4g} of the advised truncations\n", fmt::join(factors, ", x "));
     const EnsembleSizing sizing = RunLadder(f, study);
-    std::vector<std::string> settings;
-    for (const Json& s : study.at("settings")) settings.push_back(s.dump());
-    const AdviceCheck check = CheckAdvice(sizing, settings, factors, kAdvisedRung);
+    const AdviceCheck check = CheckAdvice(sizing, study.at("settings"), factors, kAdvisedRung);
     const bool may_refine =
         rungs < f.max_rungs && RungFits(advice, LadderFactors(rungs + 1).back());
     if (check.converged || check.undecided || !may_refine) return PrintCheck(check, f.options);

@@ -65,14 +65,12 @@ LadderConvergence ConvergedRung(const std::vector<ZoneSizing>& rungs, double tol
   return c;
 }
 
-AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::string>& rung_settings,
+AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const nlohmann::json& settings,
                         const std::vector<double>& factors, int advised) {
   AdviceCheck check;
   check.factors = factors;
   check.advised = advised;
   check.tolerance = sizing.options.tolerance;
-  std::vector<nlohmann::json> settings;
-  for (const std::string& s : rung_settings) settings.push_back(nlohmann::json::parse(s));
   check.cpu_s_per_member.assign(settings.size(), 0.0);
   std::vector<std::string> states;
   for (const GroupSizing& g : sizing.groups) {

@@ -7,6 +7,7 @@
 // the sizing quantile, widened by the tolerance, overlap); the advice holds at a state and
 // family when its rung agrees with the converged one and every finer rung.
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,9 +44,9 @@ struct AdviceCheck {
   std::vector<double> cpu_s_per_member;  // Per rung, the mean over its states' members.
 };
 
-// `rung_settings`: each rung's setting JSON as stored (EnsembleSizing's setting_json), in the
-// order of `factors`. Throws InputError when a state lacks a rung's members.
-AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const std::vector<std::string>& rung_settings,
+// `rung_settings`: the study's "settings" list, each rung's setting in the order of `factors`.
+// Throws InputError when a state lacks a rung's members.
+AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const nlohmann::json& rung_settings,
                         const std::vector<double>& factors, int advised);
 
 // Whether `rung` agrees at a family with the converged rung and every finer one (nullopt:

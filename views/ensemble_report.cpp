@@ -137,13 +137,15 @@ std::optional<ReportSection> AdviceCheckSection(const ReportContext& ctx,
   const StoredCell cell{ctx.database_path, "study " + ctx.study, "spec_json"};
   struct Ladder {
     AdviceCheckRecord record;
-    std::vector<std::string> settings;
+    nlohmann::json settings;
   };
   const auto ladder = ReadStoredJson(
       cell, stored.spec_json, [&](const nlohmann::json& spec) -> std::optional<Ladder> {
         if (!spec.contains("advice_check")) return std::nullopt;
         Ladder l;
-        for (const nlohmann::json& s : spec.at("settings")) l.settings.push_back(s.dump());
+        l.settings = spec.at("settings");
+        if (!l.settings.is_array())
+          ThrowCorruptCell(cell, "settings: not a list of the ladder's rungs");
         try {
           l.record = ParseAdviceCheckRecord(spec.at("advice_check"), ctx.database_path,
                                             "advice_check", l.settings.size());
