@@ -104,5 +104,20 @@ TEST(SceneAdvice, AStudiedRkWithoutAPassingTruncationAroundTheZonesIsNamed) {
   EXPECT_TRUE(AdviseScene(ShippedScene("cantilever_spring"), far).warnings.empty());
 }
 
+// An unscored R_k is named where it lies among the studied R_k around the zones', not beyond
+// them: the row bundle's zones (up to 6.96e5) are not near an unscored 5.62e6, one at 3000 is
+// not near an unscored 1e6, and one at 1e6 is.
+TEST(SceneAdvice, AnUnscoredRkIsNamedOnlyAroundTheZones) {
+  ValidityCriteria criteria = ShippedCriteria();
+  criteria.unscored = {{5.62e6, 40, "far above"}};
+  EXPECT_TRUE(AdviseScene(ShippedScene("bundle_row"), criteria).warnings.empty());
+  criteria.unscored = {{1e6, 3, "the reference did not converge"}};
+  EXPECT_TRUE(AdviseScene(ShippedScene("cantilever_spring"), criteria).warnings.empty());
+  const SceneAdvice a = AdviseScene(ShippedScene("bundle_row"), criteria);
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_NE(a.warnings[0].find("left 3 points unscored, at R_k = 1e+06"), std::string::npos)
+      << a.warnings[0];
+}
+
 }  // namespace
 }  // namespace shockmap

@@ -47,6 +47,22 @@ std::optional<std::string> UnpassedWarning(const ValidityCriteria& criteria, dou
       fmt::join(unpassed, ", "), r_k_min, r_k_max);
 }
 
+// The criteria with only the unscored R_k among the studied R_k around the zones' [r_k_min,
+// r_k_max] (from the studied one at or below r_k_min to the one at or above r_k_max): elsewhere
+// an unmeasured boundary does not bear on the advice.
+ValidityCriteria UnscoredAroundZones(ValidityCriteria criteria, double r_k_min, double r_k_max) {
+  double lower = r_k_min;
+  std::optional<double> upper;
+  for (const RkBoundary& b : criteria.boundary) {
+    if (b.r_k <= r_k_min) lower = b.r_k;
+    if (!upper && b.r_k >= r_k_max) upper = b.r_k;
+  }
+  std::erase_if(criteria.unscored, [&](const PointsSetAside& u) {
+    return u.r_k < lower || (upper && u.r_k > *upper);
+  });
+  return criteria;
+}
+
 }  // namespace
 
 SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
@@ -103,7 +119,8 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
         "the truncation criterion is extrapolated there",
         r_k_min, r_k_max, lo->r_k, hi->r_k));
   }
-  if (const auto unscored = UnscoredWarning(criteria)) a.warnings.push_back(*unscored);
+  if (const auto unscored = UnscoredWarning(UnscoredAroundZones(criteria, r_k_min, r_k_max)))
+    a.warnings.push_back(*unscored);
   if (const auto holes = UnpassedWarning(criteria, r_k_min, r_k_max)) a.warnings.push_back(*holes);
   return a;
 }
