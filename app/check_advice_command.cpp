@@ -36,9 +36,10 @@ using Json = nlohmann::json;
 
 struct CheckAdviceFlags {
   std::string study_file;
-  std::string criteria = "studies/baselines/paper_fig4.json";
+  std::string criteria = kSceneCriteria;
   std::string database_path = kDefaultDatabasePath;
-  int members = 0;  // 0: the study file's.
+  int members = 0;        // 0: the study file's.
+  double window_s = 0.0;  // 0: the study file's.
   int jobs = 0;
   int max_rungs = 6;
   SizingOptions options;
@@ -49,8 +50,9 @@ struct CheckAdviceFlags {
 
 // The rung at factor 1 in LadderFactors' order (1/3 first).
 constexpr int kAdvisedRung = 1;
-// The first ladder: 1/3, 1, 3 and 9 times the advised truncations.
-constexpr int kFirstRungs = 4;
+// The first ladder: 1/3, 1 and 3 times the advised truncations (the advice holds where the
+// rung above it agrees; finer rungs are added only while a family has not converged).
+constexpr int kFirstRungs = 3;
 
 // The ensemble study file's JSON, refused unless it is an ensemble.
 Json ReadEnsembleJson(const std::string& file) {
@@ -125,8 +127,8 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
   for (int rungs = kFirstRungs;; ++rungs) {
     const std::vector<double> factors = LadderFactors(rungs);
     const AdviceCheckRecord record{factors, kAdvisedRung, f.options.quantile, f.options.tolerance};
-    const Json study =
-        AdviceCheckStudy(ensemble, f.study_file, scene_json, scene, advice, record, f.members);
+    const Json study = AdviceCheckStudy(ensemble, f.study_file, scene_json, scene, advice, record,
+                                        f.members, f.window_s);
     if (!f.write_study.empty()) {
       WriteFileAtomically(f.write_study, study.dump(2) + "\n");
       fmt::print(
@@ -165,6 +167,11 @@ void AddCheckAdviceCommand(CLI::App& app) {
   cmd->add_option("--members", flags->members,
                   "members per clearance state and rung (default: the study file's)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--window-s", flags->window_s,
+                  "simulated seconds of every member, from the start (default: the study file's "
+                  "window): the largest forces of the shock's first impacts at a fraction of the "
+                  "cost")
+      ->check(FiniteIn(0.0, true, 1e4));
   cmd->add_option("--jobs", flags->jobs, "worker threads (default: number of cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")

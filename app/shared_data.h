@@ -9,6 +9,11 @@
 
 namespace shockmap {
 
+// The criteria a scene's zones are advised and checked with (`advise SCENE.json`,
+// `check-advice`): the mode-resolution study's boundary with the first shock's peak force within
+// 10 % (PFr >= 0.9), the statistic a zone is sized on (docs/physics.md §5.1).
+inline constexpr const char* kSceneCriteria = "studies/baselines/modes_fig4_peak_force.json";
+
 // <folder of the running binary (/proc/self/exe)>/../share/shockmap; empty when the binary's
 // location cannot be read.
 std::filesystem::path SharedDataFolder();

@@ -33,7 +33,7 @@ struct ViewFlags {
   std::string out;
   double r_k = 0.0;
   bool json = false;
-  std::string criteria = "studies/baselines/paper_fig4.json";
+  std::string criteria = kSceneCriteria;
   bool every_zone = false;
   SceneFileAccess access;
 };
@@ -144,7 +144,8 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
       advise
           ->add_option("--criteria", flags->criteria,
                        "with a scene file for STUDY: criteria JSON written by `criteria derive "
-                       "--out`; the default is looked up in the working folder, then in the "
+                       "--out`; the default, the peak-force criteria a zone is sized with "
+                       "(docs/physics.md §5.1), is looked up in the working folder, then in the "
                        "shared data installed with shockmap (share/shockmap)")
           ->capture_default_str();
   advise->add_flag("--zones", flags->every_zone, "with a scene file: also list every zone");

@@ -116,7 +116,7 @@ AdviceCheckRecord ParseAdviceCheckRecord(const Json& json, const std::string& fi
 
 Json AdviceCheckStudy(const Json& ensemble, const std::string& file, const Json& scene_json,
                       const Scene& scene, const SceneAdvice& advice,
-                      const AdviceCheckRecord& record, int members) {
+                      const AdviceCheckRecord& record, int members, double window_s) {
   const std::vector<double>& factors = record.factors;
   Json study = ensemble;
   const std::string name = ensemble.value("name", std::string("ensemble"));
@@ -130,6 +130,7 @@ Json AdviceCheckStudy(const Json& ensemble, const std::string& file, const Json&
                        .lexically_normal()
                        .string();
   if (members > 0) study["members"] = members;
+  if (window_s > 0.0) study["window_s"] = window_s;
   Json settings = Json::array();
   for (double f : factors) settings.push_back(RungSetting(scene_json, scene, advice, f));
   Json scene_set = Json::object();

@@ -50,11 +50,12 @@ AdviceCheckRecord ParseAdviceCheckRecord(const nlohmann::json& json, const std::
 // The ensemble study `ensemble` (its JSON, from `file`) as the ladder's study: named
 // "<name>_advice_check", its scene by absolute path, the rung settings listed coarsest first
 // (the finest refined), the keys they set written into the scene where it left them at their
-// default ("scene_set"), `members` members per state and rung when positive, and the ladder
-// recorded ("advice_check", record.factors its factors).
+// default ("scene_set"), `members` members per state and rung and a window of `window_s` seconds
+// when positive (else the study file's), and the ladder recorded ("advice_check", record.factors
+// its factors).
 nlohmann::json AdviceCheckStudy(const nlohmann::json& ensemble, const std::string& file,
                                 const nlohmann::json& scene_json, const Scene& scene,
                                 const SceneAdvice& advice, const AdviceCheckRecord& record,
-                                int members);
+                                int members, double window_s);
 
 }  // namespace shockmap

@@ -62,6 +62,33 @@ TEST(AdviceLadder, ConvergesWhereTheStatisticsStopMoving) {
   EXPECT_FALSE(few.rung.has_value());
 }
 
+// Where the advised rung is the converged one, the verdict says so and names the family a third
+// of the advice is not enough for; where a coarser rung converged, it says how much cheaper.
+TEST(AdviceLadder, TheVerdictSaysWhetherTheAdviceIsTheConvergedSetting) {
+  AdviceCheck check;
+  check.factors = {1.0 / 3.0, 1.0, 3.0};
+  check.cpu_s_per_member = {0.1, 0.4, 2.0};
+  const auto family = [](ZoneFamily f, double off_at_third) {
+    FamilyLadder ladder{"new", f, "zone", {}, {}};
+    for (double off : {off_at_third, 0.0, 0.0})
+      ladder.rungs.push_back(ExponentialZone(2000, 1.0 + off));
+    ladder.convergence = ConvergedRung(ladder.rungs, 0.05);
+    return ladder;
+  };
+  check.families = {family(ZoneFamily::kPinPinWire, 0.0), family(ZoneFamily::kDuctPad, 1.0)};
+  check.converged = 1;
+  const std::string at_advice = AdviceVerdict(check, 0.95);
+  EXPECT_NE(at_advice.find("Advice held at 2 of 2"), std::string::npos) << at_advice;
+  EXPECT_NE(at_advice.find("it is the converged setting"), std::string::npos) << at_advice;
+  EXPECT_NE(at_advice.find("x 1/3 of it is not enough for the duct pad."), std::string::npos)
+      << at_advice;
+  check.families = {family(ZoneFamily::kPinPinWire, 0.0), family(ZoneFamily::kDuctPad, 0.0)};
+  check.converged = 0;
+  const std::string below = AdviceVerdict(check, 0.95);
+  EXPECT_NE(below.find("x 1/3 of the advised truncations"), std::string::npos) << below;
+  EXPECT_NE(below.find("costs 0.1 s, 4 times less"), std::string::npos) << below;
+}
+
 json ReadJson(const std::string& path) { return json::parse(std::ifstream(path)); }
 
 const std::string kRowScene = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json";
@@ -72,6 +99,30 @@ SceneAdvice RowAdvice() {
       std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json";
   return AdviseScene(LoadScene(kRowScene),
                      CriteriaFromJson(ReadJson(criteria), criteria, &tolerances));
+}
+
+// The shipped scene criteria (docs/physics.md §5.1) size on the peak force: their boundary
+// grows as R_k^(2/3), the contact frequency of a spring on a beam, not as the paper's sqrt(R_k);
+// they give the row's pins at least the truncation from which the wires' P95 stopped moving
+// under the Err and SRf criteria's advice (9 x 1254, docs/ensembles.md), and the duct more than
+// the third of the Err and SRf advice at which its pad had not settled.
+TEST(AdviceLadder, TheSceneCriteriaGiveTheWiresWhatTheirStatisticsNeeded) {
+  CriteriaTolerances tolerances;
+  const std::string file =
+      std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/modes_fig4_peak_force.json";
+  const ValidityCriteria criteria = CriteriaFromJson(ReadJson(file), file, &tolerances);
+  ASSERT_TRUE(criteria.fit.has_value());
+  EXPECT_LT(criteria.fit->p_low, 2.0 / 3.0);
+  EXPECT_GT(criteria.fit->p_high, 2.0 / 3.0);
+  EXPECT_GT(criteria.fit->p_low, 0.5);
+  const SceneAdvice advice = AdviseScene(LoadScene(kRowScene), criteria);
+  const SceneAdvice err_srf = RowAdvice();
+  ASSERT_EQ(advice.beams.size(), err_srf.beams.size());
+  for (std::size_t b = 0; b < advice.beams.size(); ++b) {
+    const bool pin = advice.beams[b].name != "wrapper";
+    EXPECT_GE(advice.beams[b].r_ftrunc, (pin ? 9.0 : 1.0 / 3.0) * err_srf.beams[b].r_ftrunc)
+        << advice.beams[b].name;
+  }
 }
 
 // A rung scales every beam's advised truncation; the bundle's pins share the largest of theirs,
@@ -129,8 +180,9 @@ TEST_F(AdviceCheckCli, ListedSettingsAndSceneSetAreReadAndRefusedAsFilesAre) {
   const json scene_json = ReadJson(kRowScene);
   const std::vector<double> factors = LadderFactors(4);
   const json study = AdviceCheckStudy(ensemble, Path("row.json"), scene_json, LoadScene(kRowScene),
-                                      RowAdvice(), {factors, 1, 0.95, 0.05}, 7);
+                                      RowAdvice(), {factors, 1, 0.95, 0.05}, 7, 0.015);
   const EnsembleStudySpec spec = ParseEnsembleStudySpec(study, Path("study.json"));
+  EXPECT_EQ(spec.window_s, 0.015);
   ASSERT_EQ(spec.settings.size(), factors.size());
   for (std::size_t k = 0; k < factors.size(); ++k)
     EXPECT_EQ(spec.settings[k], study["settings"][k]);
@@ -166,8 +218,8 @@ TEST_F(AdviceCheckCli, ListedSettingsAndSceneSetAreReadAndRefusedAsFilesAre) {
   refused(ladder, "advice_check.factors: 0.5 is not a positive number above the one before");
 }
 
-// Criteria whose truncations are a tenth of the shipped ones (the pins at ~125 f1, the duct at
-// ~22): the check finds the advised median off the finest rung's beyond their intervals (the
+// Criteria whose truncations are a tenth of the Err and SRf ones (the pins at ~125 f1, the duct
+// at ~22): the check finds the advised median off the finest rung's beyond their intervals (the
 // duct pad by about half) and says the advice failed. The median, which 30 members bound, keeps
 // the test short; the ladder stops at 9 times the advice.
 TEST_F(AdviceCheckCli, ADeliberatelyBadAdviceIsReportedAsFailing) {

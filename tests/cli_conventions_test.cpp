@@ -228,7 +228,7 @@ TEST_F(CliConventions, DefaultFileNamesCarryNoFloatNoise) {
 TEST_F(CliConventions, AdviseFindsItsDefaultCriteriaBesideTheBinary) {
   const std::string source = SHOCKMAP_SOURCE_DIR;
   const std::string scene = source + "/scenes/bundle_hex_7.json";
-  const std::string baseline = "studies/baselines/paper_fig4.json";
+  const std::string baseline = "studies/baselines/modes_fig4_peak_force.json";
   std::filesystem::create_directories(Path("work"));
   std::filesystem::create_directories(Path("prefix/bin"));
   std::filesystem::copy_file(SHOCKMAP_BIN, Path("prefix/bin/shockmap"));

@@ -1,5 +1,6 @@
 // The mode-resolution studies against their shipped criteria baselines (docs/fidelity.md):
-// the Err and SRf boundary of the explicit modal scheme at one point per retained-mode count.
+// the Err and SRf boundary of the explicit modal scheme at one point per retained-mode count,
+// and with the first shock's peak force (the criteria a scene's zones are advised with).
 // Long: two studies of 1000 points each.
 
 #include <gtest/gtest.h>
@@ -42,6 +43,9 @@ TEST_F(ModeResolutionStudies, AgreeWithTheirBaselinesAtExactModeCounts) {
   const auto check = RunShockmap("criteria check modes_fig4 --db " + db_ + " --baseline " +
                                  Source("studies/baselines/modes_fig4.json"));
   EXPECT_EQ(check.exit_code, 0) << check.output;
+  const auto peak_force = RunShockmap("criteria check modes_fig4 --db " + db_ + " --baseline " +
+                                      Source("studies/baselines/modes_fig4_peak_force.json"));
+  EXPECT_EQ(peak_force.exit_code, 0) << peak_force.output;
 
   const auto srf =
       RunShockmap("criteria check modes_fig4_first_contact --db " + db_ + " --baseline " +

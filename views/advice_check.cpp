@@ -44,6 +44,39 @@ std::string Families(const AdviceCheck& check, const std::vector<const FamilyLad
   return text;
 }
 
+// What the converged setting costs beside the advised one; where they are the same rung, the
+// families a rung coarser would not do for.
+std::string ConvergedCost(const AdviceCheck& check, const std::string& q) {
+  const std::string agreeing = fmt::format(
+      "every finer rung agrees within the {} intervals "
+      "widened by {:g} %",
+      q, 100 * check.tolerance);
+  const double advised_cpu = check.cpu_s_per_member[check.advised];
+  const double converged_cpu = check.cpu_s_per_member[*check.converged];
+  if (*check.converged != check.advised) {
+    return fmt::format(
+        "the converged setting (x {} of the advised truncations, where {}) costs {:.3g} s, {:.3g} "
+        "times {}",
+        Factor(check.factors[*check.converged]), agreeing, converged_cpu,
+        converged_cpu >= advised_cpu ? converged_cpu / advised_cpu : advised_cpu / converged_cpu,
+        converged_cpu >= advised_cpu ? "as much" : "less");
+  }
+  std::vector<std::string> needing;
+  for (const FamilyLadder& f : check.families) {
+    const std::string name = FamilyName(f.family);
+    if (f.convergence.rung == check.advised && std::ranges::find(needing, name) == needing.end())
+      needing.push_back(name);
+  }
+  std::string names;
+  for (std::size_t k = 0; k < needing.size(); ++k)
+    names += (k == 0 ? "" : k + 1 == needing.size() ? " and " : ", ") + needing[k];
+  return fmt::format("it is the converged setting ({}){}", agreeing,
+                     check.advised > 0
+                         ? fmt::format("; x {} of it is not enough for the {}",
+                                       Factor(check.factors[check.advised - 1]), names)
+                         : std::string());
+}
+
 }  // namespace
 
 LadderConvergence ConvergedRung(const std::vector<ZoneSizing>& rungs, double tolerance) {
@@ -149,16 +182,11 @@ std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
   std::vector<const FamilyLadder*> held, failed;
   for (const FamilyLadder& f : check.families)
     (*AdviceHolds(check, f) ? held : failed).push_back(&f);
-  const double advised_cpu = check.cpu_s_per_member[check.advised];
-  const double converged_cpu = check.cpu_s_per_member[*check.converged];
   std::string verdict = fmt::format(
       "Advice held at {} of {} state and zone family pairs ({}) at {:.3g} s of CPU per member; "
-      "the converged setting (x {} of the advised truncations, where every finer rung agrees "
-      "within the {} intervals widened by {:g} %) costs {:.3g} s, {:.3g} times {}.",
-      held.size(), check.families.size(), Families(check, held), advised_cpu,
-      Factor(check.factors[*check.converged]), q, 100 * check.tolerance, converged_cpu,
-      converged_cpu >= advised_cpu ? converged_cpu / advised_cpu : advised_cpu / converged_cpu,
-      converged_cpu >= advised_cpu ? "as much" : "less");
+      "{}.",
+      held.size(), check.families.size(), Families(check, held),
+      check.cpu_s_per_member[check.advised], ConvergedCost(check, q));
   for (const FamilyLadder* f : failed) {
     // The first converged rung the advised one disagrees with.
     std::size_t k = *check.converged;

@@ -33,7 +33,7 @@ step(${prefix}/bin/shockmap --version)
 
 # The installed advice on an installed scene, its criteria from the installed baseline.
 step(${prefix}/bin/shockmap advise ${prefix}/share/shockmap/scenes/bundle_hex_7.json)
-expect("^criteria from ${prefix}/share/shockmap/studies/baselines/paper_fig4.json\n.*R_k"
+expect("^criteria from ${prefix}/share/shockmap/studies/baselines/modes_fig4_peak_force.json\n.*R_k"
        "advise with the default criteria")
 file(GLOB leftovers ${WORK_DIR}/empty/*)
 if(leftovers)
