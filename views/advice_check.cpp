@@ -47,10 +47,9 @@ std::string Families(const AdviceCheck& check, const std::vector<const FamilyLad
 // What the converged setting costs beside the advised one; where they are the same rung, the
 // families a rung coarser would not do for.
 std::string ConvergedCost(const AdviceCheck& check, const std::string& q) {
-  const std::string agreeing = fmt::format(
-      "every finer rung agrees within the {} intervals "
-      "widened by {:g} %",
-      q, 100 * check.tolerance);
+  const std::string agreeing =
+      fmt::format("every finer rung agrees within the {} intervals widened by {:g} %", q,
+                  100 * check.tolerance);
   const double advised_cpu = check.cpu_s_per_member[check.advised];
   const double converged_cpu = check.cpu_s_per_member[*check.converged];
   if (*check.converged != check.advised) {
