@@ -3,11 +3,14 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "app/exit_codes.h"
 #include "app/flag_checks.h"
@@ -38,8 +41,9 @@ struct CheckAdviceFlags {
   std::string study_file;
   std::string criteria = kSceneCriteria;
   std::string database_path = kDefaultDatabasePath;
-  int members = 0;        // 0: the study file's.
-  double window_s = 0.0;  // 0: the study file's.
+  int members = 0;                  // 0: the study file's.
+  double window_s = 0.0;            // 0: the study file's.
+  std::vector<std::string> states;  // Empty: every clearance state of the study file.
   int jobs = 0;
   int max_rungs = 6;
   SizingOptions options;
@@ -63,6 +67,29 @@ Json ReadEnsembleJson(const std::string& file) {
                      "whose draws and clearance states the advice is checked on");
   }
   return json;
+}
+
+// The ensemble with only the clearance states `names` (every one when empty), in its order.
+// Throws InputError naming --states, the name and the study's states when one is not there.
+Json WithStates(Json ensemble, const std::vector<std::string>& names, const std::string& file) {
+  if (names.empty()) return ensemble;
+  const Json all = ensemble.value("clearance_states", Json::array());
+  std::vector<std::string> known;
+  for (const Json& state : all) known.push_back(state.value("name", std::string()));
+  for (const std::string& name : names) {
+    if (std::ranges::find(known, name) == known.end()) {
+      throw InputError(
+          fmt::format("--states: \"{}\" is not a clearance state of {} (it has: {})", name, file,
+                      known.empty() ? "none" : fmt::format("{}", fmt::join(known, ", "))));
+    }
+  }
+  Json kept = Json::array();
+  for (const Json& state : all) {
+    if (std::ranges::find(names, state.value("name", std::string())) != names.end())
+      kept.push_back(state);
+  }
+  ensemble["clearance_states"] = kept;
+  return ensemble;
 }
 
 // Each advised truncation with the beams that take it: "224.1 (wrapper), 1254 (17 beams)".
@@ -111,7 +138,7 @@ void PrintCheck(const AdviceCheck& check, const SizingOptions& options) {
 }
 
 void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
-  const Json ensemble = ReadEnsembleJson(f.study_file);
+  const Json ensemble = WithStates(ReadEnsembleJson(f.study_file), f.states, f.study_file);
   const std::filesystem::path scene_file =
       (std::filesystem::path(f.study_file).parent_path() / ensemble.at("scene").get<std::string>())
           .lexically_normal();
@@ -172,6 +199,9 @@ void AddCheckAdviceCommand(CLI::App& app) {
                   "window): the largest forces of the shock's first impacts at a fraction of the "
                   "cost")
       ->check(FiniteIn(0.0, true, 1e4));
+  cmd->add_option("--states", flags->states,
+                  "the clearance states to check, by name (default: every state of the study)")
+      ->delimiter(',');
   cmd->add_option("--jobs", flags->jobs, "worker threads (default: number of cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")

@@ -249,6 +249,29 @@ TEST_F(AdviceCheckCli, ADeliberatelyBadAdviceIsReportedAsFailing) {
   EXPECT_TRUE(std::regex_search(html, std::regex("It failed (already )?at mid_life duct pad")));
 }
 
+// --states checks the states named only; a name the study lacks is refused before anything runs.
+TEST_F(AdviceCheckCli, StatesAreChosenByNameAndAnUnknownOneIsRefused) {
+  json row = RowEnsemble(3, 0.005);
+  row["clearance_states"] =
+      ReadJson(std::string(SHOCKMAP_SOURCE_DIR) + "/studies/bundle_row_ensemble.json")
+          .at("clearance_states");
+  const std::string file = Write(row, "row.json");
+  const auto unknown =
+      RunShockmap("check-advice " + file + " --states mid_life,eol --db " + Path("c.db"));
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("--states: \"eol\" is not a clearance state of " + file +
+                                " (it has: new, mid_life, end_of_life)"),
+            std::string::npos)
+      << unknown.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("c.db")));
+  const auto one = RunShockmap("check-advice " + file + " --states new --db " + Path("c.db") +
+                               " --jobs 2 --quiet --quantile 0.5 --max-rungs 3");
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  EXPECT_NE(one.output.find("9 members in the ladder"), std::string::npos) << one.output;
+  EXPECT_NE(one.output.find("\nnew "), std::string::npos) << one.output;
+  EXPECT_EQ(one.output.find("mid_life"), std::string::npos) << one.output;
+}
+
 TEST_F(AdviceCheckCli, AStudyOfAnotherKindIsRefusedWithExitCode2) {
   const auto out = RunShockmap("check-advice " + std::string(SHOCKMAP_SOURCE_DIR) +
                                "/studies/quick.json --db " + Path("c.db"));
