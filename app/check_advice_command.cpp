@@ -71,11 +71,17 @@ Json ReadEnsembleJson(const std::string& file) {
 
 // The ensemble with only the clearance states `names` (every one when empty), in its order.
 // Throws InputError naming --states, the name and the study's states when one is not there.
+// A state whose entry is malformed has no name here; the study file's parser names its fault.
 Json WithStates(Json ensemble, const std::vector<std::string>& names, const std::string& file) {
   if (names.empty()) return ensemble;
+  const auto name_of = [](const Json& state) {
+    return state.is_object() && state.contains("name") && state["name"].is_string()
+               ? state["name"].get<std::string>()
+               : std::string();
+  };
   const Json all = ensemble.value("clearance_states", Json::array());
   std::vector<std::string> known;
-  for (const Json& state : all) known.push_back(state.value("name", std::string()));
+  for (const Json& state : all) known.push_back(name_of(state));
   for (const std::string& name : names) {
     if (std::ranges::find(known, name) == known.end()) {
       throw InputError(
@@ -85,8 +91,7 @@ Json WithStates(Json ensemble, const std::vector<std::string>& names, const std:
   }
   Json kept = Json::array();
   for (const Json& state : all) {
-    if (std::ranges::find(names, state.value("name", std::string())) != names.end())
-      kept.push_back(state);
+    if (std::ranges::find(names, name_of(state)) != names.end()) kept.push_back(state);
   }
   ensemble["clearance_states"] = kept;
   return ensemble;
