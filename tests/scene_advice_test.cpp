@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,10 +19,12 @@
 namespace shockmap {
 namespace {
 
-ValidityCriteria ShippedCriteria() {
-  const std::string file = std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json";
+ValidityCriteria CriteriaOf(const std::string& baseline) {
+  const std::string file = std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/" + baseline;
   return CriteriaFromJson(ReadJsonFile(file), file, nullptr);
 }
+
+ValidityCriteria ShippedCriteria() { return CriteriaOf("paper_fig4.json"); }
 
 Scene ShippedScene(const std::string& name) {
   return LoadScene(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/" + name + ".json");
@@ -76,6 +79,27 @@ TEST(SceneAdvice, ShippedBundlesNeedNoExtrapolationAndAStifferZoneIsNamed) {
   EXPECT_NE(a.warnings[0].find("beyond the criteria's studied range [0.01, 1e+06]"),
             std::string::npos)
       << a.warnings[0];
+}
+
+// The criteria a scene is advised with by default (the peak force on the mode-resolution grid,
+// docs/physics.md §5.1) were studied from R_k = 0.01, below the shipped bundles' softest zone
+// side (0.0234): every zone lies inside their R_k and none is called extrapolated.
+TEST(SceneAdvice, TheSceneCriteriaWereStudiedOverEveryZoneOfTheShippedBundles) {
+  const ValidityCriteria criteria = CriteriaOf("modes_fig4_peak_force.json");
+  for (const char* name : {"bundle_row", "bundle_hex_7", "bundle_hex"}) {
+    const SceneAdvice a = AdviseScene(ShippedScene(name), criteria);
+    ASSERT_FALSE(a.zones.empty()) << name;
+    for (const ZoneAdvice& z : a.zones) {
+      for (const auto r_k : {std::optional<double>(z.r_k_a), z.r_k_b}) {
+        if (!r_k) continue;
+        EXPECT_GE(*r_k, criteria.boundary.front().r_k) << name << " " << z.name;
+        EXPECT_LE(*r_k, criteria.boundary.back().r_k) << name << " " << z.name;
+      }
+    }
+    for (const std::string& w : a.warnings) {
+      EXPECT_EQ(w.find("beyond the criteria's studied range"), std::string::npos) << name << w;
+    }
+  }
 }
 
 // A studied R_k where no truncation passes has no boundary, so the fit's envelope does not
