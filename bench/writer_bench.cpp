@@ -1,10 +1,12 @@
 // The one writer's throughput (Google Benchmark): what rank 0 of an MPI job (or the calling
 // thread of a local run) does per finished point, with synthetic results and no physics:
-// decode the outcome's bytes as they arrive from a worker rank, then commit it, one point per
-// transaction, through StoreOutcome, as the engine does.
-//   Writer/Canonical   a scored point of studies/quick.json (a typical shocks_json)
-//   Writer/Scene       a scored point of studies/bundle_row_truncation.json
-// items_per_second is results committed per wall-clock second (the CPU column: per second of
+// decode the outcome's bytes as they arrive from a worker rank, then store it through
+// StoreOutcomes in groups of the argument's size, one transaction each (the engine's groups
+// hold up to kMaxGroup points when results arrive faster than kGroupLatencyS; 1 is a point
+// arriving alone).
+//   Writer/Canonical/N   a scored point of studies/quick.json (a typical shocks_json)
+//   Writer/Scene/N       a scored point of studies/bundle_row_truncation.json
+// items_per_second is results stored per wall-clock second (the CPU column: per second of
 // the writer's own time, what it reaches on a core of its own); bytes_per_result is the
 // outcome's message.
 
@@ -13,9 +15,11 @@
 #include <filesystem>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "engine/canonical_study.h"
 #include "engine/scene_study.h"
+#include "engine/study_engine.h"
 
 namespace shockmap {
 namespace {
@@ -98,11 +102,18 @@ void Writer(benchmark::State& state, const Kind& kind) {
   EncodeOutcome(kind, SyntheticOutcome(kind, reference), out);
   const std::string bytes = out.Take();
   const PointOrigin origin{"worker-host", 1};
+  const auto group_size = static_cast<std::size_t>(state.range(0));
+  std::vector<FinishedPoint<Kind>> group;
   std::int64_t i = 0;
   for (auto _ : state) {
     ByteReader in(bytes);
-    StoreOutcome(kind, db, 1 + i++ % kPoints, run, origin, DecodeOutcome(kind, in));
+    group.push_back({1 + i++ % kPoints, origin, DecodeOutcome(kind, in)});
+    if (group.size() == group_size) {
+      StoreOutcomes<Kind>(kind, db, run, group);
+      group.clear();
+    }
   }
+  if (!group.empty()) StoreOutcomes<Kind>(kind, db, run, group);
   state.SetItemsProcessed(state.iterations());
   state.counters["bytes_per_result"] = static_cast<double>(bytes.size());
   db.EndRun(run, RunEnd::kCompleted);
@@ -119,8 +130,18 @@ void Scene(benchmark::State& state) {
                     ReadStudyFile(Source("studies/bundle_row_truncation.json")))));
 }
 
-BENCHMARK(Canonical)->Name("Writer/Canonical")->Unit(benchmark::kMicrosecond)->UseRealTime();
-BENCHMARK(Scene)->Name("Writer/Scene")->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(Canonical)
+    ->Name("Writer/Canonical")
+    ->Arg(1)
+    ->Arg(kMaxGroup)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
+BENCHMARK(Scene)
+    ->Name("Writer/Scene")
+    ->Arg(1)
+    ->Arg(kMaxGroup)
+    ->Unit(benchmark::kMicrosecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace shockmap

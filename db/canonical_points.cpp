@@ -1,15 +1,18 @@
 #include "db/canonical_points.h"
 
+#include <string>
+
 #include "db/corrupt_rows.h"
 #include "db/stored_record.h"
 
 namespace shockmap {
 
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<ScoreRow>& score) {
-  c.Prepare("DELETE FROM scores WHERE point_id = ?").Bind(1, point_id).Run();
+  c.Cached("DELETE FROM scores WHERE point_id = ?").Bind(1, point_id).Run();
   if (!score) return;
-  Statement insert = c.Prepare("INSERT INTO scores(point_id, " + ColumnList(kScoreColumns) +
-                               ") VALUES (?, " + Placeholders(std::size(kScoreColumns)) + ")");
+  static const std::string kInsert = "INSERT INTO scores(point_id, " + ColumnList(kScoreColumns) +
+                                     ") VALUES (?, " + Placeholders(std::size(kScoreColumns)) + ")";
+  Statement& insert = c.Cached(kInsert);
   insert.Bind(1, point_id);
   BindRecord(insert, 2, *score, kScoreColumns);
   insert.Run();

@@ -13,7 +13,7 @@
 namespace shockmap {
 
 // Replaces the point's score row by `score` (none when it was not computed), on the writer's
-// connection inside StorePointOutcome's transaction.
+// connection inside StorePointOutcomes' transaction.
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<ScoreRow>& score);
 
 // Throws DbError when the stored row is corrupt (db/corrupt_rows.h).

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <string>
+
 #include "db/corrupt_rows.h"
 #include "db/read_only_query.h"
 #include "db/stored_json.h"
@@ -12,9 +14,10 @@ namespace shockmap {
 namespace {
 
 void InsertZones(Connection& c, std::int64_t point_id, const std::vector<EnsembleZoneRow>& zones) {
-  Statement insert = c.Prepare("INSERT INTO ensemble_member_zones(point_id, zone, " +
-                               ColumnList(kEnsembleZoneColumns) + ") VALUES (?, ?, " +
-                               Placeholders(std::size(kEnsembleZoneColumns)) + ")");
+  static const std::string kInsert = "INSERT INTO ensemble_member_zones(point_id, zone, " +
+                                     ColumnList(kEnsembleZoneColumns) + ") VALUES (?, ?, " +
+                                     Placeholders(std::size(kEnsembleZoneColumns)) + ")";
+  Statement& insert = c.Cached(kInsert);
   for (std::size_t i = 0; i < zones.size(); ++i) {
     insert.Reset();
     insert.Bind(1, point_id).Bind(2, static_cast<std::int64_t>(i));
@@ -25,9 +28,10 @@ void InsertZones(Connection& c, std::int64_t point_id, const std::vector<Ensembl
 
 void InsertImpacts(Connection& c, std::int64_t point_id,
                    const std::vector<EnsembleImpactRow>& impacts) {
-  Statement insert = c.Prepare("INSERT INTO ensemble_member_impacts(point_id, " +
-                               ColumnList(kEnsembleImpactColumns) + ") VALUES (?, " +
-                               Placeholders(std::size(kEnsembleImpactColumns)) + ")");
+  static const std::string kInsert = "INSERT INTO ensemble_member_impacts(point_id, " +
+                                     ColumnList(kEnsembleImpactColumns) + ") VALUES (?, " +
+                                     Placeholders(std::size(kEnsembleImpactColumns)) + ")";
+  Statement& insert = c.Cached(kInsert);
   for (const EnsembleImpactRow& impact : impacts) {
     insert.Reset();
     insert.Bind(1, point_id);
@@ -101,10 +105,11 @@ std::vector<StoredMember> ReadMembersNotOk(Connection& c, std::int64_t study_id)
 
 void WriteScore(Connection& c, std::int64_t point_id,
                 const std::optional<EnsembleMemberRow>& score) {
-  c.Prepare("DELETE FROM ensemble_member_zones WHERE point_id = ?").Bind(1, point_id).Run();
-  c.Prepare("DELETE FROM ensemble_member_impacts WHERE point_id = ?").Bind(1, point_id).Run();
-  Statement update = c.Prepare("UPDATE ensemble_members SET " +
-                               Assignments(kEnsembleMemberColumns) + " WHERE point_id = ?");
+  c.Cached("DELETE FROM ensemble_member_zones WHERE point_id = ?").Bind(1, point_id).Run();
+  c.Cached("DELETE FROM ensemble_member_impacts WHERE point_id = ?").Bind(1, point_id).Run();
+  static const std::string kUpdate =
+      "UPDATE ensemble_members SET " + Assignments(kEnsembleMemberColumns) + " WHERE point_id = ?";
+  Statement& update = c.Cached(kUpdate);
   const int next = score ? BindRecord(update, 1, *score, kEnsembleMemberColumns)
                          : BindNulls(update, 1, kEnsembleMemberColumns);
   if (score) InsertZones(c, point_id, score->zones);

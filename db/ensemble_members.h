@@ -15,7 +15,7 @@
 namespace shockmap {
 
 // Sets the member's score columns and replaces its zone rows (none when it was not computed),
-// on the writer's connection inside StorePointOutcome's transaction.
+// on the writer's connection inside StorePointOutcomes' transaction.
 void WriteScore(Connection& c, std::int64_t point_id,
                 const std::optional<EnsembleMemberRow>& score);
 std::optional<EnsembleReferenceRow> FindEnsembleReference(StudyDatabase& db,

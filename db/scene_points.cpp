@@ -1,12 +1,15 @@
 #include "db/scene_points.h"
 
+#include <string>
+
 #include "db/corrupt_rows.h"
 
 namespace shockmap {
 
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneScoreRow>& score) {
-  Statement update = c.Prepare("UPDATE scene_points SET " + Assignments(kSceneScoreColumns) +
-                               " WHERE point_id = ?");
+  static const std::string kUpdate =
+      "UPDATE scene_points SET " + Assignments(kSceneScoreColumns) + " WHERE point_id = ?";
+  Statement& update = c.Cached(kUpdate);
   const int next = score ? BindRecord(update, 1, *score, kSceneScoreColumns)
                          : BindNulls(update, 1, kSceneScoreColumns);
   update.Bind(next, point_id).Run();

@@ -13,7 +13,7 @@
 namespace shockmap {
 
 // Sets the point's score columns from `score` (NULL when it was not computed), on the writer's
-// connection inside StorePointOutcome's transaction.
+// connection inside StorePointOutcomes' transaction.
 void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneScoreRow>& score);
 // Throws DbError when the stored row is corrupt (db/corrupt_rows.h).
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key);

@@ -97,7 +97,10 @@ Connection::Connection(const std::string& path, Mode mode) : path_(path) {
   if (mode == Mode::kReadOnly) Execute("PRAGMA query_only = 1");
 }
 
-Connection::~Connection() { sqlite3_close_v2(db_); }
+Connection::~Connection() {
+  cached_.clear();  // Finalized before the connection closes.
+  sqlite3_close_v2(db_);
+}
 
 void Connection::Execute(std::string_view sql) {
   char* err = nullptr;
@@ -120,6 +123,15 @@ Statement Connection::Prepare(std::string_view sql) {
   }
   if (stmt == nullptr) throw DbError("empty SQL statement");
   return Statement(db_, stmt, std::string(sql));
+}
+
+Statement& Connection::Cached(std::string_view sql) {
+  auto it = cached_.find(sql);
+  if (it == cached_.end()) {
+    it = cached_.emplace(std::string(sql), std::make_unique<Statement>(Prepare(sql))).first;
+  }
+  it->second->Reset();
+  return *it->second;
 }
 
 std::int64_t Connection::LastInsertRowId() const { return sqlite3_last_insert_rowid(db_); }

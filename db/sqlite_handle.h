@@ -5,6 +5,9 @@
 #include <sqlite3.h>
 
 #include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -47,6 +50,10 @@ class Connection {
   // Runs one or more statements without results.
   void Execute(std::string_view sql);
   Statement Prepare(std::string_view sql);
+  // The statement of `sql` prepared once for the connection's life and reset (bindings
+  // cleared) on every call: for the writer's statements run once per stored point. The
+  // reference is valid until the connection closes; one use at a time.
+  Statement& Cached(std::string_view sql);
   std::int64_t LastInsertRowId() const;
   const std::string& Path() const { return path_; }
   sqlite3* Raw() const { return db_; }
@@ -54,6 +61,7 @@ class Connection {
  private:
   std::string path_;
   sqlite3* db_ = nullptr;
+  std::map<std::string, std::unique_ptr<Statement>, std::less<>> cached_;
 };
 
 // A prepared statement. Bind parameters are 1-based as in SQLite.

@@ -272,21 +272,26 @@ int StudyDatabase::ReleaseRunningPoints(const PointTable& table, std::int64_t ru
 
 namespace detail {
 
-void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
-                       std::string_view message) {
-  c.Prepare(fmt::format("UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ?, "
-                        "host = ?, rank = ? WHERE point_id = ?",
-                        table.name))
-      .Bind(1, status)
-      .Bind(2, message)
+void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t run_id,
+                       const PointStatus& point, std::string_view now_utc) {
+  c.Cached(fmt::format("UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ?, "
+                       "host = ?, rank = ? WHERE point_id = ?",
+                       table.name))
+      .Bind(1, point.status)
+      .Bind(2, point.message)
       .Bind(3, run_id)
-      .Bind(4, UtcNow())
-      .Bind(5, origin.host)
-      .Bind(6, origin.rank)
-      .Bind(7, point_id)
+      .Bind(4, now_utc)
+      .Bind(5, point.origin.host)
+      .Bind(6, point.origin.rank)
+      .Bind(7, point.point_id)
       .Run();
-  c.Prepare("UPDATE runs SET points_done = points_done + 1 WHERE run_id = ?").Bind(1, run_id).Run();
+}
+
+void CountPointsDone(Connection& c, std::int64_t run_id, std::size_t count) {
+  c.Cached("UPDATE runs SET points_done = points_done + ? WHERE run_id = ?")
+      .Bind(1, static_cast<std::int64_t>(count))
+      .Bind(2, run_id)
+      .Run();
 }
 
 }  // namespace detail

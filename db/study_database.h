@@ -8,6 +8,7 @@
 // (db/point_tables.h). Each kind keeps its own scores and references (db/canonical_points.h,
 // db/scene_points.h, db/ensemble_members.h).
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -106,12 +107,21 @@ class StudyDatabase {
   Connection db_;
 };
 
-// Stores a point's final status and origin in one transaction with whatever `write_score` writes
-// on the same connection (the kind's score row), and counts it in its run.
-template <typename WriteScore>
-void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
-                       std::string_view message, WriteScore write_score);
+// A finished point's final status as its point table stores it.
+struct PointStatus {
+  std::int64_t point_id = 0;
+  PointOrigin origin;
+  std::string status;
+  std::string_view message;  // Valid until it is stored.
+};
+
+// Stores `count` finished points in one transaction: write(c, i) writes point i's own rows on
+// the connection (the kind's score row) and returns its status, stored with its origin; the run
+// counts them done. All or none of them are stored, so a killed writer leaves each point either
+// as it was (computed again when the run resumes) or completely stored.
+template <typename Write>
+void StorePointOutcomes(StudyDatabase& db, const PointTable& table, std::int64_t run_id,
+                        std::size_t count, Write write);
 
 // Seconds since the Unix epoch (the clock of the writer's heartbeat).
 double UnixNow();
@@ -153,19 +163,21 @@ std::optional<Row> FindReferenceRow(StudyDatabase& db, std::string_view table,
 }
 
 namespace detail {
-void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
-                       std::string_view message);
+void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t run_id,
+                       const PointStatus& point, std::string_view now_utc);
+void CountPointsDone(Connection& c, std::int64_t run_id, std::size_t count);
 }  // namespace detail
 
-template <typename WriteScore>
-void StorePointOutcome(StudyDatabase& db, const PointTable& table, std::int64_t point_id,
-                       std::int64_t run_id, const PointOrigin& origin, std::string_view status,
-                       std::string_view message, WriteScore write_score) {
+template <typename Write>
+void StorePointOutcomes(StudyDatabase& db, const PointTable& table, std::int64_t run_id,
+                        std::size_t count, Write write) {
   Connection& c = db.Raw();
+  const std::string now = UtcNow();
   Transaction t(c);
-  write_score(c);
-  detail::UpdatePointStatus(c, table, point_id, run_id, origin, status, message);
+  for (std::size_t i = 0; i < count; ++i) {
+    detail::UpdatePointStatus(c, table, run_id, write(c, i), now);
+  }
+  detail::CountPointsDone(c, run_id, count);
   t.Commit();
 }
 

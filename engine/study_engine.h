@@ -1,9 +1,9 @@
 #pragma once
 // The one study engine: runs any study kind (engine/study_kind.h) into a database. It computes
-// what is missing, each reference once per database and each finished point in its own
-// transaction; workers compute, the calling thread alone writes. Resumable: a rerun takes up
-// the points a dead or stopped run left, and one run at a time holds the database (its lease,
-// db/study_database.h).
+// what is missing, each reference once per database and the finished points stored in groups,
+// one transaction each (kMaxGroup, kGroupLatencyS); workers compute, the calling thread alone
+// writes. Resumable: a rerun takes up the points a dead or stopped run left, and one run at a
+// time holds the database (its lease, db/study_database.h).
 
 #include <algorithm>
 #include <concepts>
@@ -30,6 +30,13 @@
 #include "engine/worker_pool.h"
 
 namespace shockmap {
+
+// The writer stores finished points in groups, one transaction each: a group is stored once it
+// holds kMaxGroup points or kGroupLatencyS after the previous one was (checked as each result
+// arrives and as the writer polls), and before the run ends. A point computed but not yet
+// stored when the process dies is computed again when the run resumes.
+inline constexpr std::size_t kMaxGroup = 256;
+inline constexpr double kGroupLatencyS = 0.1;
 
 struct StudyRunOptions {
   std::string database_path = kDefaultDatabasePath;
@@ -170,6 +177,7 @@ class StudyRun {
       ComputeReferences();
       ComputePoints();
     } catch (const NoWorkerRankLeft& e) {
+      StoreFinished();
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
       db_.EndRun(run_id_, RunEnd::kInterrupted, e.what());
       throw;
@@ -339,7 +347,7 @@ class StudyRun {
     if (remote_) held_.insert({origin.rank, c.key});
   }
 
-  // Phase 2: the points; each finished point is committed on its own.
+  // Phase 2: the points, stored in groups.
   void ComputePoints() {
     if (summary_.stop_signal != 0) return;
     const CpuTimer timer;
@@ -360,11 +368,13 @@ class StudyRun {
           return Scored{to_compute_[i].point_id, DecodeOutcome(kind_, in)};
         },
         [&](Scored out, const PointOrigin& origin) {
-          StoreOutcome(kind_, db_, out.first, run_id_, origin, out.second);
           CountOutcome(out.second.status, summary_);
+          finished_.push_back({out.first, origin, std::move(out.second)});
+          if (finished_.size() >= kMaxGroup) StoreFinished();
           progress.Update(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
         },
         [&](std::size_t i) { return "point " + std::to_string(to_compute_[i].point_id); });
+    StoreFinished();
     progress.Finish(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
     summary_.point_wall_s = timer.WallSeconds();
   }
@@ -392,8 +402,19 @@ class StudyRun {
     return m;
   }
 
-  // On the writer between results: renews the lease, and says whether to stop.
+  // The finished points not yet stored, in one transaction.
+  void StoreFinished() {
+    if (!finished_.empty()) {
+      StoreOutcomes<Kind>(kind_, db_, run_id_, finished_);
+      finished_.clear();
+    }
+    since_stored_ = CpuTimer();
+  }
+
+  // On the writer after each result and while it waits: stores the finished points once
+  // kGroupLatencyS has passed since the last group, renews the lease, and says whether to stop.
   bool Poll() {
+    if (since_stored_.WallSeconds() >= kGroupLatencyS) StoreFinished();
     if (heartbeat_.WallSeconds() >= kHeartbeatPeriodS) {
       db_.Heartbeat(run_id_);
       heartbeat_ = CpuTimer();
@@ -413,6 +434,8 @@ class StudyRun {
   std::vector<PendingPoint> to_compute_;
   std::map<std::string, ReferenceSlot> references_;
   std::set<std::pair<int, std::string>> held_;  // (worker rank, reference key) it holds.
+  std::vector<FinishedPoint<Kind>> finished_;   // Computed, not yet stored.
+  CpuTimer since_stored_;
   CpuTimer heartbeat_;
 };
 

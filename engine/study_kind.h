@@ -13,8 +13,10 @@
 // in Points(), a reference and an outcome as the bytes of their Encode/Decode pair.
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -89,7 +91,7 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   // Must not throw (a failure is a 'failed' outcome). The id is the reference's stored id.
   { kind.Score(point, reference, id) } -> std::same_as<typename K::Outcome>;
   { outcome.status } -> std::convertible_to<RunStatus>;
-  // The score row's writer in db/ (found by its type): StoreOutcome below calls it inside the
+  // The score row's writer in db/ (found by its type): StoreOutcomes below calls it inside the
   // transaction that stores the point's status.
   WriteScore(db.Raw(), id, outcome.score);
 
@@ -101,13 +103,23 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   { kind.DecodeScore(reader) } -> std::same_as<typename decltype(outcome.score)::value_type>;
 };
 
-// One transaction: the point's status, origin and score row.
+// A finished point as the writer holds it until its group is stored.
 template <StudyKind Kind>
-void StoreOutcome(const Kind& kind, StudyDatabase& db, std::int64_t point_id, std::int64_t run_id,
-                  const PointOrigin& origin, const typename Kind::Outcome& outcome) {
-  StorePointOutcome(db, kind.Table(), point_id, run_id, origin, ToString(outcome.status),
-                    outcome.message,
-                    [&](Connection& c) { WriteScore(c, point_id, outcome.score); });
+struct FinishedPoint {
+  std::int64_t point_id = 0;
+  PointOrigin origin;
+  typename Kind::Outcome outcome;
+};
+
+// One transaction for the group: each point's status, origin and score row.
+template <StudyKind Kind>
+void StoreOutcomes(const Kind& kind, StudyDatabase& db, std::int64_t run_id,
+                   std::span<const FinishedPoint<Kind>> group) {
+  StorePointOutcomes(db, kind.Table(), run_id, group.size(), [&](Connection& c, std::size_t i) {
+    const FinishedPoint<Kind>& p = group[i];
+    WriteScore(c, p.point_id, p.outcome.score);
+    return PointStatus{p.point_id, p.origin, ToString(p.outcome.status), p.outcome.message};
+  });
 }
 
 // An outcome as it travels between ranks: status, message, then the kind's score row if any.

@@ -9,9 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "db/canonical_points.h"
 #include "db/read_only_query.h"
+#include "db/sqlite_handle.h"
 #include "engine/progress_reporter.h"
 #include "engine/study_run.h"
 #include "formats/setting_change.h"
@@ -337,10 +341,9 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
   const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
   const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
   ASSERT_EQ(pending.size(), kAllRunStatuses.size());
-  for (const PendingPoint& p : pending) {
-    StorePointOutcome(db, kCanonicalPoints, p.point_id, run, PointOrigin{"host", 0}, p.point_key,
-                      "", [](Connection&) {});
-  }
+  StorePointOutcomes(db, kCanonicalPoints, run, pending.size(), [&](Connection&, std::size_t i) {
+    return PointStatus{pending[i].point_id, PointOrigin{"host", 0}, pending[i].point_key, ""};
+  });
   const Table r = RunReadOnlyQuery(options_.database_path,
                                    "SELECT point_key, status FROM points ORDER BY point_id");
   ASSERT_EQ(r.rows.size(), kAllRunStatuses.size());
@@ -349,6 +352,62 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
     ASSERT_TRUE(read.has_value()) << std::get<std::string>(r.rows[i][1]);
     EXPECT_EQ(*read, kAllRunStatuses[i]);
   }
+}
+
+// A group of finished points is one transaction: when writing one of them fails, none of the
+// group is stored and the run counts none of them done; the next group stores as usual.
+TEST_F(StudyDatabaseRuns, AGroupOfOutcomesIsStoredWhollyOrNotAtAll) {
+  StudyDatabase db(options_.database_path);
+  const std::int64_t study = db.UpsertStudy("group", "{}");
+  std::vector<NewPoint> points(4);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i] = {"p" + std::to_string(i), "ref",
+                 CellsOf(PointParameters{}, kPointParameterColumns)};
+  }
+  db.AddPoints(kCanonicalPoints, study, points);
+  const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
+  const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
+  ASSERT_EQ(pending.size(), 4u);
+  auto store = [&](std::size_t first, std::size_t count, std::optional<std::size_t> failing) {
+    StorePointOutcomes(db, kCanonicalPoints, run, count, [&](Connection&, std::size_t i) {
+      if (failing == i) throw DbError("disk full");
+      return PointStatus{pending[first + i].point_id, PointOrigin{"host", 0}, "ok", ""};
+    });
+  };
+  EXPECT_THROW(store(0, 3, 2), DbError);
+  auto stored = [&] {
+    return RunReadOnlyQuery(options_.database_path,
+                            "SELECT (SELECT count(*) FROM points WHERE status = 'ok'), "
+                            "(SELECT points_done FROM runs WHERE run_id = " +
+                                std::to_string(run) + ")")
+        .rows.at(0);
+  };
+  EXPECT_EQ(std::get<std::int64_t>(stored()[0]), 0);
+  EXPECT_EQ(std::get<std::int64_t>(stored()[1]), 0);
+  store(0, 4, std::nullopt);
+  EXPECT_EQ(std::get<std::int64_t>(stored()[0]), 4);
+  EXPECT_EQ(std::get<std::int64_t>(stored()[1]), 4);
+}
+
+// A cached statement is prepared once and comes back reset, its bindings cleared, even when its
+// previous use stopped before its last row.
+TEST(Connection, ACachedStatementComesBackResetAndUnbound) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("shockmap_cached_" + std::to_string(getpid()) + ".db");
+  std::filesystem::remove(path);
+  {
+    Connection c(path.string(), Connection::Mode::kReadWriteCreate);
+    c.Execute("CREATE TABLE t(x); INSERT INTO t VALUES (1), (2)");
+    Statement& first = c.Cached("SELECT x, ? FROM t ORDER BY x");
+    first.Bind(1, std::int64_t{7});
+    ASSERT_TRUE(first.Step());  // Left on its first row.
+    Statement& again = c.Cached("SELECT x, ? FROM t ORDER BY x");
+    EXPECT_EQ(&again, &first);
+    ASSERT_TRUE(again.Step());
+    EXPECT_EQ(again.GetInt(0), 1);  // From the first row again.
+    EXPECT_TRUE(again.IsNull(1));   // The 7 is no longer bound.
+  }
+  std::filesystem::remove(path);
 }
 
 // Off a terminal a phase prints plain lines: none before 5 s, and its last line always, with
