@@ -27,6 +27,7 @@
 
 #include "engine/byte_codec.h"
 #include "engine/mpi_job.h"
+#include "engine/task_queue.h"
 
 namespace shockmap {
 namespace {
@@ -157,18 +158,19 @@ class MpiWorkers final : public RemoteWorkers {
   MessageTotals Totals() const override { return totals_; }
   void SetExitCode(int exit_code) override { exit_code_ = exit_code; }
 
-  std::vector<AbandonedTask> Run(std::size_t count, const EncodeTask& encode,
+  std::vector<AbandonedTask> Run(const std::vector<std::size_t>& after, const EncodeTask& encode,
                                  const ConsumeResult& consume, const std::function<bool()>& poll,
                                  const Describe& describe) override;
   void Serve(const Execute& execute) override;
 
  private:
-  // The tasks out on each rank, the idle threads (one entry each, the ranks taking turns) and
-  // the tasks of lost ranks, handed out again before new ones.
+  // The tasks out on each rank, the idle threads (one entry each, the ranks taking turns), the
+  // tasks of lost ranks, handed out again before new ones, and the tasks not yet handed out.
   struct Schedule {
     std::map<std::size_t, int> out;  // Task index -> the rank computing it.
     std::deque<int> idle;
     std::deque<std::size_t> handed_back;
+    TaskQueue waiting;
   };
   // Passes a worker rank's result to consume() and its thread back to the idle ones.
   void TakeResult(const Message& m, Schedule& schedule, const ConsumeResult& consume);
@@ -201,12 +203,12 @@ class MpiWorkers final : public RemoteWorkers {
   MessageTotals totals_;
 };
 
-std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& encode,
-                                           const ConsumeResult& consume,
+std::vector<AbandonedTask> MpiWorkers::Run(const std::vector<std::size_t>& after,
+                                           const EncodeTask& encode, const ConsumeResult& consume,
                                            const std::function<bool()>& poll,
                                            const Describe& describe) {
-  Schedule schedule;
-  auto& [out, idle, handed_back] = schedule;
+  Schedule schedule{{}, {}, {}, TaskQueue(after)};
+  auto& [out, idle, handed_back, waiting] = schedule;
   // Silence counts from now: rank 0 may have been away (storing references) since the last run.
   std::fill(heard_.begin(), heard_.end(), Clock::now());
   for (int t = 0; t < threads_; ++t) {
@@ -214,14 +216,13 @@ std::vector<AbandonedTask> MpiWorkers::Run(std::size_t count, const EncodeTask& 
       if (!lost_.contains(r)) idle.push_back(r);
     }
   }
-  std::size_t next = 0;
   bool stopped = false;
   Backoff backoff;
   for (;;) {
-    while (!stopped && !idle.empty() && (!handed_back.empty() || next < count)) {
-      std::size_t index = next;
+    while (!stopped && !idle.empty() && (!handed_back.empty() || waiting.HasReady())) {
+      std::size_t index = 0;
       if (handed_back.empty()) {
-        ++next;
+        index = waiting.Take();
       } else {
         index = handed_back.front();
         handed_back.pop_front();
@@ -263,6 +264,7 @@ void MpiWorkers::TakeResult(const Message& m, Schedule& schedule, const ConsumeR
   totals_.result_bytes += static_cast<double>(m.bytes.size());
   totals_.largest_result = std::max(totals_.largest_result, static_cast<double>(m.bytes.size()));
   consume(index, std::string_view(m.bytes).substr(sizeof(std::uint64_t)), m.source);
+  schedule.waiting.Consumed(index);
   schedule.idle.push_back(m.source);
 }
 

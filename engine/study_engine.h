@@ -18,6 +18,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "core/cpu_timer.h"
@@ -27,6 +28,7 @@
 #include "engine/remote_workers.h"
 #include "engine/stop_request.h"
 #include "engine/study_kind.h"
+#include "engine/task_queue.h"
 #include "engine/worker_pool.h"
 
 namespace shockmap {
@@ -68,8 +70,10 @@ struct StudyRunSummary {
   MessageTotals messages;  // Of an MPI job.
   int stop_signal = 0;     // The signal that interrupted the run, or 0.
   double wall_s = 0.0;
-  double reference_wall_s = 0.0;  // Wall time of the reference phase.
-  double point_wall_s = 0.0;      // Wall time of the point phase.
+  // Wall time until the last reference computed now was stored, and until the last point was;
+  // a point starts as soon as its reference is stored, so the two overlap.
+  double reference_wall_s = 0.0;
+  double point_wall_s = 0.0;
 };
 
 // The workers a run uses: options.jobs, or one per hardware thread.
@@ -174,8 +178,7 @@ class StudyRun {
     const CpuTimer timer;
     Register();
     try {
-      ComputeReferences();
-      ComputePoints();
+      Compute();
     } catch (const NoWorkerRankLeft& e) {
       StoreFinished();
       db_.ReleaseRunningPoints(kind_.Table(), run_id_);
@@ -256,22 +259,23 @@ class StudyRun {
     return kind_.Points()[by_key_.at(p.point_key)];
   }
 
-  // Runs local(i) for i in [0, count) on this process's threads, or the task encode(i, rank)
-  // on the worker ranks whose answer decode(i, bytes) reads back; each result reaches
-  // consume(result, where it was computed) on this thread, the one writer. `what(i)` names a
-  // task a stopped MPI job got no answer for, or one a lost worker rank held.
+  // Runs local(i) for every task i of `after` (TaskQueue: each once the task it waits for is
+  // consumed) on this process's threads, or the task encode(i, rank) on the worker ranks whose
+  // answer decode(i, bytes) reads back; each result reaches consume(result, where it was
+  // computed) on this thread, the one writer. `what(i)` names a task a stopped MPI job got no
+  // answer for, or one a lost worker rank held.
   template <typename Result, typename Local, typename Encode, typename Decode, typename Consume,
             typename What>
-  void Distribute(std::size_t count, Local local, Encode encode, Decode decode, Consume consume,
-                  What what) {
+  void Distribute(const std::vector<std::size_t>& after, Local local, Encode encode, Decode decode,
+                  Consume consume, What what) {
     if (remote_ == nullptr) {
       RunOnWorkers(
-          count, summary_.jobs, local, [&](Result r) { consume(std::move(r), local_origin_); },
+          after, summary_.jobs, local, [&](Result r) { consume(std::move(r), local_origin_); },
           [&] { return Poll(); });
       return;
     }
     const auto abandoned = remote_->Run(
-        count, encode,
+        after, encode,
         [&](std::size_t i, std::string_view bytes, int rank) {
           ByteReader in(bytes);
           Result r = decode(i, in);
@@ -286,10 +290,11 @@ class StudyRun {
     }
   }
 
-  // Phase 1: each reference once per database, longest first so no worker is left alone with
-  // the longest at the end.
-  void ComputeReferences() {
-    std::vector<std::size_t> missing;  // Indices in kind_.Points().
+  // The references the points to compute need and the database lacks (indices in
+  // kind_.Points(), one per reference key), longest first so that no worker is left alone with
+  // the longest at the end; the stored ones are read into references_.
+  std::vector<std::size_t> MissingReferences() {
+    std::vector<std::size_t> missing;
     for (const PendingPoint& p : to_compute_) {
       if (references_.contains(p.reference_key)) continue;
       ReferenceSlot& slot = references_[p.reference_key];
@@ -301,35 +306,91 @@ class StudyRun {
         missing.push_back(by_key_.at(p.point_key));
       }
     }
-    const auto& points = kind_.Points();
     std::ranges::stable_sort(missing, std::greater{},
-                             [&](std::size_t i) { return kind_.ReferenceCost(points[i]); });
+                             [&](std::size_t i) { return kind_.ReferenceCost(kind_.Points()[i]); });
+    return missing;
+  }
+
+  // Each missing reference once per database, then the points, stored in groups: tasks
+  // [0, R) compute the R missing references, task R + j scores to_compute_[j] and waits for its
+  // reference's task, if any, so that a point starts as soon as its reference is stored.
+  void Compute() {
     const CpuTimer timer;
-    ProgressReporter progress("references", "done", static_cast<double>(missing.size()), stderr,
-                              options_.progress, options_.on_progress);
-    auto detail = [&] {
+    const std::vector<std::size_t> missing = MissingReferences();
+    const std::size_t n_references = missing.size();
+    const auto& points = kind_.Points();
+    std::map<std::string, std::size_t> task_of;  // Reference key -> its task.
+    for (std::size_t k = 0; k < n_references; ++k) {
+      task_of[kind_.Describe(points[missing[k]]).reference_key] = k;
+    }
+    std::vector<std::size_t> after(n_references, TaskQueue::kNoWait);
+    std::vector<std::int64_t> ids;
+    for (const PendingPoint& p : to_compute_) {
+      const auto task = task_of.find(p.reference_key);
+      after.push_back(task == task_of.end() ? TaskQueue::kNoWait : task->second);
+      ids.push_back(p.point_id);
+    }
+    db_.MarkRunning(kind_.Table(), ids, run_id_);
+    ProgressReporter reference_progress("references", "done", static_cast<double>(n_references),
+                                        stderr, options_.progress, options_.on_progress);
+    ProgressReporter point_progress("points", "done", static_cast<double>(to_compute_.size()),
+                                    stderr, options_.progress, options_.on_progress);
+    auto reference_detail = [&] {
       return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
              std::to_string(summary_.references_failed);
     };
-    Distribute<ComputedReference>(
-        missing.size(),
-        [&](std::size_t i) { return W::ComputeReference(kind_, points[missing[i]]); },
-        [&](std::size_t i, int) {
+    auto references_done = [&] {
+      return summary_.references_computed + summary_.references_failed;
+    };
+    auto finish_references = [&] {
+      reference_progress.Finish(references_done(), reference_detail());
+      summary_.reference_wall_s = timer.WallSeconds();
+    };
+    using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
+    using Result = std::variant<ComputedReference, Scored>;
+    auto point_of_task = [&](std::size_t i) -> const PendingPoint& {
+      return to_compute_[i - n_references];
+    };
+    Distribute<Result>(
+        after,
+        [&](std::size_t i) -> Result {
+          if (i < n_references) return W::ComputeReference(kind_, points[missing[i]]);
+          const PendingPoint& p = point_of_task(i);
+          return Scored{p.point_id, W::Score(kind_, PointOf(p), references_.at(p.reference_key))};
+        },
+        [&](std::size_t i, int rank) {
+          if (i >= n_references) return ScoreTask(point_of_task(i), rank);
           ByteWriter out;
           out.Put(static_cast<std::uint8_t>(W::kReferenceTask));
           out.Put(static_cast<std::uint64_t>(missing[i]));
           return out.Take();
         },
-        [&](std::size_t, ByteReader& in) { return W::DecodeComputed(kind_, in); },
-        [&](ComputedReference c, const PointOrigin& origin) {
-          StoreReference(std::move(c), origin);
-          progress.Update(summary_.references_computed + summary_.references_failed, detail());
+        [&](std::size_t i, ByteReader& in) -> Result {
+          if (i < n_references) return W::DecodeComputed(kind_, in);
+          return Scored{point_of_task(i).point_id, DecodeOutcome(kind_, in)};
+        },
+        [&](Result result, const PointOrigin& origin) {
+          if (auto* c = std::get_if<ComputedReference>(&result)) {
+            StoreReference(std::move(*c), origin);
+            reference_progress.Update(references_done(), reference_detail());
+            if (references_done() == static_cast<int>(n_references)) finish_references();
+            return;
+          }
+          auto& [point_id, outcome] = std::get<Scored>(result);
+          CountOutcome(outcome.status, summary_);
+          finished_.push_back({point_id, origin, std::move(outcome)});
+          if (finished_.size() >= kMaxGroup) StoreFinished();
+          point_progress.Update(static_cast<double>(summary_.points_computed),
+                                OutcomeCounts(summary_));
         },
         [&](std::size_t i) {
+          if (i >= n_references) return "point " + std::to_string(point_of_task(i).point_id);
           return "the reference of point " + kind_.Describe(points[missing[i]]).point_key;
         });
-    progress.Finish(summary_.references_computed + summary_.references_failed, detail());
-    summary_.reference_wall_s = timer.WallSeconds();
+    StoreFinished();
+    if (references_done() < static_cast<int>(n_references)) finish_references();
+    point_progress.Finish(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
+    summary_.point_wall_s = timer.WallSeconds();
   }
 
   // A worker rank keeps the references it computed or was sent.
@@ -345,38 +406,6 @@ class StudyRun {
     slot.reference = std::make_shared<const Reference>(std::move(*c.reference));
     ++summary_.references_computed;
     if (remote_) held_.insert({origin.rank, c.key});
-  }
-
-  // Phase 2: the points, stored in groups.
-  void ComputePoints() {
-    if (summary_.stop_signal != 0) return;
-    const CpuTimer timer;
-    std::vector<std::int64_t> ids;
-    for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
-    db_.MarkRunning(kind_.Table(), ids, run_id_);
-    ProgressReporter progress("points", "done", static_cast<double>(to_compute_.size()), stderr,
-                              options_.progress, options_.on_progress);
-    using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome
-    Distribute<Scored>(
-        to_compute_.size(),
-        [&](std::size_t i) {
-          const PendingPoint& p = to_compute_[i];
-          return Scored{p.point_id, W::Score(kind_, PointOf(p), references_.at(p.reference_key))};
-        },
-        [&](std::size_t i, int rank) { return ScoreTask(to_compute_[i], rank); },
-        [&](std::size_t i, ByteReader& in) {
-          return Scored{to_compute_[i].point_id, DecodeOutcome(kind_, in)};
-        },
-        [&](Scored out, const PointOrigin& origin) {
-          CountOutcome(out.second.status, summary_);
-          finished_.push_back({out.first, origin, std::move(out.second)});
-          if (finished_.size() >= kMaxGroup) StoreFinished();
-          progress.Update(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
-        },
-        [&](std::size_t i) { return "point " + std::to_string(to_compute_[i].point_id); });
-    StoreFinished();
-    progress.Finish(static_cast<double>(summary_.points_computed), OutcomeCounts(summary_));
-    summary_.point_wall_s = timer.WallSeconds();
   }
 
   std::string ScoreTask(const PendingPoint& p, int rank) {

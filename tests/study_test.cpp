@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "db/canonical_points.h"
@@ -18,6 +22,8 @@
 #include "db/sqlite_handle.h"
 #include "engine/progress_reporter.h"
 #include "engine/study_run.h"
+#include "engine/task_queue.h"
+#include "engine/worker_pool.h"
 #include "formats/setting_change.h"
 #include "tests/run_command.h"
 
@@ -408,6 +414,37 @@ TEST(Connection, ACachedStatementComesBackResetAndUnbound) {
     EXPECT_TRUE(again.IsNull(1));   // The 7 is no longer bound.
   }
   std::filesystem::remove(path);
+}
+
+// A task starts only once the task it waits for has been consumed, and no sooner than needed:
+// the tasks waiting for a fast task run while a slow one is still computing (no phase barrier).
+TEST(RunOnWorkers, ATaskStartsOnceItsOwnPrerequisiteIsConsumed) {
+  const std::size_t kNoWait = TaskQueue::kNoWait;
+  // Task 0 is slow, task 1 fast; 2 and 3 wait for 1, 4 and 5 for 0.
+  const std::vector<std::size_t> after = {kNoWait, kNoWait, 1, 1, 0, 0};
+  std::array<std::atomic<bool>, 6> consumed{};
+  std::array<std::atomic<bool>, 6> started_early{};
+  std::vector<std::size_t> order;
+  const std::size_t n = RunOnWorkers(
+      after, 2,
+      [&](std::size_t i) {
+        if (after[i] != kNoWait && !consumed[after[i]]) started_early[i] = true;
+        if (i == 0) std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        return i;
+      },
+      [&](std::size_t i) {
+        order.push_back(i);
+        consumed[i] = true;
+      },
+      [] { return false; });
+  EXPECT_EQ(n, 6u);
+  ASSERT_EQ(order.size(), 6u);
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_FALSE(started_early[i]) << "task " << i;
+  auto position = [&](std::size_t i) { return std::ranges::find(order, i) - order.begin(); };
+  EXPECT_LT(position(2), position(0));  // Waited for the fast task only.
+  EXPECT_LT(position(3), position(0));
+  EXPECT_GT(position(4), position(0));
+  EXPECT_GT(position(5), position(0));
 }
 
 // Off a terminal a phase prints plain lines: none before 5 s, and its last line always, with
