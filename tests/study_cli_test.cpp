@@ -13,6 +13,7 @@
 #include <random>
 #include <thread>
 
+#include "db/migrations.h"
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
 #include "tests/database_rows.h"
@@ -124,9 +125,18 @@ TEST_F(StudyProcess, KilledRepeatedlyAtRandomMomentsLosesAndDuplicatesNothing) {
     waitpid(pid, &status, 0);
     kills += WIFSIGNALED(status) ? 1 : 0;
     if (!std::filesystem::exists(killed)) continue;  // Killed before it created the file.
-    EXPECT_EQ(
-        std::get<std::string>(RunReadOnlyQuery(killed, "PRAGMA integrity_check").rows.at(0).at(0)),
-        "ok");
+    Connection raw(killed, Connection::Mode::kReadOnly);
+    Statement integrity = raw.Prepare("PRAGMA integrity_check");
+    ASSERT_TRUE(integrity.Step());
+    EXPECT_EQ(integrity.GetText(0), "ok");
+    Statement version = raw.Prepare("PRAGMA user_version");
+    ASSERT_TRUE(version.Step());
+    // Killed while it created its schema: the migrations' one transaction leaves the empty file
+    // as it was (version 0), which the next run migrates.
+    if (version.GetInt(0) < kSchemaVersion) {
+      EXPECT_EQ(version.GetInt(0), 0);
+      continue;
+    }
     const std::int64_t points = Count(killed, "SELECT count(*) FROM points");
     EXPECT_TRUE(points == 0 || points == total) << points << " of " << total;
     EXPECT_EQ(Count(killed,
