@@ -88,7 +88,7 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
 std::string CostHeadline(const CostTable& t) {
   std::string s = fmt::format("R_k = {:.4g}", t.r_k);
   if (t.asked_r_k && std::abs(*t.asked_r_k - t.r_k) > 1e-9 * t.r_k) {
-    s += fmt::format(" (the studied R_k nearest to --rk {:g})", *t.asked_r_k);
+    s += fmt::format(" (the studied R_k nearest to the {:g} asked)", *t.asked_r_k);
   }
   const auto passing = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.passes; });
   const auto fragile = std::ranges::count_if(t.rows, [](const CostRow& r) { return r.fragile; });

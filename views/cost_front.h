@@ -26,7 +26,7 @@ struct CostRow {
 
 struct CostTable {
   double r_k = 0.0;
-  std::optional<double> asked_r_k;  // The --rk this studied R_k is the nearest to.
+  std::optional<double> asked_r_k;  // The R_k asked (cost --rk, the report) this one is nearest to.
   std::vector<CostRow> rows;        // Scored points, fastest first.
   // Median over implicit points of cpu(implicit) / cpu(cheapest explicit point at least as
   // accurate); nullopt when no implicit point has an explicit match.
