@@ -272,12 +272,16 @@ int StudyDatabase::ReleaseRunningPoints(const PointTable& table, std::int64_t ru
 
 namespace detail {
 
-void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t run_id,
-                       const PointStatus& point, std::string_view now_utc) {
-  c.Cached(fmt::format("UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ?, "
-                       "host = ?, rank = ? WHERE point_id = ?",
-                       table.name))
-      .Bind(1, point.status)
+std::string PointStatusUpdate(const PointTable& table) {
+  return fmt::format(
+      "UPDATE {} SET status = ?, message = ?, run_id = ?, updated_utc = ?, host = ?, rank = ? "
+      "WHERE point_id = ?",
+      table.name);
+}
+
+void UpdatePointStatus(Statement& update, std::int64_t run_id, const PointStatus& point,
+                       std::string_view now_utc) {
+  update.Bind(1, point.status)
       .Bind(2, point.message)
       .Bind(3, run_id)
       .Bind(4, now_utc)

@@ -163,8 +163,10 @@ std::optional<Row> FindReferenceRow(StudyDatabase& db, std::string_view table,
 }
 
 namespace detail {
-void UpdatePointStatus(Connection& c, const PointTable& table, std::int64_t run_id,
-                       const PointStatus& point, std::string_view now_utc);
+// The statement UpdatePointStatus runs on `table`, built once per group.
+std::string PointStatusUpdate(const PointTable& table);
+void UpdatePointStatus(Statement& update, std::int64_t run_id, const PointStatus& point,
+                       std::string_view now_utc);
 void CountPointsDone(Connection& c, std::int64_t run_id, std::size_t count);
 }  // namespace detail
 
@@ -173,9 +175,11 @@ void StorePointOutcomes(StudyDatabase& db, const PointTable& table, std::int64_t
                         std::size_t count, Write write) {
   Connection& c = db.Raw();
   const std::string now = UtcNow();
+  const std::string update = detail::PointStatusUpdate(table);
   Transaction t(c);
   for (std::size_t i = 0; i < count; ++i) {
-    detail::UpdatePointStatus(c, table, run_id, write(c, i), now);
+    const PointStatus point = write(c, i);
+    detail::UpdatePointStatus(c.Cached(update), run_id, point, now);
   }
   detail::CountPointsDone(c, run_id, count);
   t.Commit();

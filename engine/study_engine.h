@@ -311,6 +311,21 @@ class StudyRun {
     return missing;
   }
 
+  // The task each task of Compute() waits for (TaskQueue): none for the references' tasks, the
+  // task of its reference for a point whose reference is computed now.
+  std::vector<std::size_t> TasksWaitedFor(const std::vector<std::size_t>& missing) const {
+    std::map<std::string, std::size_t> task_of;  // Reference key -> its task.
+    for (std::size_t k = 0; k < missing.size(); ++k) {
+      task_of[kind_.Describe(kind_.Points()[missing[k]]).reference_key] = k;
+    }
+    std::vector<std::size_t> after(missing.size(), TaskQueue::kNoWait);
+    for (const PendingPoint& p : to_compute_) {
+      const auto task = task_of.find(p.reference_key);
+      after.push_back(task == task_of.end() ? TaskQueue::kNoWait : task->second);
+    }
+    return after;
+  }
+
   // Each missing reference once per database, then the points, stored in groups: tasks
   // [0, R) compute the R missing references, task R + j scores to_compute_[j] and waits for its
   // reference's task, if any, so that a point starts as soon as its reference is stored.
@@ -319,17 +334,9 @@ class StudyRun {
     const std::vector<std::size_t> missing = MissingReferences();
     const std::size_t n_references = missing.size();
     const auto& points = kind_.Points();
-    std::map<std::string, std::size_t> task_of;  // Reference key -> its task.
-    for (std::size_t k = 0; k < n_references; ++k) {
-      task_of[kind_.Describe(points[missing[k]]).reference_key] = k;
-    }
-    std::vector<std::size_t> after(n_references, TaskQueue::kNoWait);
+    const std::vector<std::size_t> after = TasksWaitedFor(missing);
     std::vector<std::int64_t> ids;
-    for (const PendingPoint& p : to_compute_) {
-      const auto task = task_of.find(p.reference_key);
-      after.push_back(task == task_of.end() ? TaskQueue::kNoWait : task->second);
-      ids.push_back(p.point_id);
-    }
+    for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
     ProgressReporter reference_progress("references", "done", static_cast<double>(n_references),
                                         stderr, options_.progress, options_.on_progress);
