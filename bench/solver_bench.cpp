@@ -14,6 +14,9 @@
 //   ExplicitModalStep/R_ftrunc one central-difference step of the paper's method alone (no
 //                              recording), the state carried from step to step;
 //                              s_per_unknown_step = time / modes
+//   IncrementSteps/R_ftrunc    blocks of 64 steps of the same run in increment form
+//                              (core/increment_stepper.h), tip and force kept per step as a
+//                              run records them; s_per_step = time / 64
 //   BundleStep/rings           one central-difference step of scenes/bundle_hex.json with
 //                              `rings` rings (8: 217 pins, 4 360 coordinates, 4 915 zones), the
 //                              state carried from step to step from the shipped initial state;
@@ -27,6 +30,7 @@
 
 #include "compare/comparison.h"
 #include "core/cantilever_impact.h"
+#include "core/increment_stepper.h"
 #include "core/scene_model.h"
 #include "core/transient_run.h"
 #include "formats/scene_file.h"
@@ -122,6 +126,23 @@ void ExplicitModalStep(benchmark::State& state) {
       model.n_dofs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(ExplicitModalStep)->ArgName("rftrunc")->Arg(300)->Arg(3000);
+
+void IncrementSteps(benchmark::State& state) {
+  const ImpactModel model =
+      BuildImpactModel(kProblem, Scheme::kExplicitModal, static_cast<double>(state.range(0)));
+  const std::vector<Eigen::VectorXd> observed{model.tip_row};
+  auto stepper = IncrementStepper::For(*model.system, 0.1 * model.bounds.dt_sharp_s, observed);
+  if (!stepper) state.SkipWithError("the model does not take the increment form");
+  stepper->Init(model.x0, model.v0);
+  constexpr int kBlock = 64;
+  std::vector<double> tips(kBlock), forces(kBlock);
+  for (auto _ : state) stepper->Advance(kBlock, tips.data(), forces.data());
+  benchmark::DoNotOptimize(tips.back());
+  state.counters["modes"] = model.n_modes;
+  state.counters["s_per_step"] = benchmark::Counter(
+      kBlock, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(IncrementSteps)->ArgName("rftrunc")->Arg(300)->Arg(3000);
 
 Scene HexBundle(int rings) {
   std::ifstream in(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex.json");

@@ -451,4 +451,17 @@ void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x,
   }
 }
 
+Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z) {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+  auto put = [&](int offset, double scale, const std::vector<double>& phi) {
+    if (offset < 0) return;
+    for (std::size_t i = 0; i < phi.size(); ++i) r[offset + static_cast<int>(i)] += scale * phi[i];
+  };
+  put(z.a_y, dir_y, z.phi_a);
+  put(z.a_z, dir_z, z.phi_a);
+  put(z.b_y, -dir_y, z.phi_b);
+  put(z.b_z, -dir_z, z.phi_b);
+  return r;
+}
+
 }  // namespace shockmap

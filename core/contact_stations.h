@@ -42,6 +42,10 @@ struct ZoneTerm {
   ContactLaw law;  // Friction only where both sides bend in y and z.
 };
 
+// The zone's row along a direction (dir_y, dir_z): the normal for (n_y, n_z), the tangent for
+// (-n_z, n_y), in a state of n coordinates: d . (u_a - u_b) = row . x.
+Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z);
+
 class ContactStations {
  public:
   // Stations are the distinct (block, mode shape) pairs of the zones' two sides, grouped by

@@ -123,21 +123,6 @@ std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
   return heights;
 }
 
-// The zone's row along a direction (n for the normal, t for the tangent) in the scene's
-// coordinates: d . (u_a - u_b) = row . x.
-Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z) {
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
-  auto put = [&](int offset, double scale, const std::vector<double>& phi) {
-    if (offset < 0) return;
-    for (std::size_t i = 0; i < phi.size(); ++i) r[offset + static_cast<int>(i)] += scale * phi[i];
-  };
-  put(z.a_y, dir_y, z.phi_a);
-  put(z.a_z, dir_z, z.phi_a);
-  put(z.b_y, -dir_y, z.phi_b);
-  put(z.b_z, -dir_z, z.phi_b);
-  return r;
-}
-
 // Where each beam's modes sit in the scene's coordinates: beam b's block in direction d (y, z)
 // starts at offset[b] + d * modes[b]->N().
 struct Layout {

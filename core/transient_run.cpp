@@ -8,6 +8,7 @@
 #include "core/cpu_timer.h"
 #include "core/fused_sums.h"
 #include "core/impact_tracker.h"
+#include "core/increment_stepper.h"
 #include "core/validity.h"
 
 namespace shockmap {
@@ -36,13 +37,13 @@ bool TransientOptions::IsValid(std::string* error) const {
 namespace {
 
 struct Recorder {
-  const SecondOrderSystem& system;
   const TransientOptions& options;
   TransientResult& result;
 
   // `records`: how many records a run to the end takes; the histories hold that much from the
-  // start, so that recording never moves them.
-  void Start(double dt_record, std::size_t records) {
+  // start, so that recording never moves them. `contacts`: the system's.
+  void Start(double dt_record, std::size_t records, std::size_t contacts) {
+    zones_ = contacts;
     auto init = [&](std::vector<UniformSignal>& v, std::size_t n) {
       v.assign(n, UniformSignal{0.0, dt_record, {}});
       for (auto& s : v) s.values.reserve(records);
@@ -50,9 +51,8 @@ struct Recorder {
     init(result.displacement_m, options.observed_rows.size());
     init(result.velocity_m_s, options.record_velocity ? options.observed_rows.size() : 0);
     if (options.record_contact_forces) {
-      init(result.contact_force_n, options.recorded_contacts.empty()
-                                       ? system.LastContactForces().size()
-                                       : options.recorded_contacts.size());
+      init(result.contact_force_n,
+           options.recorded_contacts.empty() ? contacts : options.recorded_contacts.size());
     }
     if (options.record_energy) {
       for (auto* s : {&result.energy.kinetic_j, &result.energy.strain_j, &result.energy.contact_j,
@@ -63,8 +63,8 @@ struct Recorder {
     }
   }
 
-  void Record(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double dissipated_j,
-              double work_j) {
+  // The observed rows at (x, v): row . x, and row . v when velocities are recorded.
+  void RecordObserved(const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
     for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
       if (options.record_velocity) {
         const auto [displacement, velocity] = DotBoth(options.observed_rows[i], x, v);
@@ -74,61 +74,184 @@ struct Recorder {
         result.displacement_m[i].values.push_back(options.observed_rows[i].dot(x));
       }
     }
+  }
+
+  // The records of a block of `steps` steps, step s's observed displacements at
+  // observed[s * rows + j] and zone forces at forces[s * zones + c]: steps to_record - 1,
+  // then every record_stride-th. to_record counts down to the next record as a step loop
+  // would, and is left so for the next block. True when the block's last step was recorded.
+  bool RecordBlock(const double* observed, const double* forces, int steps, int& to_record) {
+    const int stride = options.record_stride, first = to_record - 1;
+    if (first >= steps) {
+      to_record -= steps;
+      return false;
+    }
+    const int rows = static_cast<int>(options.observed_rows.size());
+    const int zones = static_cast<int>(zones_);
+    for (int j = 0; j < rows; ++j) {
+      AppendEvery(result.displacement_m[j].values, observed + j, rows, first, steps);
+    }
     if (options.record_contact_forces) {
-      const auto forces = system.LastContactForces();
-      if (options.recorded_contacts.empty()) {
-        for (std::size_t c = 0; c < forces.size(); ++c) {
-          result.contact_force_n[c].values.push_back(forces[c]);
-        }
-      } else {
-        for (std::size_t c = 0; c < options.recorded_contacts.size(); ++c) {
-          result.contact_force_n[c].values.push_back(forces[options.recorded_contacts[c]]);
-        }
+      for (std::size_t c = 0; c < result.contact_force_n.size(); ++c) {
+        const int zone =
+            options.recorded_contacts.empty() ? static_cast<int>(c) : options.recorded_contacts[c];
+        AppendEvery(result.contact_force_n[c].values, forces + zone, zones, first, steps);
       }
     }
-    if (options.record_energy) {
-      const Energies e = system.EnergyAt(x, v);
-      result.energy.kinetic_j.values.push_back(e.kinetic_j);
-      result.energy.strain_j.values.push_back(e.strain_j);
-      result.energy.contact_j.values.push_back(e.contact_j);
-      result.energy.dissipated_j.values.push_back(dissipated_j);
-      result.energy.external_work_j.values.push_back(work_j);
+    const int last = first + (steps - 1 - first) / stride * stride;
+    to_record = stride - (steps - 1 - last);
+    return last == steps - 1;
+  }
+
+  // row . v of every observed row, when velocities are recorded.
+  void RecordVelocities(const Eigen::VectorXd& v) {
+    if (!options.record_velocity) return;
+    for (std::size_t i = 0; i < options.observed_rows.size(); ++i) {
+      result.velocity_m_s[i].values.push_back(options.observed_rows[i].dot(v));
     }
   }
+
+  // values[s * width] for s = first, first + record_stride, ... < steps, appended to `to`
+  // (whose capacity holds them: no reallocation, no per-value check).
+  void AppendEvery(std::vector<double>& to, const double* values, int width, int first,
+                   int steps) const {
+    const std::size_t old = to.size();
+    to.resize(old + static_cast<std::size_t>((steps - 1 - first) / options.record_stride + 1));
+    double* out = to.data() + old;
+    for (int s = first; s < steps; s += options.record_stride) *out++ = values[s * width];
+  }
+
+  void RecordForces(std::span<const double> forces) {
+    if (!options.record_contact_forces) return;
+    if (options.recorded_contacts.empty()) {
+      for (std::size_t c = 0; c < forces.size(); ++c) {
+        result.contact_force_n[c].values.push_back(forces[c]);
+      }
+    } else {
+      for (std::size_t c = 0; c < options.recorded_contacts.size(); ++c) {
+        result.contact_force_n[c].values.push_back(forces[options.recorded_contacts[c]]);
+      }
+    }
+  }
+
+  // e: the energies at the recorded state, asked for only when recorded.
+  template <typename EnergiesNow>
+  void RecordEnergy(EnergiesNow e_now, double dissipated_j, double work_j) {
+    if (!options.record_energy) return;
+    const Energies e = e_now();
+    result.energy.kinetic_j.values.push_back(e.kinetic_j);
+    result.energy.strain_j.values.push_back(e.strain_j);
+    result.energy.contact_j.values.push_back(e.contact_j);
+    result.energy.dissipated_j.values.push_back(dissipated_j);
+    result.energy.external_work_j.values.push_back(work_j);
+  }
+
+  std::size_t zones_ = 0;  // The system's contacts.
 };
 
-}  // namespace
+// What every run keeps beside its steps: the timer, the summary and the divergence checks.
+class Bookkeeping {
+ public:
+  explicit Bookkeeping(const TransientOptions& options) : options_(options) {
+    RunSummary& summary = result_.summary;
+    summary.dt_requested_s = options.dt_s;
+    summary.steps_requested = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::ceil(options.end_time_s / options.dt_s - 1e-9)));
+    summary.dt_used_s = options.end_time_s / static_cast<double>(summary.steps_requested);
+  }
 
-TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme,
-                             const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
-                             const TransientOptions& options) {
-  const CpuTimer timer;
-  TransientResult result;
+  TransientResult& Result() { return result_; }
+  double Dt() const { return result_.summary.dt_used_s; }
+  std::int64_t Steps() const { return result_.summary.steps_requested; }
+  std::size_t Records() const {
+    return static_cast<std::size_t>(Steps() / options_.record_stride) + 1;
+  }
+  double DtRecord() const { return Dt() * options_.record_stride; }
+
+  // The check after step n at simulated time t_s: the total energy (dissipated work included)
+  // against the initial energy plus the loads' work magnitude. False when the run diverged
+  // (the summary then says how).
+  bool Check(std::int64_t n, double t_s, double total, bool finite_state, double work_magnitude) {
+    RunSummary& summary = result_.summary;
+    if (!std::isfinite(total) || !finite_state) {
+      std::ostringstream msg;
+      msg << "non-finite state at step " << n << " (t = " << n * Dt() << " s)";
+      return Stop(RunStatus::kDiverged, msg.str());
+    }
+    const double scale = summary.initial_energy_j + work_magnitude;
+    if (scale > 0.0) {
+      const double ratio = total / scale;
+      summary.max_energy_ratio = std::max(summary.max_energy_ratio, ratio);
+      if (ratio > options_.energy_growth_limit) {
+        std::ostringstream msg;
+        msg << "energy grew to " << ratio << " times its initial value at step " << n
+            << " (t = " << n * Dt() << " s), limit " << options_.energy_growth_limit;
+        return Stop(RunStatus::kDiverged, msg.str());
+      }
+    }
+    if (options_.on_progress) options_.on_progress(t_s);
+    return true;
+  }
+
+  // After the last step: an undamped run whose energy grew past the unstable ratio is
+  // kUnstable, others kOk.
+  void Complete(bool dissipates) {
+    const RunSummary& summary = result_.summary;
+    if (!dissipates && summary.max_energy_ratio > options_.unstable_energy_ratio) {
+      std::ostringstream msg;
+      msg << "undamped, energy grew to " << summary.max_energy_ratio
+          << " times its initial value (unstable above " << options_.unstable_energy_ratio << ")";
+      Stop(RunStatus::kUnstable, msg.str());
+      return;
+    }
+    Stop(RunStatus::kOk, "");
+  }
+
+  // Ends the run with a status; false.
+  bool Stop(RunStatus status, std::string message) {
+    result_.summary.status = status;
+    result_.summary.message = std::move(message);
+    return false;
+  }
+
+  // The result, its times taken.
+  TransientResult Finish() {
+    result_.summary.wall_s = timer_.WallSeconds();
+    result_.summary.cpu_s = timer_.CpuSeconds();
+    return std::move(result_);
+  }
+
+ private:
+  const CpuTimer timer_;
+  const TransientOptions& options_;
+  TransientResult result_;
+};
+
+bool IsCentralDifference(NewmarkParameters scheme) {
+  return scheme.beta == 0.0 && scheme.gamma == 0.5;
+}
+
+// The general run: Newmark's step on any system, every option honoured.
+TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
+                           const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                           const TransientOptions& options, Bookkeeping& book) {
+  TransientResult& result = book.Result();
   RunSummary& summary = result.summary;
-  summary.dt_requested_s = options.dt_s;
-  summary.steps_requested = std::max<std::int64_t>(
-      1, static_cast<std::int64_t>(std::ceil(options.end_time_s / options.dt_s - 1e-9)));
-  summary.dt_used_s = options.end_time_s / static_cast<double>(summary.steps_requested);
-  const double dt = summary.dt_used_s;
-
-  Recorder recorder{system, options, result};
-  recorder.Start(dt * options.record_stride,
-                 static_cast<std::size_t>(summary.steps_requested / options.record_stride) + 1);
+  const double dt = book.Dt();
   std::optional<ImpactTracker> impacts;
-  auto finish = [&](RunStatus status, std::string message) {
+  auto finish = [&] {
     if (impacts && summary.steps_taken > 0) {
       result.impact_statistics = impacts->Finish(summary.steps_taken);
     }
-    summary.status = status;
-    summary.message = std::move(message);
-    summary.wall_s = timer.WallSeconds();
-    summary.cpu_s = timer.CpuSeconds();
-    return std::move(result);
+    return book.Finish();
   };
 
+  Recorder recorder{options, result};
+  recorder.Start(book.DtRecord(), book.Records(), system.LastContactForces().size());
   NewmarkIntegrator integrator(scheme, system);
   if (!integrator.Init(x0, v0)) {
-    return finish(RunStatus::kFailed, "initial acceleration: the system solve failed");
+    book.Stop(RunStatus::kFailed, "initial acceleration: the system solve failed");
+    return finish();
   }
   const bool dissipates = system.Dissipates();
   double dissipated = 0.0;
@@ -139,7 +262,13 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
   double work = 0.0, work_magnitude = 0.0;
   double load_power_before = loaded ? system.ExternalPower(0.0, v0) : 0.0;
   summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
-  recorder.Record(integrator.X(), integrator.V(), 0.0, 0.0);
+  auto record = [&] {
+    recorder.RecordObserved(integrator.X(), integrator.V());
+    recorder.RecordForces(system.LastContactForces());
+    recorder.RecordEnergy([&] { return system.EnergyAt(integrator.X(), integrator.V()); },
+                          dissipated, work);
+  };
+  record();
   if (options.track_max_contact_force) {
     const auto forces = system.LastContactForces();
     result.max_contact_force_n.assign(forces.begin(), forces.end());
@@ -155,7 +284,8 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
       summary.steps_taken = n - 1;
       std::ostringstream msg;
       msg << "step " << n << " (t = " << n * dt << " s): the system solve failed";
-      return finish(RunStatus::kFailed, msg.str());
+      book.Stop(RunStatus::kFailed, msg.str());
+      return finish();
     }
     summary.steps_taken = n;
     if (options.track_max_contact_force) {
@@ -178,37 +308,95 @@ TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme
     }
     if (--to_record == 0) {
       to_record = options.record_stride;
-      recorder.Record(integrator.X(), integrator.V(), dissipated, work);
+      record();
     }
     if (--to_check == 0 || n == summary.steps_requested) {
       to_check = options.divergence_check_stride;
       const double total = system.EnergyAt(integrator.X(), integrator.V()).Total() + dissipated;
-      if (!std::isfinite(total) || !integrator.X().allFinite()) {
-        std::ostringstream msg;
-        msg << "non-finite state at step " << n << " (t = " << n * dt << " s)";
-        return finish(RunStatus::kDiverged, msg.str());
+      if (!book.Check(n, integrator.T(), total, integrator.X().allFinite(), work_magnitude)) {
+        return finish();
       }
-      const double scale = summary.initial_energy_j + work_magnitude;
-      if (scale > 0.0) {
-        const double ratio = total / scale;
-        summary.max_energy_ratio = std::max(summary.max_energy_ratio, ratio);
-        if (ratio > options.energy_growth_limit) {
-          std::ostringstream msg;
-          msg << "energy grew to " << ratio << " times its initial value at step " << n
-              << " (t = " << n * dt << " s), limit " << options.energy_growth_limit;
-          return finish(RunStatus::kDiverged, msg.str());
-        }
-      }
-      if (options.on_progress) options.on_progress(integrator.T());
     }
   }
-  if (!dissipates && summary.max_energy_ratio > options.unstable_energy_ratio) {
-    std::ostringstream msg;
-    msg << "undamped, energy grew to " << summary.max_energy_ratio
-        << " times its initial value (unstable above " << options.unstable_energy_ratio << ")";
-    return finish(RunStatus::kUnstable, msg.str());
+  book.Complete(dissipates);
+  return finish();
+}
+
+// The run in increment form (core/increment_stepper.h), for the systems and options it takes:
+// no dissipation, loads or impact statistics. Steps go by blocks between checks; a record
+// needing the velocity or the energies takes blocks of one step.
+TransientResult RunInIncrements(IncrementStepper& stepper, const SecondOrderSystem& system,
+                                const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                const TransientOptions& options, Bookkeeping& book) {
+  TransientResult& result = book.Result();
+  RunSummary& summary = result.summary;
+  const int rows = stepper.Rows(), zones = stepper.Zones();
+  Recorder recorder{options, result};
+  recorder.Start(book.DtRecord(), book.Records(), static_cast<std::size_t>(zones));
+  stepper.Init(x0, v0);
+  summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
+  // Records of velocities and energies need the state at each recorded step: blocks of one.
+  const bool state_per_record = options.record_velocity || options.record_energy;
+  auto record_state = [&] {
+    recorder.RecordVelocities(stepper.V());
+    recorder.RecordEnergy([&] { return system.EnergyAt(stepper.X(), stepper.V()); }, 0.0, 0.0);
+  };
+  std::vector<double> observed(options.observed_rows.size());
+  for (int j = 0; j < rows; ++j) observed[j] = options.observed_rows[j].dot(x0);
+  int to_record = 1;
+  recorder.RecordBlock(observed.data(), stepper.Forces().data(), 1, to_record);
+  record_state();
+  if (options.track_max_contact_force) {
+    result.max_contact_force_n.assign(stepper.Forces().begin(), stepper.Forces().end());
   }
-  return finish(RunStatus::kOk, "");
+
+  const int block = state_per_record ? 1 : options.divergence_check_stride;
+  std::vector<double> forces(static_cast<std::size_t>(block * zones));
+  observed.resize(static_cast<std::size_t>(block * rows));
+  int to_check = options.divergence_check_stride;
+  while (summary.steps_taken < summary.steps_requested) {
+    const int steps = static_cast<int>(
+        std::min<std::int64_t>({block, to_check, summary.steps_requested - summary.steps_taken}));
+    stepper.Advance(steps, observed.data(), forces.data());
+    if (options.track_max_contact_force) {
+      for (int s = 0; s < steps; ++s) {
+        for (int c = 0; c < zones; ++c) {
+          result.max_contact_force_n[c] =
+              std::max(result.max_contact_force_n[c], forces[s * zones + c]);
+        }
+      }
+    }
+    if (recorder.RecordBlock(observed.data(), forces.data(), steps, to_record) &&
+        state_per_record) {
+      record_state();
+    }
+    summary.steps_taken += steps;
+    to_check -= steps;
+    if (to_check == 0 || summary.steps_taken == summary.steps_requested) {
+      to_check = options.divergence_check_stride;
+      const Eigen::VectorXd& x = stepper.X();
+      const double total = system.EnergyAt(x, stepper.V()).Total();
+      if (!book.Check(summary.steps_taken, stepper.T(), total, x.allFinite(), 0.0)) {
+        return book.Finish();
+      }
+    }
+  }
+  book.Complete(false);
+  return book.Finish();
+}
+
+}  // namespace
+
+TransientResult RunTransient(SecondOrderSystem& system, NewmarkParameters scheme,
+                             const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                             const TransientOptions& options) {
+  Bookkeeping book(options);
+  if (IsCentralDifference(scheme) && !options.track_impact_statistics) {
+    if (auto stepper = IncrementStepper::For(system, book.Dt(), options.observed_rows)) {
+      return RunInIncrements(*stepper, system, x0, v0, options, book);
+    }
+  }
+  return RunNewmark(system, scheme, x0, v0, options, book);
 }
 
 }  // namespace shockmap

@@ -2,15 +2,15 @@
 // engine (commit 4816a50), and a database written at schema version 2 by that code reads back
 // every stored point after migration.
 //
-// The paper's problem is equal bit for bit in everything but its scores: the reference is
-// sampled by a rotation recurrence since (docs/performance.md, "References and study points"),
-// within ~1e-14 of the exact sum it was evaluated with, which moves Err by up to 2e-14 and SRf
-// by 1e-14 relative; they are compared to 1e-12. At R_k = 1e5 the stiff contact amplifies
-// last-digit differences of the math library: the unchanged code of 6310af1, which met 1e-12 on
-// an earlier machine, moves Err by up to 6.0e-12 and SRf by about 3e-12 relative on a later one
-// (all 28 points at R_k = 1e5 and no other, the same with 1 or 2 jobs; disabling glibc's FMA and
-// AVX2 variants with GLIBC_TUNABLES changes which points differ), so those rows are compared to
-// kStiffTolerance (1e-10).
+// The paper's problem is equal in everything but its scores. Its points run the explicit step
+// in increment form since (core/increment_stepper.h): the same scheme with other roundings. Up
+// to R_k = 3000 that moves Err and SRf by at most 2.4e-12 (8.3e-11 and 1.2e-10 relative at
+// 3162); they are compared to kSoftTolerance (1e-10), and to 1e-9 below the stiffness from
+// which points store their scores' spread (scoring.spread.from_rk, 1e4). There a rounding
+// change moves a single run's scores as a perturbation of the release by 1e-12 does (docs/
+// physics.md §4.5): by up to 0.077 in Err at R_k = 3.2e4, 1.23 times the spread of the point's
+// perturbed runs. Those scores are compared to twice their spread; the points there that did
+// not end ok store no spread, and only their statuses are compared.
 // Scene studies are equal in status, size and steps,
 // and their forces (SRf, the largest force, the first shock's peak) to 1e-12 relative: the one
 // reduced model sums a zone's displacement in the order the canonical model did, which moves
@@ -108,9 +108,12 @@ void ExpectClose(const std::string& actual, const std::string& expected, double 
       << what << ": " << actual << " vs " << expected;
 }
 
-// The stiffness ratio from which the math library's last digits show in the scores (see above).
-constexpr double kStiffRk = 1e5;
-constexpr double kStiffTolerance = 1e-10;
+// The tolerances of the quick study's scores (see above).
+constexpr double kSoftRk = 3000.0;
+constexpr double kSoftTolerance = 1e-10;
+constexpr double kTolerance = 1e-9;
+constexpr double kSpreadsAllowed = 2.0;
+constexpr double kSpreadFromRk = 1e4;  // studies/quick.json takes the default.
 
 class RefactorParity : public testing::TempDirTest {};
 
@@ -123,12 +126,18 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheFixture) {
   const std::vector<std::string> actual = Rows(Path("q.db"), kCanonicalRows);
   const std::vector<std::string> ratios =
       Rows(Path("q.db"), "SELECT quote(max_energy_ratio) FROM results ORDER BY study, point_id");
+  const std::vector<std::string> spreads =
+      Rows(Path("q.db"),
+           "SELECT quote(err_spread_high - err_spread_low), quote(srf_spread_high - "
+           "srf_spread_low) FROM results ORDER BY study, point_id");
   const std::vector<std::string> expected = Lines(Source("tests/data/quick_results.txt"));
   ASSERT_EQ(actual.size(), expected.size());
   ASSERT_EQ(ratios.size(), expected.size());
+  ASSERT_EQ(spreads.size(), expected.size());
   for (std::size_t i = 0; i < expected.size(); ++i) {
     const std::vector<std::string> e = RowFields(expected[i]);
     const std::vector<std::string> a = RowFields(actual[i]);
+    const std::vector<std::string> spread = RowFields(spreads[i]);
     ASSERT_EQ(a.size(), 10u) << actual[i];
     const double ratio = std::stod(ratios[i]);
     if (e[5] == "ok") {
@@ -137,16 +146,17 @@ TEST_F(RefactorParity, QuickStudyOutcomesAreThoseOfTheFixture) {
     for (int exact : {0, 1, 2, 3, 4, 5, 8, 9}) {
       EXPECT_EQ(a[exact], e[exact]) << expected[i] << ", energy ratio " << ratio;
     }
-    const double tolerance = std::stod(e[2]) >= kStiffRk ? kStiffTolerance : 1e-12;
     for (int score : {6, 7}) {
       ASSERT_EQ(a[score] == "NULL", e[score] == "NULL") << expected[i];
       if (e[score] == "NULL") continue;
-      if (score == 6) {
-        EXPECT_LE(std::abs(std::stod(a[6]) - std::stod(e[6])), tolerance)
-            << "Err of " << expected[i];
-      } else {
-        ExpectClose(a[7], e[7], tolerance, "SRf of " + expected[i]);
-      }
+      // Absolute: Err is a relative error already, SRf a ratio near 1.
+      const std::string& width = spread[score - 6];
+      if (width == "NULL" && std::stod(e[2]) >= kSpreadFromRk) continue;
+      const double tolerance = width != "NULL" ? kSpreadsAllowed * std::stod(width) + kTolerance
+                               : std::stod(e[2]) <= kSoftRk ? kSoftTolerance
+                                                            : kTolerance;
+      EXPECT_LE(std::abs(std::stod(a[score]) - std::stod(e[score])), tolerance)
+          << (score == 6 ? "Err of " : "SRf of ") << expected[i];
     }
   }
 }

@@ -150,10 +150,11 @@ void CheckIndex(const Place& at) {
     EXPECT_TRUE(std::filesystem::exists(at.dir / "report" / png)) << png;
     EXPECT_NE(html.find(std::string("href=\"") + png + "\""), std::string::npos) << png;
   }
-  // Every diverged cell carries a cross, every unstable one a square; the dt map's bound names
-  // omega itself.
+  // Every diverged cell carries a cross, every undecided one a diamond (both paths), every
+  // unstable one a square; the dt map's bound names omega itself.
   EXPECT_GT(Count(html, "data-status=\"diverged\""), 0u);
-  EXPECT_EQ(Count(html, "<path class=\"marker\""), Count(html, "data-status=\"diverged\""));
+  EXPECT_EQ(Count(html, "<path class=\"marker\""),
+            Count(html, "data-status=\"diverged\"") + Count(html, "data-outcome=\"undecided\""));
   EXPECT_EQ(Count(html, "<rect class=\"marker\""), Count(html, "data-status=\"unstable\""));
   EXPECT_NE(html.find("dt = 2 / \u03c9<sub>max</sub>"), std::string::npos);
 }

@@ -364,18 +364,30 @@ TEST(HardCases, ContactAtTheFirstStep) {
 }
 
 // A million steps (R_ftrunc = 10 at 0.1 dt_sharp: 21.7 s, ~420 periods, hundreds of impacts):
-// the energy error stays bounded, with no secular growth.
+// the energy error stays bounded, with no secular growth. Past the first impacts the rattling is
+// chaotic, so the error of a single run is a random walk whose end depends on rounding. With the
+// release scaled by 1 + j 1e-12 (j = -4 .. 4), Newmark's form gave late drifts of 0.044 to 0.156
+// (median 0.070) and largest energy ratios up to 1.111; the increment form 0.031 to 0.179
+// (median 0.074) and up to 1.138 (docs/performance.md, "The explicit step in increment form").
+// The median drift is judged, and every run's growth.
 TEST(HardCases, AMillionStepsKeepTheEnergy) {
-  const CantileverImpact problem;
-  const ImpactModel model = BuildImpactModel(problem, Scheme::kExplicitModal, 10);
+  const CantileverImpact nominal;
+  const ImpactModel model = BuildImpactModel(nominal, Scheme::kExplicitModal, 10);
   const double end = 1e6 * 0.1 * model.bounds.dt_sharp_s;
-  const Outcome o = Integrate(problem, Scheme::kExplicitModal, 10, 0.1, end, 0, 1000);
-  Report("million steps", o);
-  EXPECT_EQ(o.result.summary.steps_taken, 1'000'000);
-  EXPECT_EQ(o.result.summary.status, RunStatus::kOk);
-  EXPECT_TRUE(o.finite);
-  EXPECT_LT(o.result.summary.max_energy_ratio, 1.1);
-  EXPECT_LT(o.late_drift, 0.1);
+  std::vector<double> late;
+  for (int j = -4; j <= 4; ++j) {
+    CantileverImpact problem = nominal;
+    problem.initial_tip_m *= 1.0 + j * 1e-12;
+    const Outcome o = Integrate(problem, Scheme::kExplicitModal, 10, 0.1, end, 0, 1000);
+    Report("million steps, release x (1 + " + std::to_string(j) + "e-12)", o);
+    EXPECT_EQ(o.result.summary.steps_taken, 1'000'000);
+    EXPECT_EQ(o.result.summary.status, RunStatus::kOk);
+    EXPECT_TRUE(o.finite);
+    EXPECT_LT(o.result.summary.max_energy_ratio, 1.25);
+    late.push_back(o.late_drift);
+  }
+  std::ranges::nth_element(late, late.begin() + 4);
+  EXPECT_LT(late[4], 0.1) << "median late drift";
 }
 
 TEST(HardCases, HighTruncationAndFineMeshStayStable) {

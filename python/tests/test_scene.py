@@ -145,7 +145,7 @@ def concurrency_scene(source_dir):
     """The planar bundle over a simulated time that takes a few tenths of a second."""
     path = source_dir / "scenes" / "bundle_row.json"
     spec = json.loads(path.read_text())
-    spec["solver"]["end_time_s"] = 1.0
+    spec["solver"]["end_time_s"] = 1.5
     return shockmap.Scene.from_dict(spec, path=str(path))
 
 
