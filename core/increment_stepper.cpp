@@ -1,7 +1,6 @@
 #include "core/increment_stepper.h"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <utility>
 
@@ -138,33 +137,28 @@ template <int kZones, int kDotRows, int kChunks>
   }
 }
 
-// The pass for kChunks lanes of modes, each clone's: `kChunks` = 0 for any model.
-using PassFunction = void (*)(const Pass&, int, double*, double*);
+// The pass of a model with one zone whose state fits kMaxChunks lanes: the instantiation for
+// its number of lanes (a fold over 1 .. kMaxChunks).
 constexpr int kMaxChunks = 16;  // 64 modes: their state fits AVX-512's 32 registers.
 
+template <int... kChunks>
+[[gnu::always_inline]] inline void AdvanceOneZoneIn(std::integer_sequence<int, kChunks...>,
+                                                    const Pass& p, int steps, double* observed,
+                                                    double* forces) {
+  const int chunks = p.padded / kLanes;
+  ((chunks == kChunks + 1 ? AdvanceSteps<1, 0, kChunks + 1>(p, steps, observed, forces) : void()),
+   ...);
+}
+
 // The paper's problem: one zone, the tip read off it, the state in registers.
-template <int kChunks>
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void AdvanceOneZone(
     const Pass& p, int steps, double* observed, double* forces) {
-  AdvanceSteps<1, 0, kChunks>(p, steps, observed, forces);
+  AdvanceOneZoneIn(std::make_integer_sequence<int, kMaxChunks>(), p, steps, observed, forces);
 }
 
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void AdvanceAny(
     const Pass& p, int steps, double* observed, double* forces) {
   AdvanceSteps<0, -1, 0>(p, steps, observed, forces);
-}
-
-template <int... kChunks>
-constexpr std::array<PassFunction, sizeof...(kChunks)> OneZonePasses(
-    std::integer_sequence<int, kChunks...>) {
-  return {&AdvanceOneZone<kChunks + 1>...};
-}
-
-// The pass for a model of `zones` zones, `dot_rows` rows summed in the pass and `chunks` lanes.
-PassFunction PassFor(int zones, int dot_rows, int chunks) {
-  static constexpr auto kOneZone = OneZonePasses(std::make_integer_sequence<int, kMaxChunks>());
-  if (zones == 1 && dot_rows == 0 && chunks <= kMaxChunks) return kOneZone[chunks - 1];
-  return &AdvanceAny;
 }
 
 bool Qualifies(const SceneModalSystem& system, std::span<const Eigen::VectorXd> observed) {
@@ -309,7 +303,11 @@ void IncrementStepper::Advance(int steps, double* observed, double* forces) {
                d_.data(),
                predictions_.data(),
                forces_.data()};
-  PassFor(zones_, dot_rows_, padded_ / kLanes)(p, steps, observed, forces);
+  if (zones_ == 1 && dot_rows_ == 0 && padded_ / kLanes <= kMaxChunks) {
+    AdvanceOneZone(p, steps, observed, forces);
+  } else {
+    AdvanceAny(p, steps, observed, forces);
+  }
   steps_ += steps;
 }
 

@@ -21,7 +21,8 @@
 //
 // A model qualifies (IncrementStepper::For) when it is a scene's modal model without modal
 // damping or loads, with at most kMaxZones zones, each a linear penalty without damping or
-// friction; the zones' rows are then dense over the modal coordinates.
+// friction, and at most kMaxZones observed rows; the zones' rows are then dense over the modal
+// coordinates.
 
 #include <Eigen/Dense>
 #include <memory>

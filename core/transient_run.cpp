@@ -39,11 +39,12 @@ namespace {
 struct Recorder {
   const TransientOptions& options;
   TransientResult& result;
+  std::size_t zones = 0;  // The system's contacts, from Start.
 
   // `records`: how many records a run to the end takes; the histories hold that much from the
   // start, so that recording never moves them. `contacts`: the system's.
   void Start(double dt_record, std::size_t records, std::size_t contacts) {
-    zones_ = contacts;
+    zones = contacts;
     auto init = [&](std::vector<UniformSignal>& v, std::size_t n) {
       v.assign(n, UniformSignal{0.0, dt_record, {}});
       for (auto& s : v) s.values.reserve(records);
@@ -87,7 +88,7 @@ struct Recorder {
       return false;
     }
     const int rows = static_cast<int>(options.observed_rows.size());
-    const int zones = static_cast<int>(zones_);
+    const int width = static_cast<int>(zones);
     for (int j = 0; j < rows; ++j) {
       AppendEvery(result.displacement_m[j].values, observed + j, rows, first, steps);
     }
@@ -95,7 +96,7 @@ struct Recorder {
       for (std::size_t c = 0; c < result.contact_force_n.size(); ++c) {
         const int zone =
             options.recorded_contacts.empty() ? static_cast<int>(c) : options.recorded_contacts[c];
-        AppendEvery(result.contact_force_n[c].values, forces + zone, zones, first, steps);
+        AppendEvery(result.contact_force_n[c].values, forces + zone, width, first, steps);
       }
     }
     const int last = first + (steps - 1 - first) / stride * stride;
@@ -134,7 +135,7 @@ struct Recorder {
     }
   }
 
-  // e: the energies at the recorded state, asked for only when recorded.
+  // e_now() gives the energies at the recorded state; it is called only when they are recorded.
   template <typename EnergiesNow>
   void RecordEnergy(EnergiesNow e_now, double dissipated_j, double work_j) {
     if (!options.record_energy) return;
@@ -145,8 +146,6 @@ struct Recorder {
     result.energy.dissipated_j.values.push_back(dissipated_j);
     result.energy.external_work_j.values.push_back(work_j);
   }
-
-  std::size_t zones_ = 0;  // The system's contacts.
 };
 
 // What every run keeps beside its steps: the timer, the summary and the divergence checks.
