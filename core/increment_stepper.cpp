@@ -12,16 +12,18 @@ constexpr int kMaxZones = IncrementStepper::kMaxZones;
 
 // Four doubles: one AVX2 register (AVX-512 adds registers and masks, not width here: the
 // models' few modes would leave most of eight lanes padding), two SSE2 ones. Loaded and stored
-// at any double's alignment, as doubles (no aliasing beyond them).
-using Lanes = double __attribute__((vector_size(32), aligned(8)));
+// by copy, at any double's alignment.
+using Lanes = double __attribute__((vector_size(32)));
 using HalfLanes = double __attribute__((vector_size(16)));
 constexpr int kLanes = 4;
 
 [[gnu::always_inline]] inline Lanes Load(const double* p) {
-  return *reinterpret_cast<const Lanes*>(p);
+  Lanes v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
 }
 
-[[gnu::always_inline]] inline void Store(double* p, Lanes v) { *reinterpret_cast<Lanes*>(p) = v; }
+[[gnu::always_inline]] inline void Store(double* p, Lanes v) { __builtin_memcpy(p, &v, sizeof v); }
 
 // (v0 + v2) + (v1 + v3).
 [[gnu::always_inline]] inline double Sum(Lanes v) {
