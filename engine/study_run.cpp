@@ -4,10 +4,6 @@
 
 #include <thread>
 
-#include "engine/canonical_study.h"
-#include "engine/ensemble_study.h"
-#include "engine/scene_study.h"
-
 namespace shockmap {
 
 int WorkerCount(const StudyRunOptions& options) {
@@ -41,33 +37,12 @@ std::string OutcomeCounts(const StudyRunSummary& s) {
                      s.diverged, s.unstable, s.failed, s.reference_unconverged);
 }
 
-namespace {
-
-// Calls f with the study kind of the file.
-template <typename F>
-auto WithKind(const StudyFile& study, F f) {
-  return std::visit(
-      [&](const auto& spec) {
-        using Spec = std::decay_t<decltype(spec)>;
-        if constexpr (std::is_same_v<Spec, StudySpec>) {
-          return f(CanonicalStudy(spec));
-        } else if constexpr (std::is_same_v<Spec, SceneStudySpec>) {
-          return f(SceneStudy(spec));
-        } else {
-          return f(EnsembleStudy(spec));
-        }
-      },
-      study);
-}
-
-}  // namespace
-
 StudyRunSummary RunStudy(const StudyFile& study, const StudyRunOptions& options) {
-  return WithKind(study, [&](const auto& kind) { return RunStudyKind(kind, options); });
+  return WithStudyKind(study, [&](const auto& kind) { return RunStudyKind(kind, options); });
 }
 
 void ServeStudy(const StudyFile& study, RemoteWorkers& remote) {
-  WithKind(study, [&](const auto& kind) { ServeStudyKind(kind, remote); });
+  WithStudyKind(study, [&](const auto& kind) { ServeStudyKind(kind, remote); });
 }
 
 }  // namespace shockmap

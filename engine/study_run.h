@@ -1,10 +1,33 @@
 #pragma once
 // Runs a study file of any kind through the one study engine (engine/study_engine.h).
 
+#include <type_traits>
+#include <variant>
+
+#include "engine/canonical_study.h"
+#include "engine/ensemble_study.h"
+#include "engine/scene_study.h"
 #include "engine/study_engine.h"
 #include "formats/study_file.h"
 
 namespace shockmap {
+
+// Returns f(kind) with the study kind of the file (CanonicalStudy, SceneStudy or EnsembleStudy).
+template <typename F>
+auto WithStudyKind(const StudyFile& study, F f) {
+  return std::visit(
+      [&](const auto& spec) {
+        using Spec = std::decay_t<decltype(spec)>;
+        if constexpr (std::is_same_v<Spec, StudySpec>) {
+          return f(CanonicalStudy(spec));
+        } else if constexpr (std::is_same_v<Spec, SceneStudySpec>) {
+          return f(SceneStudy(spec));
+        } else {
+          return f(EnsembleStudy(spec));
+        }
+      },
+      study);
+}
 
 // Throws InputError when the study is stored with other settings, DbError on database faults,
 // NoWorkerRankLeft when every worker rank fell silent. With options.remote, this is rank 0 of an
