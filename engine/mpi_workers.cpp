@@ -40,6 +40,12 @@ double SecondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
+// The time left until a worker's next heartbeat is due (none left: zero).
+std::chrono::microseconds UntilHeartbeat(Clock::time_point last_sent) {
+  const double left_s = std::max(0.0, kWorkerHeartbeatPeriodS - SecondsSince(last_sent));
+  return std::chrono::microseconds(static_cast<long>(left_s * 1e6));
+}
+
 struct Message {
   std::string bytes;
   int source = 0;
@@ -89,21 +95,40 @@ class Sends {
   std::list<Pending> pending_;  // A list: requests keep their address.
 };
 
-// Waits longer the longer nothing happens, up to 0.25 ms: a task waits at most that long for
-// rank 0 to notice its rank is free, at about 1 % of a core.
+// How a process waits for its next message (kSpinAfterMessageS, kShortestSleepS,
+// kLongestSleepS). It spins because answers and tasks follow each other within a short task's
+// time and a sleeping process notices a message late: on the 2-core test machine a sleep of
+// 20 us lasts about 100 us, and under -np 2 a message waited 400 to 600 us for a sleeping rank
+// (studies/quick.json's 319 tasks took 0.75 s sleeping, 0.46 s spinning; docs/cluster.md).
+// Asleep, a message waits at most kLongestSleepS, at about 1 % of a core.
 class Backoff {
  public:
-  void Reset() { wait_ = kShortest; }
+  // A message came (or went): spin again.
+  void Reset() {
+    wait_ = kShortest;
+    last_ = Clock::now();
+  }
+  // How long to sleep now: zero while spinning (yield instead).
   std::chrono::microseconds Next() {
+    if (SecondsSince(last_) < kSpinAfterMessageS) return std::chrono::microseconds(0);
     const auto wait = wait_;
     wait_ = std::min(wait_ * 2, kLongest);
     return wait;
   }
-  void Wait() { std::this_thread::sleep_for(Next()); }
+  void Wait() {
+    const auto wait = Next();
+    if (wait.count() == 0) {
+      std::this_thread::yield();
+    } else {
+      std::this_thread::sleep_for(wait);
+    }
+  }
 
  private:
-  static constexpr std::chrono::microseconds kShortest{20}, kLongest{250};
+  static constexpr std::chrono::microseconds kShortest{static_cast<long>(kShortestSleepS * 1e6)};
+  static constexpr std::chrono::microseconds kLongest{static_cast<long>(kLongestSleepS * 1e6)};
   std::chrono::microseconds wait_ = kShortest;
+  Clock::time_point last_ = Clock::now();
 };
 
 std::string Framed(std::uint64_t index, std::string_view body) {
@@ -374,6 +399,7 @@ void MpiWorkers::Serve(const Execute& execute) {
 void MpiWorkers::Relay(WorkerQueues& q) {
   Backoff backoff;
   Clock::time_point last_sent = Clock::now();
+  int in_flight = 0;  // Tasks taken whose results are not sent yet.
   for (;;) {
     std::optional<Message> m = Receive(0, MPI_ANY_TAG);
     if (m && m->tag == kQuit) return;
@@ -384,10 +410,21 @@ void MpiWorkers::Relay(WorkerQueues& q) {
         q.tasks.push_back(std::move(m->bytes));
         q.ready.notify_one();
         backoff.Reset();
+        ++in_flight;
       } else {
-        // A result is sent the moment it is ready; a task is looked for after the wait.
-        q.finished.wait_for(lock, backoff.Next(),
-                            [&] { return !q.results.empty() || !q.error.empty(); });
+        // A result is sent the moment it is ready; a task is looked for after the wait. While
+        // every compute thread is busy and nothing is left to send, no task can come (rank 0
+        // hands a rank one task per thread): the wait lasts until a result or the heartbeat,
+        // so that looking for tasks takes no time from the computation.
+        const bool busy = in_flight >= threads_ && sends_.Empty();
+        const auto wait = busy ? UntilHeartbeat(last_sent) : backoff.Next();
+        if (wait.count() > 0) {
+          q.finished.wait_for(lock, wait, [&] { return !q.results.empty() || !q.error.empty(); });
+        } else {
+          lock.unlock();
+          std::this_thread::yield();
+          lock.lock();
+        }
       }
       if (!q.error.empty()) {
         std::fprintf(stderr, "shockmap: rank %d: %s\n", rank_, q.error.c_str());
@@ -396,6 +433,7 @@ void MpiWorkers::Relay(WorkerQueues& q) {
       done.swap(q.results);
     }
     for (std::string& r : done) sends_.Post(0, kResult, std::move(r));
+    in_flight -= static_cast<int>(done.size());
     if (!done.empty()) {
       backoff.Reset();
       last_sent = Clock::now();

@@ -84,4 +84,10 @@ class RemoteWorkers {
 inline constexpr double kDefaultRankTimeoutS = 60.0;
 inline constexpr double kWorkerHeartbeatPeriodS = 0.5;
 
+// How a rank waits for its next message (engine/mpi_workers.cpp, Backoff): it yields its core
+// for kSpinAfterMessageS after the last message, then sleeps kShortestSleepS, twice that, and
+// so on up to kLongestSleepS between looks.
+inline constexpr double kSpinAfterMessageS = 2e-3;
+inline constexpr double kShortestSleepS = 20e-6, kLongestSleepS = 250e-6;
+
 }  // namespace shockmap
