@@ -204,7 +204,8 @@ class Simulation {
     }
   }
 
-  // Rank 0 after a sleep: reads an answer if one came, else stores the group if it is due.
+  // Rank 0 looking for work (after a sleep, or its turn's hand-out): reads an answer if one
+  // came, else stores the group if it is due, else waits.
   void Look() {
     if (!inbox_.empty()) {
       Consume();
@@ -218,7 +219,7 @@ class Simulation {
   }
   bool GroupDue() const { return finished_ > 0 && now_s_ >= last_store_s_ + kGroupLatencyS; }
 
-  // Rank 0 idle: hands tasks out, then reads the next answer or waits for one.
+  // Rank 0 idle: hands tasks out, then looks for work.
   void Turn() {
     HandOut();
     if (consumed_ == costs_.tasks.size()) {
@@ -229,13 +230,7 @@ class Simulation {
       }
       return;
     }
-    if (!inbox_.empty()) {
-      Consume();
-    } else if (finished_ > 0) {
-      Schedule(NextLook(rank0_reset_s_, last_store_s_ + kGroupLatencyS, setup_.sleep_overshoot_s),
-               EventType::kRank0Looks);
-    }
-    Rank0Idle();
+    Look();
   }
 
   void HandOut() {
