@@ -204,6 +204,9 @@ int main(int argc, char** argv) {
   app.add_option("--cores", f.setup.cores, "cores shared by every rank (0: one each)");
   app.add_option("--bandwidth", f.setup.bandwidth_bytes_per_s, "bytes/s of rank 0's link");
   app.add_option("--latency", f.setup.latency_s, "s per message");
+  f.setup.sleep_overshoot_s = -1.0;
+  app.add_option("--sleep-overshoot", f.setup.sleep_overshoot_s,
+                 "s a sleep lasts beyond what it asks (default: measured here)");
   app.add_option("--check", f.check,
                  "NP=SECONDS,...: point phases of real `mpirun -np NP` runs, in increasing NP; the "
                  "task overhead is fitted on the first");
@@ -215,8 +218,8 @@ int main(int argc, char** argv) {
   }
   const MeasuredCosts m = Costs(f);
   PrintCosts(m);
-  f.setup.sleep_overshoot_s = SleepOvershootS();
-  fmt::print("sleeps here last {:.1f} us longer than asked\n", 1e6 * f.setup.sleep_overshoot_s);
+  if (f.setup.sleep_overshoot_s < 0.0) f.setup.sleep_overshoot_s = SleepOvershootS();
+  fmt::print("sleeps last {:.1f} us longer than asked\n", 1e6 * f.setup.sleep_overshoot_s);
   if (!f.check.empty()) Check(f, m.costs);
   Predict(f, m);
   return 0;
