@@ -11,13 +11,6 @@
 namespace shockmap {
 namespace {
 
-// A run of less CPU time than 0.5 ms is timed again until 2 runs total 0.5 ms of wall time
-// (at most 101 runs), and the lower median is stored: single wall timings of runs of ~10 us
-// differ a thousandfold between two runs of a study on a loaded machine, one preempted for
-// 10 ms (docs/physics.md §4.4). The budget is about two of a typical point's runs, so that
-// timing does not dominate a study's cost.
-constexpr RepeatedTiming kShortRunTiming{5e-4, 2, 101};
-
 ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   ScoreRow s;
   s.reference_id = reference_id;
@@ -130,8 +123,8 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
   try {
     const CantileverImpact problem = ProblemOf(spec_, point);
     const ComparisonOptions options = OptionsOf(spec_, point);
-    const ComparisonResult r = ScoreAgainstReference(problem, options, reference.run,
-                                                     RecordedHistories::kScored, kShortRunTiming);
+    const ComparisonResult r = ScoreAgainstReference(
+        problem, options, reference.run, RecordedHistories::kScored, ShortRunTiming(spec_.scoring));
     out.status = r.status;
     out.message = r.message;
     out.score = ToScoreRow(r, reference_id);

@@ -348,6 +348,13 @@ void ParseScoring(const Json& value, const std::string& file, const BeamProperti
                                 {0.0, true, std::numeric_limits<double>::infinity()});
     sp.Finish();
   }
+  if (const Json* timing = r.Get("timing")) {
+    JsonObjectReader t(*timing, file, r.PathOf("timing"));
+    s.timing_repeat_until_s =
+        in_range(t, "repeat_until_s", t.Number("repeat_until_s", s.timing_repeat_until_s),
+                 {0.0, false, 1.0});
+    t.Finish();
+  }
   if (const Json* th = r.Get("thresholds")) {
     JsonObjectReader t(*th, file, r.PathOf("thresholds"));
     ReadThresholds(t, s.thresholds);
@@ -514,6 +521,11 @@ std::string ReferenceKey(const StudySpec& spec, const StudyPoint& p) {
               {"window_s", p.window_s},
               {"rest_duration_t1", o.rest_duration_t1}}
       .dump();
+}
+
+std::optional<RepeatedTiming> ShortRunTiming(const ScoringSpec& scoring) {
+  if (scoring.timing_repeat_until_s == 0.0) return std::nullopt;
+  return RepeatedTiming{scoring.timing_repeat_until_s, 2, 101};
 }
 
 std::string SettingsKey(const StudySpec& spec) {

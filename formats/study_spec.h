@@ -61,6 +61,11 @@ struct ScoringSpec {
   // scores' spread ("spread": {"from_rk": ...}); below it they move Err by less than 4e-6
   // (docs/fidelity.md).
   double spread_from_rk = 1e4;
+  // The cost figures of a point's numerical run ("timing": {"repeat_until_s": ...}): a run of
+  // less CPU time than this is run again on the same model until 2 runs total this much wall
+  // time (at most 101), and the lower median is stored (docs/physics.md §4.4); 0 times each run
+  // once. Scores do not depend on it.
+  double timing_repeat_until_s = 5e-4;
   // Validity thresholds by score name (validation/scores.h), read from "thresholds" as each
   // score's key (err_max, srf_min, ...).
   std::map<std::string, double, std::less<>> thresholds = DefaultThresholds();
@@ -105,6 +110,10 @@ StudySpec ParseStudySpec(const nlohmann::json& json, const std::string& file);
 // same seconds do on the paper's beam, so Err and SRf change meaning: the warning says how many
 // it covers and how to give it in periods. Empty otherwise.
 std::optional<std::string> WindowWarning(const StudySpec& spec);
+
+// How a point's numerical run is timed under `scoring`: none for repeat_until_s = 0 (the run's
+// own timing), else RepeatedTiming{repeat_until_s, 2, 101}.
+std::optional<RepeatedTiming> ShortRunTiming(const ScoringSpec& scoring);
 
 CantileverImpact ProblemOf(const StudySpec& spec, const StudyPoint& point);
 ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point);

@@ -123,6 +123,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadSpec{"ModesAxisZero",
                 R"({"name": "x", "grids": [{"rk": 1, "rftrunc": {"modes": [0, 3]}}]})",
                 "grids[0].rftrunc.modes"},
+        BadSpec{
+            "NegativeTimingBudget",
+            R"({"name": "x", "scoring": {"timing": {"repeat_until_s": -1e-4}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.timing.repeat_until_s"},
+        BadSpec{
+            "UnknownTimingKey",
+            R"({"name": "x", "scoring": {"timing": {"repeats": 3}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.timing.repeats"},
         BadSpec{"NoGridNoPoints", R"({"name": "x"})", "(top level)"}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -236,6 +244,25 @@ TEST(StudySpec, AChangedLifelongSettingIsNamedByItsFileKey) {
   EXPECT_EQ(window->given, "0.05");
   EXPECT_FALSE(
       FirstChangedSetting(plain, key(R"("window_s": 0.03, "thresholds": {"err_max": 0.2})")));
+  EXPECT_FALSE(
+      FirstChangedSetting(plain, key(R"("window_s": 0.03, "timing": {"repeat_until_s": 0})")));
+}
+
+// A run shorter than the budget is timed again until two runs total it; 0 times it once.
+TEST(StudySpec, TimingBudgetSetsHowShortRunsAreTimed) {
+  auto timing = [](const std::string& scoring) {
+    return ShortRunTiming(ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {)" + scoring +
+                                                     R"(}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                                         "x.json")
+                              .scoring);
+  };
+  const auto by_default = timing("");
+  ASSERT_TRUE(by_default.has_value());
+  EXPECT_EQ(by_default->min_total_s, 5e-4);
+  EXPECT_EQ(by_default->min_repeats, 2);
+  EXPECT_EQ(by_default->max_repeats, 101);
+  EXPECT_EQ(timing(R"("timing": {"repeat_until_s": 2e-3})")->min_total_s, 2e-3);
+  EXPECT_FALSE(timing(R"("timing": {"repeat_until_s": 0})").has_value());
 }
 
 class StudyDatabaseRuns : public ::testing::Test {
@@ -322,6 +349,27 @@ TEST_F(StudyDatabaseRuns, EveryScoreRecordsItsSrfDefinition) {
                        "SELECT srf FROM results WHERE r_k = 3000 AND r_ftrunc = 10 ORDER BY study");
   ASSERT_EQ(srf.rows.size(), 2u);
   EXPECT_GT(std::abs(std::get<double>(srf.rows[1][0]) - std::get<double>(srf.rows[0][0])), 0.1);
+}
+
+// Timing each run once changes the stored cost only: the scores and step counts of a study
+// timed once equal those of the same points timed again, to the bit.
+TEST_F(StudyDatabaseRuns, TimingEachRunOnceLeavesEveryScoreAsItWas) {
+  RunStudy(Spec("repeated", "[10, 300]"), options_);
+  RunStudy(ParseStudySpec(Json::parse(R"({"name": "once", "scoring": {"window_s": 0.03,
+               "timing": {"repeat_until_s": 0}}, "grids": [{"rk": [100, 3000], "rftrunc": [10, 300]}]})"),
+                          "once.json"),
+           options_);
+  const Table rows = RunReadOnlyQuery(
+      options_.database_path,
+      "SELECT a.err, b.err, a.srf, b.srf, a.steps, b.steps, b.cpu_s FROM results a "
+      "JOIN results b USING (r_k, r_ftrunc) WHERE a.study = 'repeated' AND b.study = 'once'");
+  ASSERT_EQ(rows.rows.size(), 4u);
+  for (const auto& row : rows.rows) {
+    EXPECT_EQ(row[0], row[1]);
+    EXPECT_EQ(row[2], row[3]);
+    EXPECT_EQ(row[4], row[5]);
+    EXPECT_GT(std::get<double>(row[6]), 0.0);
+  }
 }
 
 TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {
