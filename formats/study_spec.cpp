@@ -402,9 +402,12 @@ std::vector<double> ModeEntryTruncations(int first_mode, int last_mode) {
 namespace {
 
 // Refuses a study whose reference at some (R_k, window) exceeds the budget of
-// reference/reference_cost.h, naming the first such point.
+// reference/reference_cost.h, naming the first such point. Each reference is costed once: the
+// points scored against it share it.
 void CheckReferenceCosts(const StudySpec& spec) {
+  std::set<std::string> costed;
   for (const StudyPoint& point : spec.points) {
+    if (!costed.insert(ReferenceKey(spec, point)).second) continue;
     const ReferenceOptions reference = OptionsOf(spec, point).reference;
     const std::string excess =
         ReferenceBudgetExcess(ProblemOf(spec, point), reference, point.window_s);
