@@ -1,30 +1,33 @@
 #include "core/modal_basis_cache.h"
 
 #include <algorithm>
+#include <future>
 #include <list>
+#include <mutex>
 
 namespace shockmap {
 namespace {
 
+using SharedModes = std::shared_future<std::shared_ptr<const ModalBasis>>;
+
 struct CachedModes {
   std::string key;
-  std::shared_ptr<const ModalBasis> modes;
+  SharedModes modes;
   double bytes = 0.0;
 };
 
-// Most recently used first.
+// Most recently used first. Not thread-safe: AllModesCached holds its lock around each call.
 class ModesCache {
  public:
-  std::shared_ptr<const ModalBasis> Find(const std::string& key) {
+  const SharedModes* Find(const std::string& key) {
     const auto it = std::find_if(entries_.begin(), entries_.end(),
                                  [&](const CachedModes& e) { return e.key == key; });
     if (it == entries_.end()) return nullptr;
     entries_.splice(entries_.begin(), entries_, it);
-    return entries_.front().modes;
+    return &entries_.front().modes;
   }
 
-  void Keep(const std::string& key, std::shared_ptr<const ModalBasis> modes) {
-    const double bytes = static_cast<double>(modes->shapes.size()) * sizeof(double);
+  void Keep(const std::string& key, SharedModes modes, double bytes) {
     if (bytes > kModalBasisCacheBytes) return;
     entries_.push_front({key, std::move(modes), bytes});
     bytes_ += bytes;
@@ -32,6 +35,14 @@ class ModesCache {
       bytes_ -= entries_.back().bytes;
       entries_.pop_back();
     }
+  }
+
+  void Forget(const std::string& key) {
+    const auto it = std::find_if(entries_.begin(), entries_.end(),
+                                 [&](const CachedModes& e) { return e.key == key; });
+    if (it == entries_.end()) return;
+    bytes_ -= it->bytes;
+    entries_.erase(it);
   }
 
  private:
@@ -43,11 +54,31 @@ class ModesCache {
 
 std::shared_ptr<const ModalBasis> AllModesCached(const std::string& model_key,
                                                  const FeBeamModel& model) {
-  thread_local ModesCache cache;
-  if (auto found = cache.Find(model_key)) return found;
-  auto modes = std::make_shared<const ModalBasis>(ComputeLowestModes(model, model.Size()));
-  cache.Keep(model_key, modes);
-  return modes;
+  static std::mutex mutex;
+  static ModesCache cache;
+  std::promise<std::shared_ptr<const ModalBasis>> solution;
+  SharedModes modes;
+  bool solve = false;
+  {
+    std::lock_guard lock(mutex);
+    if (const SharedModes* found = cache.Find(model_key)) {
+      modes = *found;
+    } else {
+      modes = solution.get_future().share();
+      const double size = model.Size();
+      cache.Keep(model_key, modes, size * size * sizeof(double));
+      solve = true;
+    }
+  }
+  if (!solve) return modes.get();  // Waits while the thread that asked first solves it.
+  try {
+    solution.set_value(std::make_shared<const ModalBasis>(ComputeLowestModes(model, model.Size())));
+  } catch (...) {
+    solution.set_exception(std::current_exception());
+    std::lock_guard lock(mutex);
+    cache.Forget(model_key);
+  }
+  return modes.get();
 }
 
 }  // namespace shockmap

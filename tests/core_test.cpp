@@ -1027,9 +1027,9 @@ TEST(ContactStations, MatchTheZoneByZoneFormulas) {
   EXPECT_LE((stiffness - expected_k).norm(), 1e-12 * expected_k.norm());
 }
 
-// A worker reuses the eigensolution of a mesh it has solved: the same object for the same key
-// on one thread, each thread its own, and every one equal bit for bit to a fresh solve.
-TEST(ModalBasisCache, ReusesTheSolutionPerThreadAndEqualsAFreshSolve) {
+// The workers share the eigensolution of a mesh: the same object for the same key on every
+// thread, however many ask at once, equal bit for bit to a fresh solve.
+TEST(ModalBasisCache, SharesOneSolutionAcrossThreadsEqualToAFreshSolve) {
   const BeamProperties beam;
   const FeBeamModel fe = AssembleBeam(beam, 30, EndCondition::kClamped, EndCondition::kFree);
   const FeBeamModel other = AssembleBeam(beam, 31, EndCondition::kClamped, EndCondition::kFree);
@@ -1040,11 +1040,20 @@ TEST(ModalBasisCache, ReusesTheSolutionPerThreadAndEqualsAFreshSolve) {
   EXPECT_EQ(AllModesCached("core_test 31", other)->NumModes(), other.Size());
   std::shared_ptr<const ModalBasis> on_other_thread;
   std::thread([&] { on_other_thread = AllModesCached("core_test 30", fe); }).join();
-  EXPECT_NE(on_other_thread, first);
-  for (const auto& cached : {first, on_other_thread}) {
-    EXPECT_TRUE(cached->omega_rad_s == fresh.omega_rad_s);
-    EXPECT_TRUE(cached->shapes == fresh.shapes);
+  EXPECT_EQ(on_other_thread, first);
+  EXPECT_TRUE(first->omega_rad_s == fresh.omega_rad_s);
+  EXPECT_TRUE(first->shapes == fresh.shapes);
+
+  const FeBeamModel asked_at_once =
+      AssembleBeam(beam, 32, EndCondition::kClamped, EndCondition::kFree);
+  std::vector<std::shared_ptr<const ModalBasis>> seen(4);
+  std::vector<std::thread> threads;
+  for (auto& s : seen) {
+    threads.emplace_back([&] { s = AllModesCached("core_test 32", asked_at_once); });
   }
+  for (auto& t : threads) t.join();
+  for (const auto& s : seen) EXPECT_EQ(s, seen.front());
+  EXPECT_TRUE(seen.front()->shapes == ComputeLowestModes(asked_at_once, 64).shapes);
 }
 
 }  // namespace
