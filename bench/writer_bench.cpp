@@ -8,10 +8,12 @@
 //   Writer/Scene/N       a scored point of studies/bundle_row_truncation.json
 // items_per_second is results stored per wall-clock second (the CPU column: per second of
 // the writer's own time, what it reaches on a core of its own); bytes_per_result is the
-// outcome's message.
+// outcome's message; longest_store_ms the longest group's transaction (one that checkpoints).
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <variant>
@@ -105,17 +107,23 @@ void Writer(benchmark::State& state, const Kind& kind) {
   const auto group_size = static_cast<std::size_t>(state.range(0));
   std::vector<FinishedPoint<Kind>> group;
   std::int64_t i = 0;
+  double longest_store_s = 0.0;
   for (auto _ : state) {
     ByteReader in(bytes);
     group.push_back({1 + i++ % kPoints, origin, DecodeOutcome(kind, in)});
     if (group.size() == group_size) {
+      const auto start = std::chrono::steady_clock::now();
       StoreOutcomes<Kind>(kind, db, run, group);
+      longest_store_s =
+          std::max(longest_store_s,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       group.clear();
     }
   }
   if (!group.empty()) StoreOutcomes<Kind>(kind, db, run, group);
   state.SetItemsProcessed(state.iterations());
   state.counters["bytes_per_result"] = static_cast<double>(bytes.size());
+  state.counters["longest_store_ms"] = 1e3 * longest_store_s;
   db.EndRun(run, RunEnd::kCompleted);
   std::filesystem::remove(path);
   std::filesystem::remove(path.string() + "-wal");
