@@ -84,8 +84,8 @@ inline constexpr Column<ScoreRow> kScoreColumns[] = {
     {"dt_sharp_s", &ScoreRow::dt_sharp_s, "s", "the bound 2/ω_max"},
     {"steps", &ScoreRow::steps, "", "time steps taken"},
     {"wall_s", &ScoreRow::wall_s, "s",
-     "wall time of the numerical run alone; of a run under 0.5 ms, the lower median of its "
-     "repeats (docs/physics.md §4.4)"},
+     "wall time of the numerical run alone; of a run under `scoring.timing.repeat_until_s` "
+     "(0.5 ms by default), the lower median of its repeats (docs/physics.md §4.4)"},
     {"cpu_s", &ScoreRow::cpu_s, "s", "CPU time of the numerical run alone, as wall_s"},
     {"max_energy_ratio", &ScoreRow::max_energy_ratio, "",
      "largest total energy over the initial energy"},
