@@ -20,8 +20,7 @@ struct CachedModes {
 class ModesCache {
  public:
   const SharedModes* Find(const std::string& key) {
-    const auto it = std::find_if(entries_.begin(), entries_.end(),
-                                 [&](const CachedModes& e) { return e.key == key; });
+    const auto it = Entry(key);
     if (it == entries_.end()) return nullptr;
     entries_.splice(entries_.begin(), entries_, it);
     return &entries_.front().modes;
@@ -38,14 +37,18 @@ class ModesCache {
   }
 
   void Forget(const std::string& key) {
-    const auto it = std::find_if(entries_.begin(), entries_.end(),
-                                 [&](const CachedModes& e) { return e.key == key; });
+    const auto it = Entry(key);
     if (it == entries_.end()) return;
     bytes_ -= it->bytes;
     entries_.erase(it);
   }
 
  private:
+  std::list<CachedModes>::iterator Entry(const std::string& key) {
+    return std::find_if(entries_.begin(), entries_.end(),
+                        [&](const CachedModes& e) { return e.key == key; });
+  }
+
   std::list<CachedModes> entries_;
   double bytes_ = 0.0;
 };
