@@ -13,6 +13,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -493,6 +494,53 @@ TEST(RunOnWorkers, ATaskStartsOnceItsOwnPrerequisiteIsConsumed) {
   EXPECT_LT(position(3), position(0));
   EXPECT_GT(position(4), position(0));
   EXPECT_GT(position(5), position(0));
+}
+
+// A taker holding a result is given the tasks waiting for it first, while the tasks that wait
+// for nothing keep their place at the front; every task is taken once, and none before it is
+// ready.
+TEST(TaskQueue, GivesATakerTheTasksWaitingForAResultItHolds) {
+  const std::size_t kNoWait = TaskQueue::kNoWait;
+  // Tasks 0 and 1 wait for nothing; 2 and 3 wait for 0, 4 and 5 for 1; 6 waits for nothing.
+  TaskQueue queue({kNoWait, kNoWait, 0, 0, 1, 1, kNoWait});
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{1}), 0u);  // 1 is not consumed: in order.
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{}), 1u);
+  queue.Consumed(0);
+  queue.Consumed(1);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{1}), 6u);  // Waits for nothing: keeps its place.
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{1}), 4u);  // Before 2 and 3, which wait for 0.
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{0, 1}), 2u);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{1}), 5u);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{1}), 3u);  // Nothing of 1 left: the front.
+  EXPECT_FALSE(queue.HasReady());
+  EXPECT_TRUE(queue.IsWaitedFor(0));
+  EXPECT_FALSE(queue.IsWaitedFor(2));
+}
+
+// Tasks that wait for nothing may still need what a taker holds (a reference read from the
+// database, sent along with the first task that needs it): a taker is given those of its groups
+// first, the others in order.
+TEST(TaskQueue, GivesATakerTheReadyTasksOfTheGroupsItHolds) {
+  const std::size_t kNoWait = TaskQueue::kNoWait;
+  TaskQueue queue({kNoWait, kNoWait, kNoWait, kNoWait}, {10, 11, 10, 11});
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{11}), 1u);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{}), 0u);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{10}), 2u);
+  EXPECT_EQ(queue.Take(std::set<std::size_t>{10}), 3u);  // None of group 10 left: in order.
+  EXPECT_FALSE(queue.HasReady());
+}
+
+// A taker holding no ready group takes up one that no taker holds, in the order the groups
+// became ready, rather than the front task of a group another taker holds.
+TEST(TaskQueue, GivesATakerHoldingNoneAGroupNobodyHolds) {
+  const std::size_t kNoWait = TaskQueue::kNoWait;
+  TaskQueue queue({kNoWait, kNoWait, kNoWait, kNoWait, kNoWait}, {10, 10, 11, 11, 12});
+  EXPECT_EQ(queue.Take({}, {}), 0u);
+  EXPECT_EQ(queue.Take({}, {10}), 2u);  // Not 1: group 10 is held elsewhere.
+  EXPECT_EQ(queue.Take({}, {10, 11}), 4u);
+  EXPECT_EQ(queue.Take({10}, {10, 11, 12}), 1u);
+  EXPECT_EQ(queue.Take({12}, {10, 11, 12}), 3u);  // Every group held, none of 12 left: in order.
+  EXPECT_FALSE(queue.HasReady());
 }
 
 // Off a terminal a phase prints plain lines: none before 5 s, and its last line always, with
