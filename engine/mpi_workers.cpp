@@ -183,19 +183,29 @@ class MpiWorkers final : public RemoteWorkers {
   MessageTotals Totals() const override { return totals_; }
   void SetExitCode(int exit_code) override { exit_code_ = exit_code; }
 
-  std::vector<AbandonedTask> Run(const std::vector<std::size_t>& after, const EncodeTask& encode,
+  std::vector<AbandonedTask> Run(const std::vector<std::size_t>& after,
+                                 const std::vector<std::size_t>& group, const EncodeTask& encode,
                                  const ConsumeResult& consume, const std::function<bool()>& poll,
                                  const Describe& describe) override;
   void Serve(const Execute& execute) override;
 
  private:
   // The tasks out on each rank, the idle threads (one entry each, the ranks taking turns), the
-  // tasks of lost ranks, handed out again before new ones, and the tasks not yet handed out.
+  // tasks of lost ranks, handed out again before new ones, the tasks not yet handed out, and by
+  // rank the groups it holds (the waited-for tasks it computed, and the group of every task it
+  // was handed: the engine sends a reference along the first time), so that a rank is given
+  // the points of the references it holds first.
   struct Schedule {
     std::map<std::size_t, int> out;  // Task index -> the rank computing it.
     std::deque<int> idle;
     std::deque<std::size_t> handed_back;
     TaskQueue waiting;
+    std::vector<std::set<std::size_t>> held;
+    std::set<std::size_t> held_anywhere;
+    void Holds(int rank, std::size_t group) {
+      held[rank].insert(group);
+      held_anywhere.insert(group);
+    }
   };
   // Passes a worker rank's result to consume() and its thread back to the idle ones.
   void TakeResult(const Message& m, Schedule& schedule, const ConsumeResult& consume);
@@ -229,11 +239,13 @@ class MpiWorkers final : public RemoteWorkers {
 };
 
 std::vector<AbandonedTask> MpiWorkers::Run(const std::vector<std::size_t>& after,
+                                           const std::vector<std::size_t>& group,
                                            const EncodeTask& encode, const ConsumeResult& consume,
                                            const std::function<bool()>& poll,
                                            const Describe& describe) {
-  Schedule schedule{{}, {}, {}, TaskQueue(after)};
-  auto& [out, idle, handed_back, waiting] = schedule;
+  Schedule schedule{{}, {}, {}, TaskQueue(after, group), std::vector<std::set<std::size_t>>(size_),
+                    {}};
+  auto& [out, idle, handed_back, waiting, held, held_anywhere] = schedule;
   // Silence counts from now: rank 0 may have been away (storing references) since the last run.
   std::fill(heard_.begin(), heard_.end(), Clock::now());
   for (int t = 0; t < threads_; ++t) {
@@ -245,19 +257,21 @@ std::vector<AbandonedTask> MpiWorkers::Run(const std::vector<std::size_t>& after
   Backoff backoff;
   for (;;) {
     while (!stopped && !idle.empty() && (!handed_back.empty() || waiting.HasReady())) {
+      const int rank = idle.front();
       std::size_t index = 0;
       if (handed_back.empty()) {
-        index = waiting.Take();
+        index = waiting.Take(held[rank], held_anywhere);
       } else {
         index = handed_back.front();
         handed_back.pop_front();
       }
-      std::string task = Framed(index, encode(index, idle.front()));
+      if (group[index] != TaskQueue::kNoWait) schedule.Holds(rank, group[index]);
+      std::string task = Framed(index, encode(index, rank));
       ++totals_.tasks;
       totals_.task_bytes += static_cast<double>(task.size());
       totals_.largest_task = std::max(totals_.largest_task, static_cast<double>(task.size()));
-      sends_.Post(idle.front(), kTask, std::move(task));
-      out[index] = idle.front();
+      sends_.Post(rank, kTask, std::move(task));
+      out[index] = rank;
       idle.pop_front();
     }
     sends_.Progress();
@@ -290,6 +304,7 @@ void MpiWorkers::TakeResult(const Message& m, Schedule& schedule, const ConsumeR
   totals_.largest_result = std::max(totals_.largest_result, static_cast<double>(m.bytes.size()));
   consume(index, std::string_view(m.bytes).substr(sizeof(std::uint64_t)), m.source);
   schedule.waiting.Consumed(index);
+  if (schedule.waiting.IsWaitedFor(index)) schedule.Holds(m.source, index);
   schedule.idle.push_back(m.source);
 }
 

@@ -53,17 +53,19 @@ class RemoteWorkers {
   virtual MessageTotals Totals() const = 0;
 
   // On rank 0: hands task i (encode(i, rank)) to a worker rank as soon as one of its threads is
-  // idle and the task it waits for, after[i], has been consumed (in TaskQueue's order), and
-  // passes each result to consume() on the calling thread, in completion order. poll() runs after
-  // every result and every millisecond while waiting; once it returns true, Run returns at once
-  // with the tasks still out: a stopped job does not wait, since under an MPI launcher SIGTERM is
-  // followed by SIGKILL within a second (a dead worker rank would never answer anyway). A worker
-  // rank silent for the job's rank timeout (stopped, hung or unreachable) is lost: Run prints on
-  // stderr its rank, host and the tasks it held (each named by describe(i)), hands those to the
-  // other ranks and never gives it work again; a late result from it is dropped, so every task is
-  // consumed once. Throws NoWorkerRankLeft when the last worker rank is lost, std::runtime_error on
-  // a malformed message.
+  // idle and the task it waits for, after[i], has been consumed (in TaskQueue's order; a rank
+  // is given first the tasks whose group[i], what they need, it holds: the waited-for tasks it
+  // computed and the groups of the tasks it was handed), and passes each result to consume() on
+  // the calling thread, in completion order. poll() runs after every result and every
+  // millisecond while waiting; once it returns true, Run returns at once with the tasks still out:
+  // a stopped job does not wait, since under an MPI launcher SIGTERM is followed by SIGKILL within
+  // a second (a dead worker rank would never answer anyway). A worker rank silent for the job's
+  // rank timeout (stopped, hung or unreachable) is lost: Run prints on stderr its rank, host and
+  // the tasks it held (each named by describe(i)), hands those to the other ranks and never gives
+  // it work again; a late result from it is dropped, so every task is consumed once. Throws
+  // NoWorkerRankLeft when the last worker rank is lost, std::runtime_error on a malformed message.
   virtual std::vector<AbandonedTask> Run(const std::vector<std::size_t>& after,
+                                         const std::vector<std::size_t>& group,
                                          const EncodeTask& encode, const ConsumeResult& consume,
                                          const std::function<bool()>& poll,
                                          const Describe& describe) = 0;

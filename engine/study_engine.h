@@ -259,23 +259,31 @@ class StudyRun {
     return kind_.Points()[by_key_.at(p.point_key)];
   }
 
-  // Runs local(i) for every task i of `after` (TaskQueue: each once the task it waits for is
+  // For each task of Compute() (TaskQueue), the task it waits for: none for the references'
+  // tasks, the task of its reference for a point whose reference is computed now; and its
+  // group, the reference it needs: that task, or a number past the tasks' indices for each
+  // reference read from the database.
+  struct TaskOrder {
+    std::vector<std::size_t> after, group;
+  };
+
+  // Runs local(i) for every task i of `order` (TaskQueue: each once the task it waits for is
   // consumed) on this process's threads, or the task encode(i, rank) on the worker ranks whose
   // answer decode(i, bytes) reads back; each result reaches consume(result, where it was
   // computed) on this thread, the one writer. `what(i)` names a task a stopped MPI job got no
   // answer for, or one a lost worker rank held.
   template <typename Result, typename Local, typename Encode, typename Decode, typename Consume,
             typename What>
-  void Distribute(const std::vector<std::size_t>& after, Local local, Encode encode, Decode decode,
+  void Distribute(const TaskOrder& order, Local local, Encode encode, Decode decode,
                   Consume consume, What what) {
     if (remote_ == nullptr) {
       RunOnWorkers(
-          after, summary_.jobs, local, [&](Result r) { consume(std::move(r), local_origin_); },
-          [&] { return Poll(); });
+          order.after, summary_.jobs, local,
+          [&](Result r) { consume(std::move(r), local_origin_); }, [&] { return Poll(); });
       return;
     }
     const auto abandoned = remote_->Run(
-        after, encode,
+        order.after, order.group, encode,
         [&](std::size_t i, std::string_view bytes, int rank) {
           ByteReader in(bytes);
           Result r = decode(i, in);
@@ -311,19 +319,22 @@ class StudyRun {
     return missing;
   }
 
-  // The task each task of Compute() waits for (TaskQueue): none for the references' tasks, the
-  // task of its reference for a point whose reference is computed now.
-  std::vector<std::size_t> TasksWaitedFor(const std::vector<std::size_t>& missing) const {
-    std::map<std::string, std::size_t> task_of;  // Reference key -> its task.
+  // The order of Compute()'s tasks (TaskOrder).
+  TaskOrder TaskOrderOf(const std::vector<std::size_t>& missing) const {
+    std::map<std::string, std::size_t> group_of;  // Reference key -> its task, or past them.
     for (std::size_t k = 0; k < missing.size(); ++k) {
-      task_of[kind_.Describe(kind_.Points()[missing[k]]).reference_key] = k;
+      group_of[kind_.Describe(kind_.Points()[missing[k]]).reference_key] = k;
     }
-    std::vector<std::size_t> after(missing.size(), TaskQueue::kNoWait);
+    const std::size_t n_tasks = missing.size() + to_compute_.size();
+    TaskOrder order{std::vector<std::size_t>(missing.size(), TaskQueue::kNoWait),
+                    std::vector<std::size_t>(missing.size(), TaskQueue::kNoWait)};
     for (const PendingPoint& p : to_compute_) {
-      const auto task = task_of.find(p.reference_key);
-      after.push_back(task == task_of.end() ? TaskQueue::kNoWait : task->second);
+      const std::size_t group =
+          group_of.emplace(p.reference_key, n_tasks + group_of.size()).first->second;
+      order.after.push_back(group < missing.size() ? group : TaskQueue::kNoWait);
+      order.group.push_back(group);
     }
-    return after;
+    return order;
   }
 
   // Each missing reference once per database, then the points, stored in groups: tasks
@@ -334,7 +345,7 @@ class StudyRun {
     const std::vector<std::size_t> missing = MissingReferences();
     const std::size_t n_references = missing.size();
     const auto& points = kind_.Points();
-    const std::vector<std::size_t> after = TasksWaitedFor(missing);
+    const TaskOrder order = TaskOrderOf(missing);
     std::vector<std::int64_t> ids;
     for (const PendingPoint& p : to_compute_) ids.push_back(p.point_id);
     db_.MarkRunning(kind_.Table(), ids, run_id_);
@@ -359,7 +370,7 @@ class StudyRun {
       return to_compute_[i - n_references];
     };
     Distribute<Result>(
-        after,
+        order,
         [&](std::size_t i) -> Result {
           if (i < n_references) return W::ComputeReference(kind_, points[missing[i]]);
           const PendingPoint& p = point_of_task(i);
