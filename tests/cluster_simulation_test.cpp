@@ -1,6 +1,6 @@
 // The cluster model's simulation (bench/cluster_model/cluster_simulation.h) against cases whose
 // wall time is known: equal tasks on ranks of their own, cores shared, a saturated writer, a
-// reference sent once to each rank that scores against it.
+// reference sent once to each rank that scores against it, a point given where its reference is.
 
 #include "bench/cluster_model/cluster_simulation.h"
 
@@ -19,6 +19,15 @@ StudyCosts EqualPoints(std::size_t n, double compute_s) {
   StudyCosts c;
   c.tasks.assign(n, TaskCost{compute_s, TaskQueue::kNoWait, 0.0, 0.0, false});
   return c;
+}
+
+// `ranks` worker ranks behind a link of 1e9 bytes/s without latency.
+ClusterSetup OnAGigabyteLink(int ranks) {
+  ClusterSetup setup;
+  setup.worker_ranks = ranks;
+  setup.bandwidth_bytes_per_s = 1e9;
+  setup.latency_s = 0.0;
+  return setup;
 }
 
 // N tasks of 1 ms on P ranks of their own: ceil(N / P) rounds; a rank's next task follows its
@@ -72,17 +81,31 @@ TEST(ClusterSimulation, AReferenceIsSentOnceToEachRankThatNeedsIt) {
   costs.task_bytes = 100.0;
   costs.tasks.push_back({1.0, TaskQueue::kNoWait, 1e8, 0.0, true});
   for (int i = 0; i < 4; ++i) costs.tasks.push_back({1.0, 0, 100.0, 0.0, false});
-  ClusterSetup setup;
-  setup.worker_ranks = 4;
-  setup.bandwidth_bytes_per_s = 1e9;
-  setup.latency_s = 0.0;
-  const SimulatedRun run = SimulateRun(costs, setup);
+  const SimulatedRun run = SimulateRun(costs, OnAGigabyteLink(4));
   EXPECT_DOUBLE_EQ(run.bytes_sent, 5 * 100.0 + 3 * 1e8);
   // The reference's answer crosses the link too (0.1 s), and the slowest point starts after
   // the three copies (0.3 s); ranks idle for longer than kSpinAfterMessageS notice a message
   // at most kLongestSleepS late, twice on that path.
   EXPECT_GE(run.wall_s, 1.0 + 0.1 + 0.3 + 1.0);
   EXPECT_LE(run.wall_s, 1.0 + 0.1 + 0.3 + 1.0 + 3 * kLongestSleepS);
+}
+
+// Two references computed at once on two ranks, ten points each: a rank is given the points of
+// the reference it holds, so no reference crosses the link (before, the first reference's points
+// went to both ranks, and so did the second's: both references were sent).
+TEST(ClusterSimulation, ARankScoresThePointsOfTheReferenceItHolds) {
+  StudyCosts costs;
+  costs.task_bytes = 100.0;
+  for (int r = 0; r < 2; ++r) costs.tasks.push_back({1.0, TaskQueue::kNoWait, 1e8, 0.0, true});
+  for (std::size_t reference : {0, 1}) {
+    for (int i = 0; i < 10; ++i) costs.tasks.push_back({0.1, reference, 100.0, 0.0, false});
+  }
+  const SimulatedRun run = SimulateRun(costs, OnAGigabyteLink(2));
+  EXPECT_DOUBLE_EQ(run.bytes_sent, 2 * 100.0 + 20 * 100.0);
+  // The references' answers cross rank 0's link one after the other (0.1 s each): the second
+  // rank's points start 0.2 s after its reference's end.
+  EXPECT_GE(run.wall_s, 1.0 + 0.2 + 10 * 0.1);
+  EXPECT_LE(run.wall_s, 1.0 + 0.2 + 10 * 0.1 + 0.01);
 }
 
 // Points arriving slower than kGroupLatencyS apart are stored one group per arrival; faster,

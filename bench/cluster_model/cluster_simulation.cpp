@@ -235,13 +235,14 @@ class Simulation {
 
   void HandOut() {
     while (!idle_.empty() && queue_.HasReady()) {
-      const std::size_t task = queue_.Take();
       const int rank = idle_.front();
+      const std::size_t task = queue_.Take(held_[rank], held_anywhere_);
       idle_.pop_front();
       double bytes = costs_.task_bytes;
       const std::size_t reference = costs_.tasks[task].after;
       if (reference != TaskQueue::kNoWait && held_[rank].insert(reference).second) {
         bytes += costs_.tasks[reference].answer_bytes;
+        held_anywhere_.insert(reference);
       }
       result_.bytes_sent += bytes;
       const double arrives = out_.Send(now_s_, bytes);
@@ -267,6 +268,7 @@ class Simulation {
         const auto [rank, task] = consuming_;
         if (costs_.tasks[task].reference) {
           held_[rank].insert(task);
+          held_anywhere_.insert(task);
         } else {
           ++finished_;
         }
@@ -329,6 +331,7 @@ class Simulation {
   std::vector<double> worker_reset_s_;
   std::vector<bool> spinning_;               // By rank, 0 included.
   std::vector<std::set<std::size_t>> held_;  // By rank: the reference tasks it holds.
+  std::set<std::size_t> held_anywhere_;      // Those some rank holds.
   std::map<int, std::size_t> computing_;     // By rank: its task.
   SimulatedRun result_;
 };

@@ -3,8 +3,9 @@
 // cluster, checked"): what rank 0's engine (engine/study_engine.h) and MpiWorkers
 // (engine/mpi_workers.cpp) do, with measured costs in place of the computations.
 // - Rank 0 hands tasks out in the engine's order (TaskQueue: references longest first, a point
-//   once its reference is stored), one to each idle worker rank; a score task carries its
-//   reference the first time a rank that did not compute it needs it. Each turn it reads one
+//   once its reference is stored, first to a rank that holds its reference), one to each
+//   idle worker rank; a score task carries its reference the first time a rank that did not
+//   compute it needs it. Each turn it reads one
 //   answer and consumes it (a reference decoded and stored; an outcome decoded and kept, the
 //   group stored once it holds kMaxGroup), then stores the group kGroupLatencyS after the
 //   previous one, then hands out again; the last group is stored at the end.

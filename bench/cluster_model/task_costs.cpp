@@ -21,7 +21,7 @@ double SecondsOf(F&& f) {
   return timer.WallSeconds();
 }
 
-// Group size and CPU seconds of each stored group; the points' first 16 are stored one per
+// Group size and wall seconds of each stored group; the points' first 16 are stored one per
 // transaction (a point arriving alone), the others in groups of kMaxGroup.
 template <StudyKind Kind>
 std::vector<std::pair<double, double>> StoreInGroups(const Kind& kind, StudyDatabase& db,
@@ -40,7 +40,8 @@ std::vector<std::pair<double, double>> StoreInGroups(const Kind& kind, StudyData
   return groups;
 }
 
-// Least squares of seconds = group_s + size x stored_point_s.
+// Least squares of seconds = group_s + size x stored_point_s, with group_s >= 0 (through the
+// origin when the free fit's is negative: a transaction costs no less than nothing).
 void FitGroupCost(const std::vector<std::pair<double, double>>& groups, StudyCosts& costs) {
   double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   for (const auto& [x, y] : groups) {
@@ -49,6 +50,10 @@ void FitGroupCost(const std::vector<std::pair<double, double>>& groups, StudyCos
   const double det = n * sxx - sx * sx;
   costs.stored_point_s = det > 0.0 ? (n * sxy - sx * sy) / det : sy / std::max(sx, 1.0);
   costs.group_s = det > 0.0 ? (sy - costs.stored_point_s * sx) / n : 0.0;
+  if (costs.group_s < 0.0) {
+    costs.group_s = 0.0;
+    costs.stored_point_s = sxy / sxx;
+  }
 }
 
 template <StudyKind Kind>
@@ -126,6 +131,10 @@ MeasuredCosts Measure(const Kind& kind, const std::string& path, std::size_t poi
     task_bytes += static_cast<double>(1 + 8 + 8 + p.reference_key.size() + 8 + 8 + 1 + 8);
   }
   m.costs.task_bytes = task_bytes / std::max<double>(1.0, static_cast<double>(m.points_measured));
+  for (std::size_t j = m.points_measured; j < m.points; ++j) {  // Their outcomes repeat too.
+    finished.push_back(
+        {pending[j].point_id, PointOrigin{"bench", 1}, finished[j % m.points_measured].outcome});
+  }
   FitGroupCost(StoreInGroups(kind, db, run_id, finished), m.costs);
   db.EndRun(run_id, RunEnd::kCompleted);
   for (std::size_t j = m.points_measured; j < m.points; ++j) {

@@ -20,7 +20,8 @@ struct MeasuredCosts {
 
 // `scratch_database` must not hold the study (a fresh file). Measures the first
 // `points_to_measure` points (0: all) and the references they need; a point beyond them
-// waits for its own reference and costs what point (index mod points_to_measure) cost.
+// waits for its own reference and costs what point (index mod points_to_measure) cost, and its
+// outcome is that point's when the groups are stored (every point's row, for the group fit).
 MeasuredCosts MeasureStudy(const StudyFile& study, const std::string& scratch_database,
                            std::size_t points_to_measure);
 
