@@ -3,9 +3,11 @@
 // decode the outcome's bytes as they arrive from a worker rank, then store it through
 // StoreOutcomes in groups of the argument's size, one transaction each (the engine's groups
 // hold up to kMaxGroup points when results arrive faster than kGroupLatencyS; 1 is a point
-// arriving alone).
-//   Writer/Canonical/N   a scored point of studies/quick.json (a typical shocks_json)
-//   Writer/Scene/N       a scored point of studies/bundle_row_truncation.json
+// arriving alone), over a study of the second argument's count of points stored over and over
+// (with 2000 a page changes several times between two checkpoints; with 40 000 a point is
+// stored about once between two, as in a study).
+//   Writer/Canonical/N/P a scored point of studies/quick.json (a typical shocks_json)
+//   Writer/Scene/N/P     a scored point of studies/bundle_row_truncation.json
 // items_per_second is results stored per wall-clock second (the CPU column: per second of
 // the writer's own time, what it reaches on a core of its own); bytes_per_result is the
 // outcome's message; longest_store_ms the longest group's transaction (one that checkpoints).
@@ -25,8 +27,6 @@
 
 namespace shockmap {
 namespace {
-
-constexpr int kPoints = 2000;  // Stored over and over: each commit replaces a point's outcome.
 
 std::string Source(const std::string& relative) {
   return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
@@ -90,8 +90,9 @@ void Writer(benchmark::State& state, const Kind& kind) {
   std::filesystem::remove(path);
   StudyDatabase db(path.string());
   const std::int64_t study = db.UpsertStudy(kind.Header().name, kind.Header().spec_json);
+  const auto n_points = static_cast<std::int64_t>(state.range(1));
   std::vector<NewPoint> rows;
-  for (int i = 0; i < kPoints; ++i) {
+  for (std::int64_t i = 0; i < n_points; ++i) {
     NewPoint p = kind.Describe(kind.Points()[i % kind.Points().size()]);
     p.point_key += '#';
     p.point_key += std::to_string(i);
@@ -110,7 +111,7 @@ void Writer(benchmark::State& state, const Kind& kind) {
   double longest_store_s = 0.0;
   for (auto _ : state) {
     ByteReader in(bytes);
-    group.push_back({1 + i++ % kPoints, origin, DecodeOutcome(kind, in)});
+    group.push_back({1 + i++ % n_points, origin, DecodeOutcome(kind, in)});
     if (group.size() == group_size) {
       const auto start = std::chrono::steady_clock::now();
       StoreOutcomes<Kind>(kind, db, run, group);
@@ -140,14 +141,16 @@ void Scene(benchmark::State& state) {
 
 BENCHMARK(Canonical)
     ->Name("Writer/Canonical")
-    ->Arg(1)
-    ->Arg(kMaxGroup)
+    ->Args({1, 2000})
+    ->Args({kMaxGroup, 2000})
+    ->Args({kMaxGroup, 40000})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 BENCHMARK(Scene)
     ->Name("Writer/Scene")
-    ->Arg(1)
-    ->Arg(kMaxGroup)
+    ->Args({1, 2000})
+    ->Args({kMaxGroup, 2000})
+    ->Args({kMaxGroup, 40000})
     ->Unit(benchmark::kMicrosecond)
     ->UseRealTime();
 

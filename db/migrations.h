@@ -540,6 +540,16 @@ LEFT JOIN scores sc ON sc.point_id = p.point_id
 LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
 LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
+    // 12 -> 13: a scene point refers to its reference by the reference's parameters as JSON
+    // (the "parameters" member of the reference's key, as ParametersJson wrote it there), not by
+    // the key, which holds the whole scene: each point's row filled a page of its own, written
+    // twice (log, then file) at every store. The key stays, once, in scene_references. A key
+    // that is not such a JSON object is left as it was: no reference is found by it.
+    R"sql(
+UPDATE scene_points SET reference_key = json_extract(reference_key, '$.parameters')
+WHERE CASE WHEN json_valid(reference_key)
+           THEN json_type(reference_key, '$.parameters') = 'object' ELSE 0 END;
+)sql",
 };
 
 inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));

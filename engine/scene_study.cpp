@@ -2,6 +2,7 @@
 
 #include "compare/scene_scoring.h"
 #include "core/input_error.h"
+#include "db/stored_json.h"
 #include "engine/record_codec.h"
 
 namespace shockmap {
@@ -17,15 +18,15 @@ std::optional<SettingChange> SceneStudy::ChangedSetting(const nlohmann::json& st
 
 NewPoint SceneStudy::Describe(const Point& point) const {
   const ScenePointParameters parameters{ParametersJson(point)};
-  return {parameters.parameters_json, SceneReferenceKey(spec_, ReferenceParameters(spec_, point)),
+  return {parameters.parameters_json, ParametersJson(ReferenceParameters(spec_, point)),
           CellsOf(parameters, kScenePointParameterColumns)};
 }
 
 SceneStudy::Reference SceneStudy::ComputeReference(const Point& point) const {
   const SceneParameters parameters = ReferenceParameters(spec_, point);
   Reference ref;
-  ref.reference_key = SceneReferenceKey(spec_, parameters);
   ref.parameters_json = ParametersJson(parameters);
+  ref.reference_key = SceneReferenceKey(spec_, nlohmann::json::parse(ref.parameters_json));
   ref.status = ToString(RunStatus::kFailed);
   try {
     const SceneRun run = RunScene(ScoredScene(spec_, parameters));
@@ -45,8 +46,11 @@ SceneStudy::Reference SceneStudy::ComputeReference(const Point& point) const {
 }
 
 std::optional<StoredReference<SceneStudy::Reference>> SceneStudy::FindReference(
-    StudyDatabase& db, const std::string& key) const {
-  auto row = FindSceneReference(db, key);
+    StudyDatabase& db, const std::string& reference_parameters) const {
+  const StoredCell cell{db.Raw().Path(), "a scene point", "reference_key"};
+  const nlohmann::json parameters = ParseStoredJson(cell, reference_parameters);
+  if (!parameters.is_object()) ThrowCorruptCell(cell, "not an object of parameters");
+  auto row = FindSceneReference(db, SceneReferenceKey(spec_, parameters));
   if (!row) return std::nullopt;
   const std::int64_t id = row->reference_id;
   return StoredReference<Reference>{id, std::move(*row)};

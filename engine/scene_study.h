@@ -24,14 +24,17 @@ class SceneStudy {
   std::optional<SettingChange> ChangedSetting(const nlohmann::json& stored,
                                               const std::string& database_path) const;
   const std::vector<Point>& Points() const { return spec_.points; }
-  // Keyed by its parameters' JSON; its reference by the scene with the refined settings over it.
+  // Keyed by its parameters' JSON; its reference (the scene with the refined settings over it)
+  // by the reference's parameters' JSON, a few bytes: the reference's own key, which holds the
+  // whole scene, is stored once, in scene_references (schema 13).
   NewPoint Describe(const Point& point) const;
 
   double ReferenceCost(const Point&) const { return 1.0; }  // Every reference is the same run.
   // The point's scene with the study's reference settings applied over its parameters.
   Reference ComputeReference(const Point& point) const;
-  std::optional<StoredReference<Reference>> FindReference(StudyDatabase& db,
-                                                          const std::string& key) const;
+  // The stored reference of the point whose Describe gave `reference_parameters`.
+  std::optional<StoredReference<Reference>> FindReference(
+      StudyDatabase& db, const std::string& reference_parameters) const;
   std::int64_t StoreReference(StudyDatabase& db, const Reference& reference,
                               std::int64_t run_id) const;
 

@@ -210,9 +210,9 @@ std::string ParametersJson(const SceneParameters& parameters) {
   return json.dump();
 }
 
-std::string SceneReferenceKey(const SceneStudySpec& spec, const SceneParameters& reference) {
+std::string SceneReferenceKey(const SceneStudySpec& spec, const Json& parameters) {
   return Json{{"scene", spec.scene},
-              {"parameters", Json::parse(ParametersJson(reference))},
+              {"parameters", parameters},
               {"displacement", spec.scoring.displacement},
               {"zone", spec.scoring.zone},
               {"window_s", spec.scoring.window_s}}

@@ -59,8 +59,9 @@ SceneParameters ReferenceParameters(const SceneStudySpec& spec, const SceneParam
 
 // {"path": value, ...}
 std::string ParametersJson(const SceneParameters& parameters);
-// Identifies a reference across studies: the scene, the scoring and the parameters.
-std::string SceneReferenceKey(const SceneStudySpec& spec, const SceneParameters& reference);
+// Identifies a reference across studies: the scene, the scoring and the reference's parameters
+// (the object ParametersJson writes).
+std::string SceneReferenceKey(const SceneStudySpec& spec, const nlohmann::json& parameters);
 // What a study keeps for life: its stored scores depend on it.
 std::string SceneSettingsKey(const SceneStudySpec& spec);
 

@@ -223,6 +223,26 @@ TEST_F(RefactorParity, SchemaVersion2DatabaseReadsBackEveryPointAfterMigration) 
   ExpectSameRows(Rows(Path("v2.db"), kSceneRows), "tests/data/schema_v2_scene_results.txt");
 }
 
+// The migration to schema version 13 rewrites each scene point's reference key to its
+// reference's parameters: points still to compute in an older file find their stored reference
+// by it and are scored against it.
+TEST_F(RefactorParity, MigratedScenePointsFindTheirStoredReference) {
+  std::filesystem::copy_file(Source("tests/data/schema_v2.db"), Path("v2.db"));
+  {
+    Connection c(Path("v2.db"), Connection::Mode::kReadWriteCreate);
+    c.Execute("UPDATE scene_points SET status = 'pending'");
+  }
+  const auto run = RunShockmap("study run " + Source("tests/data/schema_v2_scene.json") + " --db " +
+                               Path("v2.db"));
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("references   0 computed, 1 reused"), std::string::npos) << run.output;
+  EXPECT_EQ(testing::Count(Path("v2.db"),
+                           "SELECT count(*) FROM scene_points p JOIN scene_references r "
+                           "ON r.parameters_json = p.reference_key AND r.reference_id = "
+                           "p.reference_id WHERE p.status = 'ok' AND p.err >= 0"),
+            2);
+}
+
 // The migration to schema version 6 classifies stored points as a new run would: an undamped
 // 'ok' point whose energy grew past the limit becomes 'unstable', the others keep their status.
 TEST_F(RefactorParity, MigrationReclassifiesStoredRunsWhoseEnergyGrew) {

@@ -175,6 +175,20 @@ TEST_F(DatabaseCorruption, ReferenceSignalsOfUnequalLengthAreRefusedBeforeAnyUse
                 "must be equal)");
 }
 
+// A scene point names its reference by the reference's parameters as JSON (schema 13): text
+// that is not such an object, or nests deeper than any stored JSON, stops the run that reads it.
+TEST_F(DatabaseCorruption, AScenePointsReferenceThatIsNotAnObjectOfParametersIsRefused) {
+  Scene();
+  for (const std::string& key : {std::string("[1]"), std::string(100000, '[')}) {
+    Edit("UPDATE scene_points SET status = 'pending', reference_key = '" + key + "'");
+    const auto run = RunShockmap("study run " + Path("study.json") + " --db " + db());
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find("database corrupt: a scene point: reference_key: "),
+              std::string::npos)
+        << run.output;
+  }
+}
+
 TEST_F(DatabaseCorruption, ReferenceBlobsThatAreNotWholeFiniteSamplesAreRefused) {
   Canonical();
   const std::string pristine = ReadBytes(db());

@@ -248,6 +248,33 @@ TEST_F(Resources, EnsembleMembersReferToTheirNominalRunByItsStateOnly) {
   EXPECT_EQ(sizing.output.find("\"nominal_n\": null"), std::string::npos) << sizing.output;
 }
 
+// A sweep of the paper's cantilever whose two points share one reference (R_ftrunc 100).
+std::string TinySweep(const std::string& r_ftrunc_values) {
+  return std::string(R"({"name": "sweep", "scene": ")") + SHOCKMAP_SOURCE_DIR +
+         R"(/scenes/cantilever_spring.json", "sweep": {"solver.r_ftrunc": [)" + r_ftrunc_values +
+         R"(]}, "reference": {"solver.r_ftrunc": 100}, "scoring": {"displacement": "tip",
+      "zone": "tip_spring", "window_s": 0.02, "rest_duration_s": 0.005}})";
+}
+
+// Each scene point's row used to repeat its reference's key, the whole scene as JSON: a row
+// filled a page of its own, which every stored point wrote twice (docs/cluster.md).
+TEST_F(Resources, ScenePointsReferToTheirReferenceByItsParametersOnly) {
+  const std::string spec = Path("sweep.json"), db = Path("sweep.db");
+  WriteText(spec, TinySweep("10"));
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+  WriteText(spec, TinySweep("10, 30"));
+  const Outcome again = RunShockmap("study run " + spec + " --db " + db);
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("references   0 computed, 1 reused"), std::string::npos)
+      << again.output;
+  EXPECT_EQ(testing::Rows(db,
+                          "SELECT count(*), max(length(p.reference_key)) < 40, "
+                          "min(length(r.reference_key)) > 1000 FROM scene_points p "
+                          "JOIN scene_references r ON r.parameters_json = p.reference_key "
+                          "WHERE p.status = 'ok' AND p.reference_id = r.reference_id"),
+            std::vector<std::string>{"2|1|1"});
+}
+
 // A stand-in for gnuplot that starts drawing (a few bytes into the file RunGnuplot names by -e,
 // when it does) and never finishes; it writes its pid to PID_FILE and then touches STARTED.
 constexpr const char* kStuckGnuplot = R"(#!/bin/sh
