@@ -120,6 +120,8 @@ TEST(SceneAdvice, AStudiedRkWithoutAPassingTruncationAroundTheZonesIsNamed) {
       a.warnings[0].find(fmt::format("no studied truncation passes at R_k = {:.3g}", below->r_k)),
       std::string::npos)
       << a.warnings[0];
+  // With what answers it on the structure itself.
+  EXPECT_NE(a.warnings[0].find("shockmap check-advice"), std::string::npos) << a.warnings[0];
   // Far from the zones' R_k (the Fig. 3 scene's one zone at 3000), a hole at R_k = 1 is not.
   ValidityCriteria far = ShippedCriteria();
   auto one = std::ranges::find(far.boundary, 1.0, &RkBoundary::r_k);
