@@ -544,7 +544,9 @@ LEFT JOIN runs ru ON ru.run_id = p.run_id;
     // (the "parameters" member of the reference's key, as ParametersJson wrote it there), not by
     // the key, which holds the whole scene: each point's row filled a page of its own, written
     // twice (log, then file) at every store. The key stays, once, in scene_references. A key
-    // that is not such a JSON object is left as it was: no reference is found by it.
+    // without such a member (a file edited by hand) is left as it was: a run finds no reference
+    // by it, or refuses it as a corrupt cell when it is not a JSON object
+    // (SceneStudy::FindReference).
     R"sql(
 UPDATE scene_points SET reference_key = json_extract(reference_key, '$.parameters')
 WHERE CASE WHEN json_valid(reference_key)
