@@ -200,12 +200,7 @@ class MpiWorkers final : public RemoteWorkers {
     std::deque<int> idle;
     std::deque<std::size_t> handed_back;
     TaskQueue waiting;
-    std::vector<std::set<std::size_t>> held;
-    std::set<std::size_t> held_anywhere;
-    void Holds(int rank, std::size_t group) {
-      held[rank].insert(group);
-      held_anywhere.insert(group);
-    }
+    GroupHolders held;  // By rank.
   };
   // Passes a worker rank's result to consume() and its thread back to the idle ones.
   void TakeResult(const Message& m, Schedule& schedule, const ConsumeResult& consume);
@@ -243,9 +238,8 @@ std::vector<AbandonedTask> MpiWorkers::Run(const std::vector<std::size_t>& after
                                            const EncodeTask& encode, const ConsumeResult& consume,
                                            const std::function<bool()>& poll,
                                            const Describe& describe) {
-  Schedule schedule{{}, {}, {}, TaskQueue(after, group), std::vector<std::set<std::size_t>>(size_),
-                    {}};
-  auto& [out, idle, handed_back, waiting, held, held_anywhere] = schedule;
+  Schedule schedule{{}, {}, {}, TaskQueue(after, group), GroupHolders(size_)};
+  auto& [out, idle, handed_back, waiting, held] = schedule;
   // Silence counts from now: rank 0 may have been away (storing references) since the last run.
   std::fill(heard_.begin(), heard_.end(), Clock::now());
   for (int t = 0; t < threads_; ++t) {
@@ -260,12 +254,12 @@ std::vector<AbandonedTask> MpiWorkers::Run(const std::vector<std::size_t>& after
       const int rank = idle.front();
       std::size_t index = 0;
       if (handed_back.empty()) {
-        index = waiting.Take(held[rank], held_anywhere);
+        index = waiting.Take(held.HeldBy(rank), held.HeldAnywhere());
       } else {
         index = handed_back.front();
         handed_back.pop_front();
       }
-      if (group[index] != TaskQueue::kNoWait) schedule.Holds(rank, group[index]);
+      if (group[index] != TaskQueue::kNoWait) held.Hold(rank, group[index]);
       std::string task = Framed(index, encode(index, rank));
       ++totals_.tasks;
       totals_.task_bytes += static_cast<double>(task.size());
@@ -304,7 +298,7 @@ void MpiWorkers::TakeResult(const Message& m, Schedule& schedule, const ConsumeR
   totals_.largest_result = std::max(totals_.largest_result, static_cast<double>(m.bytes.size()));
   consume(index, std::string_view(m.bytes).substr(sizeof(std::uint64_t)), m.source);
   schedule.waiting.Consumed(index);
-  if (schedule.waiting.IsWaitedFor(index)) schedule.Holds(m.source, index);
+  if (schedule.waiting.IsWaitedFor(index)) schedule.held.Hold(m.source, index);
   schedule.idle.push_back(m.source);
 }
 

@@ -19,6 +19,24 @@
 
 namespace shockmap {
 
+// Which groups of a TaskQueue each taker holds, and which some taker holds: the arguments of
+// TaskQueue::Take(held, held_anywhere).
+class GroupHolders {
+ public:
+  explicit GroupHolders(std::size_t takers) : by_taker_(takers) {}
+  // Returns whether `taker` did not hold `group` before.
+  bool Hold(std::size_t taker, std::size_t group) {
+    held_anywhere_.insert(group);
+    return by_taker_[taker].insert(group).second;
+  }
+  const std::set<std::size_t>& HeldBy(std::size_t taker) const { return by_taker_[taker]; }
+  const std::set<std::size_t>& HeldAnywhere() const { return held_anywhere_; }
+
+ private:
+  std::vector<std::set<std::size_t>> by_taker_;
+  std::set<std::size_t> held_anywhere_;
+};
+
 class TaskQueue {
  public:
   static constexpr std::size_t kNoWait = std::numeric_limits<std::size_t>::max();

@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <queue>
-#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -236,13 +235,12 @@ class Simulation {
   void HandOut() {
     while (!idle_.empty() && queue_.HasReady()) {
       const int rank = idle_.front();
-      const std::size_t task = queue_.Take(held_[rank], held_anywhere_);
+      const std::size_t task = queue_.Take(held_.HeldBy(rank), held_.HeldAnywhere());
       idle_.pop_front();
       double bytes = costs_.task_bytes;
       const std::size_t reference = costs_.tasks[task].after;
-      if (reference != TaskQueue::kNoWait && held_[rank].insert(reference).second) {
+      if (reference != TaskQueue::kNoWait && held_.Hold(rank, reference)) {
         bytes += costs_.tasks[reference].answer_bytes;
-        held_anywhere_.insert(reference);
       }
       result_.bytes_sent += bytes;
       const double arrives = out_.Send(now_s_, bytes);
@@ -267,8 +265,7 @@ class Simulation {
       case Rank0Job::kConsume: {
         const auto [rank, task] = consuming_;
         if (costs_.tasks[task].reference) {
-          held_[rank].insert(task);
-          held_anywhere_.insert(task);
+          held_.Hold(rank, task);
         } else {
           ++finished_;
         }
@@ -329,10 +326,9 @@ class Simulation {
   std::deque<int> idle_;
   // Worker ranks.
   std::vector<double> worker_reset_s_;
-  std::vector<bool> spinning_;               // By rank, 0 included.
-  std::vector<std::set<std::size_t>> held_;  // By rank: the reference tasks it holds.
-  std::set<std::size_t> held_anywhere_;      // Those some rank holds.
-  std::map<int, std::size_t> computing_;     // By rank: its task.
+  std::vector<bool> spinning_;            // By rank, 0 included.
+  GroupHolders held_;                     // By rank: the reference tasks it holds.
+  std::map<int, std::size_t> computing_;  // By rank: its task.
   SimulatedRun result_;
 };
 
