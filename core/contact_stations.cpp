@@ -1,111 +1,13 @@
 #include "core/contact_stations.h"
 
 #include <algorithm>
-#include <cstring>
 #include <map>
 #include <tuple>
 
+#include "core/station_kernels.h"
+
 namespace shockmap {
 namespace {
-
-// Two doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic).
-using Pair = double __attribute__((vector_size(16)));
-
-Pair Load(const double* p) {
-  Pair r;
-  std::memcpy(&r, p, sizeof r);
-  return r;
-}
-
-// phi . p[0 .. n), summed in the order of Eigen's reduction of row.dot(x) on 2-wide packets
-// (SSE2): two pairs of partial sums over blocks of four, folded, then the tail. A zone thus reads
-// the same displacement as a row of the same values does (the observed outputs, the canonical
-// problem's histories before it became a scene).
-double Dot(const double* f, const double* p, int n) {
-  if (n < 2) return n == 1 ? f[0] * p[0] : 0.0;
-  const int pairs_end = n & ~1, quads_end = n & ~3;
-  Pair s = Load(f) * Load(p);
-  if (pairs_end > 2) {
-    Pair t = Load(f + 2) * Load(p + 2);
-    for (int i = 4; i < quads_end; i += 4) {
-      s += Load(f + i) * Load(p + i);
-      t += Load(f + i + 2) * Load(p + i + 2);
-    }
-    s += t;
-    if (pairs_end > quads_end) s += Load(f + quads_end) * Load(p + quads_end);
-  }
-  double sum = s[0] + s[1];
-  for (int i = pairs_end; i < n; ++i) sum += f[i] * p[i];
-  return sum;
-}
-
-void Store(double* p, Pair v) { std::memcpy(p, &v, sizeof v); }
-
-// out[h] = sum_i s[i * stride + h] p[i] for the 2P stations h of one lane group, each sum in
-// Dot's order, so that a station reads exactly what Dot of its row gives; the sums of the group
-// proceed side by side, P pairs of stations per instruction stream.
-template <int P>
-void EvaluateLanes(const double* s, int stride, int n, const double* p, double* out) {
-  auto term = [&](int i, int k) { return Load(s + i * stride + 2 * k) * Pair{p[i], p[i]}; };
-  Pair s0[P], s1[P], t0[P], t1[P];
-  if (n < 2) {
-    for (int k = 0; k < P; ++k) Store(out + 2 * k, n == 1 ? term(0, k) : Pair{0.0, 0.0});
-    return;
-  }
-  const int pairs_end = n & ~1, quads_end = n & ~3;
-  for (int k = 0; k < P; ++k) {
-    s0[k] = term(0, k);
-    s1[k] = term(1, k);
-  }
-  if (pairs_end > 2) {
-    for (int k = 0; k < P; ++k) {
-      t0[k] = term(2, k);
-      t1[k] = term(3, k);
-    }
-    for (int i = 4; i < quads_end; i += 4) {
-      for (int k = 0; k < P; ++k) {
-        s0[k] += term(i, k);
-        s1[k] += term(i + 1, k);
-        t0[k] += term(i + 2, k);
-        t1[k] += term(i + 3, k);
-      }
-    }
-    for (int k = 0; k < P; ++k) {
-      s0[k] += t0[k];
-      s1[k] += t1[k];
-    }
-    if (pairs_end > quads_end) {
-      for (int k = 0; k < P; ++k) {
-        s0[k] += term(quads_end, k);
-        s1[k] += term(quads_end + 1, k);
-      }
-    }
-  }
-  for (int k = 0; k < P; ++k) s0[k] += s1[k];
-  for (int i = pairs_end; i < n; ++i) {
-    for (int k = 0; k < P; ++k) s0[k] += term(i, k);
-  }
-  for (int k = 0; k < P; ++k) Store(out + 2 * k, s0[k]);
-}
-
-// Lanes per group for a beam with `count` stations: its width is a multiple of it.
-int LanesFor(int count) { return count <= 2 ? count : 4; }
-
-// The `width` stations of one beam at p (its block in one direction), in groups of lanes.
-void EvaluateBlock(const double* shapes, int modes, int width, const double* p, double* out) {
-  const int lanes = LanesFor(width);
-  if (lanes == 1) {
-    out[0] = Dot(shapes, p, modes);
-    return;
-  }
-  for (int g = 0; g < width; g += lanes) {
-    if (lanes == 2) {
-      EvaluateLanes<1>(shapes + g, width, modes, p, out + g);
-    } else {
-      EvaluateLanes<2>(shapes + g, width, modes, p, out + g);
-    }
-  }
-}
 
 // A station being collected: the beam's block and its distinct shapes in order of appearance.
 struct BlockDraft {
@@ -138,13 +40,12 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
   slot_z_ = {-1};
   slot_modes_ = {0};
   for (const auto& [coordinates, draft] : drafts) {
-    Block b;
+    StationBlock b;
     b.y = coordinates.first;
     b.z = coordinates.second;
     b.modes = static_cast<int>(draft.shapes.front()->size());
     b.count = static_cast<int>(draft.shapes.size());
-    const int lanes = LanesFor(b.count);
-    b.width = (b.count + lanes - 1) / lanes * lanes;
+    b.width = StationWidth(b.count);
     b.first = slots;
     std::vector<double> matrix(static_cast<std::size_t>(b.modes) * b.width, 0.0);
     for (int h = 0; h < b.count; ++h) {
@@ -192,14 +93,11 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
   velocity_step_.assign(slots, 0);
   force_.assign(zones.size(), 0.0);
   closed_.assign(zones.size(), 0);
+  station_forces_.resize(2 * zones.size());
 }
 
 void ContactStations::Evaluate(const Eigen::VectorXd& x, Slots& out) const {
-  for (const Block& b : blocks_) {
-    const double* shapes = shapes_.data() + b.shapes;
-    if (b.y >= 0) EvaluateBlock(shapes, b.modes, b.width, x.data() + b.y, out.y.data() + b.first);
-    if (b.z >= 0) EvaluateBlock(shapes, b.modes, b.width, x.data() + b.z, out.z.data() + b.first);
-  }
+  EvaluateStations(blocks_, shapes_.data(), x.data(), out.y.data(), out.z.data());
 }
 
 // n . (u_a - u_b), in the order the zone-by-zone sum used (the base reads zero).
@@ -213,8 +111,8 @@ std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& s
   if (slot == 0) return {0.0, 0.0};
   const double* row = rows_.data() + slot_row_[slot];
   const int n = slot_modes_[slot];
-  return {Dot(row, state.data() + slot_y_[slot], n),
-          slot_z_[slot] >= 0 ? Dot(row, state.data() + slot_z_[slot], n) : 0.0};
+  return {StationDot(row, state.data() + slot_y_[slot], n),
+          slot_z_[slot] >= 0 ? StationDot(row, state.data() + slot_z_[slot], n) : 0.0};
 }
 
 double ContactStations::Tangential(int zone, const Slots& u) const {
@@ -237,21 +135,8 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
   velocity_.z[slot] = w[1];
 }
 
-// Inlined: it runs twice for every closed zone at every step.
-[[gnu::always_inline]] inline void ContactStations::AddToSlot(int slot, double force_y,
-                                                              double force_z,
-                                                              Eigen::VectorXd& a) const {
-  if (slot == 0) return;
-  const double* row = rows_.data() + slot_row_[slot];
-  const int n = slot_modes_[slot];
-  if (slot_y_[slot] >= 0) {
-    double* p = a.data() + slot_y_[slot];
-    for (int i = 0; i < n; ++i) p[i] += force_y * row[i];
-  }
-  if (slot_z_[slot] >= 0) {
-    double* p = a.data() + slot_z_[slot];
-    for (int i = 0; i < n; ++i) p[i] += force_z * row[i];
-  }
+void ContactStations::Push(int slot, double force_y, double force_z) {
+  if (slot != 0) station_forces_[n_station_forces_++] = {slot, force_y, force_z};
 }
 
 void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
@@ -260,32 +145,17 @@ void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eige
   ++step_;
   dt_s_ = t_s - t_s_;
   t_s_ = t_s;
-  // Plain pointers: the loop is the step's hottest, and the stores into a must not make the
-  // compiler reload the arrays.
-  const int* const slot_a = slot_a_.data();
-  const int* const slot_b = slot_b_.data();
-  const double* const ny = normal_y_.data();
-  const double* const nz = normal_z_.data();
-  const double* const gap = gap_.data();
-  const double* const k = stiffness_.data();
-  const double* const uy = displacement_.y.data();
-  const double* const uz = displacement_.z.data();
-  double* const force = force_.data();
-  // First the linear penalty forces and the list of closed zones, without a branch on contact
-  // (zones open and close at random, a branch would be mispredicted half the time); then the
-  // power laws' forces; then the closed zones' damping, friction and projection, in zone order.
-  int* const closed = closed_.data();
-  int n_closed = 0;
-  const int zones = static_cast<int>(force_.size());
-  for (int i = 0; i < zones; ++i) {
-    const int sa = slot_a[i], sb = slot_b[i];
-    // n . (u_a - u_b) as Normal() sums it.
-    const double penetration =
-        ny[i] * uy[sa] + nz[i] * uz[sa] - ny[i] * uy[sb] - nz[i] * uz[sb] - gap[i];
-    force[i] = LinearPenaltyForce(k[i], penetration);  // 0 when open (or not a number).
-    closed[n_closed] = i;
-    n_closed += static_cast<int>(penetration > 0.0);
-  }
+  // First the linear penalty forces and the list of closed zones; then the power laws' forces;
+  // then the closed zones' damping, friction and projection, in zone order.
+  const PenaltyZones zones{slot_a_.data(),
+                           slot_b_.data(),
+                           normal_y_.data(),
+                           normal_z_.data(),
+                           gap_.data(),
+                           stiffness_.data(),
+                           static_cast<int>(force_.size())};
+  const int n_closed = LinearPenaltyForces(zones, displacement_.y.data(), displacement_.z.data(),
+                                           force_.data(), closed_.data());
   if (!power_.empty()) ApplyPowerLaws();
   friction_power_w_ = 0.0;
   if (frictions_.empty()) {
@@ -313,6 +183,7 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
   const double* const c = damping_.data();
   double* const force = force_.data();
   const int* const closed = closed_.data();
+  n_station_forces_ = 0;
   for (int j = 0; j < n_closed; ++j) {
     const int i = closed[j], sa = slot_a[i], sb = slot_b[i];
     if (c[i] != 0.0) {
@@ -325,14 +196,17 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
       if (friction_of_[i] >= 0) {
         // The friction force along t = (-n_z, n_y), on a, and its reaction on b.
         const double ft = RubbingForce(i, f, v);
-        AddToSlot(sa, -f * ny[i] - ft * nz[i], -f * nz[i] + ft * ny[i], a);
-        AddToSlot(sb, f * ny[i] + ft * nz[i], f * nz[i] - ft * ny[i], a);
+        Push(sa, -f * ny[i] - ft * nz[i], -f * nz[i] + ft * ny[i]);
+        Push(sb, f * ny[i] + ft * nz[i], f * nz[i] - ft * ny[i]);
         continue;
       }
     }
-    AddToSlot(sa, -f * ny[i], -f * nz[i], a);
-    AddToSlot(sb, f * ny[i], f * nz[i], a);
+    Push(sa, -f * ny[i], -f * nz[i]);
+    Push(sb, f * ny[i], f * nz[i]);
   }
+  const StationLayout layout{rows_.data(), slot_row_.data(), slot_y_.data(), slot_z_.data(),
+                             slot_modes_.data()};
+  AddStationForces(station_forces_.data(), n_station_forces_, layout, a.data());
 }
 
 double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "core/contact_law.h"
+#include "core/station_kernels.h"
 
 namespace shockmap {
 
@@ -93,11 +94,6 @@ class ContactStations {
                           Eigen::VectorXd& y) const;
 
  private:
-  // The stations of one beam: slots [first, first + width), width padded to the kernel's lane
-  // count with zero shapes; shapes at `shapes` in mode-major order (modes x width).
-  struct Block {
-    int y = -1, z = -1, modes = 0, first = 0, width = 0, count = 0, shapes = 0;
-  };
   // Per slot (slot 0 is the base: zero motion, its force discarded).
   struct Slots {
     std::vector<double> y, z;
@@ -127,10 +123,11 @@ class ContactStations {
   std::array<double, 2> SlotAt(int slot, const Eigen::VectorXd& state) const;
   double NormalAt(int zone, const Eigen::VectorXd& state) const;
   void VelocityAt(int slot, const Eigen::VectorXd& v);
-  // a += the forces (y, z) of one zone side on its slot's modes (nothing for the base).
-  void AddToSlot(int slot, double force_y, double force_z, Eigen::VectorXd& a) const;
+  // Queues the force (y, z) of one zone side on its slot (nothing for the base): the queue is
+  // added to the modes at the end of ProjectClosed, in order.
+  void Push(int slot, double force_y, double force_z);
 
-  std::vector<Block> blocks_;
+  std::vector<StationBlock> blocks_;
   std::vector<double> shapes_;  // Mode-major matrices, shared by blocks of equal shapes.
   std::vector<double> rows_;    // Per slot, its mode shape (modes contiguous).
   std::vector<int> slot_row_;   // Offset of each slot's row in rows_ (-1: base, padding).
@@ -149,7 +146,9 @@ class ContactStations {
   std::vector<std::uint64_t> velocity_step_;  // The step a slot's velocity belongs to.
   std::uint64_t step_ = 0;
   std::vector<double> force_;
-  std::vector<int> closed_;  // The zones closed in this step, in zone order.
+  std::vector<int> closed_;                   // The zones closed in this step, in zone order.
+  std::vector<StationForce> station_forces_;  // The step's forces per station side, in order.
+  int n_station_forces_ = 0;
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
   double friction_power_w_ = 0.0;  // Friction's over the last AddForces' step (W).

@@ -1,5 +1,6 @@
 #include "core/elementwise_passes.h"
 
+#include <algorithm>
 #include <cassert>
 
 namespace shockmap {
@@ -29,7 +30,32 @@ __attribute__((target_clones("avx2", "default"))) void Negative(const double* __
   for (Index i = 0; i < n; ++i) out[i] = -(w[i] * x[i]);
 }
 
+__attribute__((target_clones("avx2", "default"))) void Damp(double* __restrict a,
+                                                            const double* __restrict d,
+                                                            const double* __restrict v,
+                                                            const double* __restrict divisor,
+                                                            Index n) {
+  for (Index i = 0; i < n; ++i) a[i] = (a[i] - d[i] * v[i]) / divisor[i];
+}
+
+__attribute__((target_clones("avx2", "default"))) void RaiseToMax(double* __restrict m,
+                                                                  const double* __restrict v,
+                                                                  Index n) {
+  for (Index i = 0; i < n; ++i) m[i] = std::max(m[i], v[i]);
+}
+
 }  // namespace
+
+void RaiseToMaxInPlace(std::span<double> largest, std::span<const double> values) {
+  assert(values.size() == largest.size());
+  RaiseToMax(largest.data(), values.data(), static_cast<Index>(largest.size()));
+}
+
+void DampInPlace(Eigen::VectorXd& a, const Eigen::VectorXd& d, const Eigen::VectorXd& v,
+                 const Eigen::VectorXd& divisor) {
+  assert(d.size() == a.size() && v.size() == a.size() && divisor.size() == a.size());
+  Damp(a.data(), d.data(), v.data(), divisor.data(), a.size());
+}
 
 void PredictInPlace(Eigen::VectorXd& x, Eigen::VectorXd& v, const Eigen::VectorXd& a, double dt,
                     double cx, double cv) {

@@ -28,7 +28,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
   assert(beta_dt2 == 0.0 && "the scene's modal model is integrated explicitly");
   (void)beta_dt2;
   NegativeProduct(omega_squared_, x_pred, a);
-  for (const auto& load : loads_) a.noalias() += load.Amplitude(t_s) * load.shape;
+  for (const auto& load : loads_) AddScaledInPlace(a, load.Amplitude(t_s), load.shape);
   contacts_.AddForces(t_s, x_pred, v_pred, a);
   if (modal_damping_) {
     const auto& d = *modal_damping_;
@@ -36,7 +36,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
       damping_divisor_ = (1.0 + gamma_dt * d.array()).matrix();
       divisor_gamma_dt_ = gamma_dt;
     }
-    a = (a - d.cwiseProduct(v_pred)).cwiseQuotient(damping_divisor_);
+    DampInPlace(a, d, v_pred, damping_divisor_);
   }
   return true;
 }

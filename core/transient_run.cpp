@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/cpu_timer.h"
+#include "core/elementwise_passes.h"
 #include "core/fused_sums.h"
 #include "core/impact_tracker.h"
 #include "core/increment_stepper.h"
@@ -288,10 +289,7 @@ TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
     }
     summary.steps_taken = n;
     if (options.track_max_contact_force) {
-      const auto forces = system.LastContactForces();
-      for (std::size_t c = 0; c < forces.size(); ++c) {
-        result.max_contact_force_n[c] = std::max(result.max_contact_force_n[c], forces[c]);
-      }
+      RaiseToMaxInPlace(result.max_contact_force_n, system.LastContactForces());
     }
     if (impacts) impacts->Step(integrator.V());
     if (dissipates) {

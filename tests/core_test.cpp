@@ -1122,6 +1122,18 @@ TEST(ElementwisePasses, EqualEigenExpressionsBitForBit) {
       ASSERT_EQ(v[i], v_eigen[i]) << "n = " << n << ", i = " << i;
       ASSERT_EQ(out[i], out_eigen[i]) << "n = " << n << ", i = " << i;
     }
+    const Eigen::VectorXd d = (Eigen::VectorXd::Random(n).array() + 1.5).matrix() * 30.0;
+    const Eigen::VectorXd divisor = (1.0 + cv * d.array()).matrix();
+    Eigen::VectorXd damped = a;
+    DampInPlace(damped, d, v, divisor);
+    const Eigen::VectorXd damped_eigen = (a - d.cwiseProduct(v)).cwiseQuotient(divisor);
+    std::vector<double> largest(a.begin(), a.end()), values(v.begin(), v.end());
+    if (n > 3) values[3] = std::nan("");  // std::max keeps the largest so far over a NaN.
+    RaiseToMaxInPlace(largest, values);
+    for (int i = 0; i < n; ++i) {
+      ASSERT_EQ(damped[i], damped_eigen[i]) << "n = " << n << ", i = " << i;
+      ASSERT_EQ(largest[i], std::max(a[i], values[i])) << "n = " << n << ", i = " << i;
+    }
   }
 }
 
