@@ -1,10 +1,10 @@
 #pragma once
 // The loops of a contact-station step (core/contact_stations.h), each compiled for x86-64-v4
 // (AVX-512), x86-64-v3 (AVX2) and the baseline x86-64, the loader choosing. No multiply and add
-// is fused (the project compiles without contraction) and every value is computed with the same
+// is fused (the file is compiled without contraction) and every value is computed with the same
 // operations in the same order as one scalar at a time would, so the three clones give equal
 // results bit for bit; a wider register only computes more stations or zones per instruction
-// (docs/performance.md, "Growth with the number of pins").
+// (docs/performance.md, "The contact stations' kernels").
 
 #include <span>
 
