@@ -87,8 +87,7 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
   }
   largest_penetration_.assign(power_.size(), 0.0);
   for (Slots* s : {&displacement_, &velocity_, &scratch_}) {
-    s->y.assign(slots, 0.0);
-    s->z.assign(slots, 0.0);
+    s->yz.assign(2 * static_cast<std::size_t>(slots), 0.0);
   }
   velocity_step_.assign(slots, 0);
   force_.assign(zones.size(), 0.0);
@@ -97,14 +96,14 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
 }
 
 void ContactStations::Evaluate(const Eigen::VectorXd& x, Slots& out) const {
-  EvaluateStations(blocks_, shapes_.data(), x.data(), out.y.data(), out.z.data());
+  EvaluateStations(blocks_, shapes_.data(), x.data(), out.yz.data());
 }
 
 // n . (u_a - u_b), in the order the zone-by-zone sum used (the base reads zero).
 double ContactStations::Normal(int zone, const Slots& u) const {
   const int a = slot_a_[zone], b = slot_b_[zone];
   const double ny = normal_y_[zone], nz = normal_z_[zone];
-  return ny * u.y[a] + nz * u.z[a] - ny * u.y[b] - nz * u.z[b];
+  return ny * u.Y(a) + nz * u.Z(a) - ny * u.Y(b) - nz * u.Z(b);
 }
 
 std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& state) const {
@@ -118,7 +117,7 @@ std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& s
 double ContactStations::Tangential(int zone, const Slots& u) const {
   const int a = slot_a_[zone], b = slot_b_[zone];
   const double ny = normal_y_[zone], nz = normal_z_[zone];
-  return -nz * u.y[a] + ny * u.z[a] + nz * u.y[b] - ny * u.z[b];
+  return -nz * u.Y(a) + ny * u.Z(a) + nz * u.Y(b) - ny * u.Z(b);
 }
 
 double ContactStations::NormalAt(int zone, const Eigen::VectorXd& state) const {
@@ -131,8 +130,8 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
   if (velocity_step_[slot] == step_) return;
   velocity_step_[slot] = step_;
   const auto w = SlotAt(slot, v);
-  velocity_.y[slot] = w[0];
-  velocity_.z[slot] = w[1];
+  velocity_.yz[2 * slot] = w[0];
+  velocity_.yz[2 * slot + 1] = w[1];
 }
 
 void ContactStations::Push(int slot, double force_y, double force_z) {
@@ -154,8 +153,8 @@ void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eige
                            gap_.data(),
                            stiffness_.data(),
                            static_cast<int>(force_.size())};
-  const int n_closed = LinearPenaltyForces(zones, displacement_.y.data(), displacement_.z.data(),
-                                           force_.data(), closed_.data());
+  const int n_closed =
+      LinearPenaltyForces(zones, displacement_.yz.data(), force_.data(), closed_.data());
   if (!power_.empty()) ApplyPowerLaws();
   friction_power_w_ = 0.0;
   if (frictions_.empty()) {
@@ -246,7 +245,7 @@ std::vector<double> ContactStations::LargestPenetrations() const {
 
 std::array<double, 2> ContactStations::RelativeDisplacement(int zone) const {
   const int a = slot_a_[zone], b = slot_b_[zone];
-  return {displacement_.y[a] - displacement_.y[b], displacement_.z[a] - displacement_.z[b]};
+  return {displacement_.Y(a) - displacement_.Y(b), displacement_.Z(a) - displacement_.Z(b)};
 }
 
 std::array<double, 2> ContactStations::RelativeVelocity(int zone, const Eigen::VectorXd& v) const {
@@ -297,30 +296,28 @@ void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x,
   Evaluate(x, scratch_);
   // Per station, the generalized force k_z (r_z . x) n with the sign of its side, and
   // k_t (t_z . x) t for the zones with friction.
-  Slots g;
-  g.y.assign(scratch_.y.size(), 0.0);
-  g.z.assign(scratch_.z.size(), 0.0);
+  std::vector<double> gy(slot_row_.size(), 0.0), gz(slot_row_.size(), 0.0);
   for (std::size_t i = 0; i < force_.size(); ++i) {
     const int zone = static_cast<int>(i);
     const double f = normal_stiffness[i] * Normal(zone, scratch_);
-    g.y[slot_a_[i]] += f * normal_y_[i];
-    g.z[slot_a_[i]] += f * normal_z_[i];
-    g.y[slot_b_[i]] -= f * normal_y_[i];
-    g.z[slot_b_[i]] -= f * normal_z_[i];
+    gy[slot_a_[i]] += f * normal_y_[i];
+    gz[slot_a_[i]] += f * normal_z_[i];
+    gy[slot_b_[i]] -= f * normal_y_[i];
+    gz[slot_b_[i]] -= f * normal_z_[i];
     if (friction_of_[i] < 0) continue;
     const double ft =
         frictions_[friction_of_[i]].law.tangential_stiffness_n_per_m * Tangential(zone, scratch_);
-    g.y[slot_a_[i]] -= ft * normal_z_[i];
-    g.z[slot_a_[i]] += ft * normal_y_[i];
-    g.y[slot_b_[i]] += ft * normal_z_[i];
-    g.z[slot_b_[i]] -= ft * normal_y_[i];
+    gy[slot_a_[i]] -= ft * normal_z_[i];
+    gz[slot_a_[i]] += ft * normal_y_[i];
+    gy[slot_b_[i]] += ft * normal_z_[i];
+    gz[slot_b_[i]] -= ft * normal_y_[i];
   }
-  for (std::size_t s = 1; s < g.y.size(); ++s) {
+  for (std::size_t s = 1; s < gy.size(); ++s) {
     if (slot_row_[s] < 0) continue;
     const double* row = rows_.data() + slot_row_[s];
     for (int i = 0; i < slot_modes_[s]; ++i) {
-      y[slot_y_[s] + i] += g.y[s] * row[i];
-      if (slot_z_[s] >= 0) y[slot_z_[s] + i] += g.z[s] * row[i];
+      y[slot_y_[s] + i] += gy[s] * row[i];
+      if (slot_z_[s] >= 0) y[slot_z_[s] + i] += gz[s] * row[i];
     }
   }
 }

@@ -94,9 +94,12 @@ class ContactStations {
                           Eigen::VectorXd& y) const;
 
  private:
-  // Per slot (slot 0 is the base: zero motion, its force discarded).
+  // Per slot (slot 0 is the base: zero motion, its force discarded), its (y, z) side by side:
+  // a zone reads both of a station in one load.
   struct Slots {
-    std::vector<double> y, z;
+    std::vector<double> yz;
+    double Y(int slot) const { return yz[2 * slot]; }
+    double Z(int slot) const { return yz[2 * slot + 1]; }
   };
 
   // A zone's friction: its law, its state, and the step it was last closed at.

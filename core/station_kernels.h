@@ -26,10 +26,11 @@ struct StationBlock {
   int y = -1, z = -1, modes = 0, first = 0, width = 0, count = 0, shapes = 0;
 };
 
-// For every block and direction, out[first + h] = sum_i shapes[i * width + h] x[y + i] (z
-// likewise), h < width, each sum in StationDot's order.
+// For every block, out[2 (first + h)] = sum_i shapes[i * width + h] x[y + i] and
+// out[2 (first + h) + 1] the same over z (0 in a direction the beam does not bend in), h <
+// width: each slot's (y, z) side by side, each sum in StationDot's order.
 void EvaluateStations(std::span<const StationBlock> blocks, const double* shapes, const double* x,
-                      double* out_y, double* out_z);
+                      double* out);
 
 // The zones as the linear penalty reads them (structure of arrays, zone order).
 struct PenaltyZones {
@@ -43,10 +44,9 @@ struct PenaltyZones {
 };
 
 // Every zone's force k max(0, d), d = n . (u_a - u_b) - gap from its stations' displacements
-// (uy, uz per slot; 0 when open or not a number), and the closed zones (d > 0) listed in zone
-// order into `closed` (one int per zone), their number returned.
-int LinearPenaltyForces(const PenaltyZones& zones, const double* uy, const double* uz,
-                        double* force, int* closed);
+// (u: each slot's (y, z) side by side; 0 when open or not a number), and the closed zones (d > 0)
+// listed in zone order into `closed` (one int per zone), their number returned.
+int LinearPenaltyForces(const PenaltyZones& zones, const double* u, double* force, int* closed);
 
 // A force on one station: (y, z) components, added to its beam's modes through its row.
 struct StationForce {

@@ -32,27 +32,36 @@ TEST(StationKernels, StationDotIsEigensRowDot) {
   }
 }
 
-// Every station of a block reads what StationDot of its own row gives, in y and z, at widths
-// that take the scalar sum, one pair, groups of 4, of 8, and 8 then 4.
+// Every station of a block reads what StationDot of its own row gives, in y and z side by side,
+// at widths that take the scalar sum, one pair, groups of 4, of 8, and 8 then 4; a planar beam
+// (no z) reads 0 in z.
 TEST(StationKernels, EvaluatedStationsEqualTheirOwnRowsDot) {
   std::mt19937 rng(2);
-  for (int count : {1, 2, 3, 4, 7, 8, 11, 12, 16}) {
-    for (int modes = 0; modes <= 13; ++modes) {
-      const int width = StationWidth(count);
-      ASSERT_GE(width, count);
-      const StationBlock b{
-          .y = 0, .z = modes, .modes = modes, .first = 1, .width = width, .count = count};
-      const std::vector<double> shapes = Values(rng, modes * width), x = Values(rng, 2 * modes);
-      std::vector<double> out_y(static_cast<std::size_t>(width + 1), -1.0), out_z = out_y;
-      EvaluateStations({&b, 1}, shapes.data(), x.data(), out_y.data(), out_z.data());
-      EXPECT_EQ(out_y[0], -1.0) << "slot 0 belongs to no block";
-      for (int h = 0; h < width; ++h) {
-        std::vector<double> row(static_cast<std::size_t>(modes));
-        for (int i = 0; i < modes; ++i) row[i] = shapes[i * width + h];
-        EXPECT_EQ(out_y[1 + h], StationDot(row.data(), x.data(), modes))
-            << "count " << count << ", modes " << modes << ", station " << h;
-        EXPECT_EQ(out_z[1 + h], StationDot(row.data(), x.data() + modes, modes))
-            << "count " << count << ", modes " << modes << ", station " << h;
+  for (bool planar : {false, true}) {
+    for (int count : {1, 2, 3, 4, 7, 8, 11, 12, 16}) {
+      for (int modes = 0; modes <= 13; ++modes) {
+        const int width = StationWidth(count);
+        ASSERT_GE(width, count);
+        const StationBlock b{.y = 0,
+                             .z = planar ? -1 : modes,
+                             .modes = modes,
+                             .first = 1,
+                             .width = width,
+                             .count = count};
+        const std::vector<double> shapes = Values(rng, modes * width), x = Values(rng, 2 * modes);
+        std::vector<double> out(2 * static_cast<std::size_t>(width + 1), -1.0);
+        EvaluateStations({&b, 1}, shapes.data(), x.data(), out.data());
+        EXPECT_EQ(out[0], -1.0) << "slot 0 belongs to no block";
+        EXPECT_EQ(out[1], -1.0) << "slot 0 belongs to no block";
+        for (int h = 0; h < width; ++h) {
+          std::vector<double> row(static_cast<std::size_t>(modes));
+          for (int i = 0; i < modes; ++i) row[i] = shapes[i * width + h];
+          const double z = planar ? 0.0 : StationDot(row.data(), x.data() + modes, modes);
+          EXPECT_EQ(out[2 * (1 + h)], StationDot(row.data(), x.data(), modes))
+              << "count " << count << ", modes " << modes << ", station " << h;
+          EXPECT_EQ(out[2 * (1 + h) + 1], z)
+              << "count " << count << ", modes " << modes << ", station " << h;
+        }
       }
     }
   }
@@ -64,9 +73,11 @@ TEST(StationKernels, PenaltyForcesFollowTheScalarFormula) {
   std::mt19937 rng(3);
   constexpr int kSlots = 9;
   for (int n = 0; n <= 37; ++n) {
-    std::vector<double> uy = Values(rng, kSlots), uz = Values(rng, kSlots);
-    uy[0] = uz[0] = 0.0;  // The base.
-    uy[5] = std::nan("");
+    std::vector<double> u = Values(rng, 2 * kSlots);  // (y, z) per slot.
+    u[0] = u[1] = 0.0;                                // The base.
+    u[10] = std::nan("");                             // Slot 5's y.
+    auto uy = [&](int slot) { return u[2 * slot]; };
+    auto uz = [&](int slot) { return u[2 * slot + 1]; };
     std::vector<int> a(static_cast<std::size_t>(n)), b = a;
     std::uniform_int_distribution<int> slot(0, kSlots - 1);
     for (int i = 0; i < n; ++i) a[i] = slot(rng), b[i] = slot(rng);
@@ -74,17 +85,16 @@ TEST(StationKernels, PenaltyForcesFollowTheScalarFormula) {
     std::vector<double> k = Values(rng, n);
     for (double& ki : k) ki = std::abs(ki) * 1e6;
     if (n > 2) {  // Exactly at contact.
-      a[2] = 1, b[2] = 0, ny[2] = 1.0, nz[2] = 0.0, gap[2] = uy[1];
+      a[2] = 1, b[2] = 0, ny[2] = 1.0, nz[2] = 0.0, gap[2] = uy(1);
     }
     const PenaltyZones zones{a.data(), b.data(), ny.data(), nz.data(), gap.data(), k.data(), n};
     std::vector<double> force(static_cast<std::size_t>(n));
     std::vector<int> closed(static_cast<std::size_t>(n), -1);
-    const int n_closed =
-        LinearPenaltyForces(zones, uy.data(), uz.data(), force.data(), closed.data());
+    const int n_closed = LinearPenaltyForces(zones, u.data(), force.data(), closed.data());
     std::vector<int> expected_closed;
     for (int i = 0; i < n; ++i) {
       const double d =
-          ny[i] * uy[a[i]] + nz[i] * uz[a[i]] - ny[i] * uy[b[i]] - nz[i] * uz[b[i]] - gap[i];
+          ny[i] * uy(a[i]) + nz[i] * uz(a[i]) - ny[i] * uy(b[i]) - nz[i] * uz(b[i]) - gap[i];
       EXPECT_EQ(force[i], k[i] * std::max(0.0, d)) << "n " << n << ", zone " << i;
       if (d > 0.0) expected_closed.push_back(i);
     }
