@@ -11,8 +11,8 @@
 namespace shockmap {
 
 // The linear penalty's elastic force k max(0, d) (paper eq. 5), 0 for an open or NaN
-// penetration. Written once here; the hottest loop (core/contact_stations.cpp) calls it on
-// arrays.
+// penetration. The contact stations' kernel (core/station_kernels.cpp) computes it eight zones
+// at a time, each lane as this does, and calls it for the zones left over.
 inline double LinearPenaltyForce(double stiffness, double penetration) {
   return stiffness * std::max(0.0, penetration);
 }

@@ -1,7 +1,8 @@
 #include "core/station_kernels.h"
 
-#include <algorithm>
 #include <cstring>
+
+#include "core/contact_law.h"
 
 #define SHOCKMAP_CLONES \
   __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
@@ -173,7 +174,7 @@ SHOCKMAP_CLONES void EvaluateStations(std::span<const StationBlock> blocks, cons
   const Lanes<8> ny = Load<8>(z.normal_y + i), nz = Load<8>(z.normal_z + i);
   const Lanes<8> d = ny * ya + nz * za - ny * yb - nz * zb - Load<8>(z.gap + i);
   const auto is_closed = d > 0.0;  // -1 in a closed lane, 0 in an open or NaN one.
-  // k max(0, d): 0 for a NaN d, as std::max(0.0, d) gives.
+  // k max(0, d): 0 for a NaN d, as LinearPenaltyForce gives.
   Store<8>(f + i, Load<8>(z.stiffness + i) * (is_closed ? d : Lanes<8>{}));
   for (int l = 0; l < 8; ++l) {
     closed[n_closed] = i + l;
@@ -191,7 +192,7 @@ SHOCKMAP_CLONES int LinearPenaltyForces(const PenaltyZones& zones, const double*
     const double* ub = u + 2 * zones.slot_b[i];
     const double ny = zones.normal_y[i], nz = zones.normal_z[i];
     const double d = ny * ua[0] + nz * ua[1] - ny * ub[0] - nz * ub[1] - zones.gap[i];
-    force[i] = zones.stiffness[i] * std::max(0.0, d);
+    force[i] = LinearPenaltyForce(zones.stiffness[i], d);
     closed[n_closed] = i;
     n_closed += static_cast<int>(d > 0.0);
   }
