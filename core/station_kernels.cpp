@@ -125,6 +125,10 @@ template <int W>
 // One beam's stations: a single one summed alone, else groups of 8, 4 or 2.
 [[gnu::always_inline]] inline void EvaluateBlock(const StationBlock& b, const double* shapes,
                                                  const double* x, double* out) {
+  if (b.modes == 0) {  // No modes, no motion (and no shapes to point into).
+    for (int h = 0; h < 2 * b.width; ++h) out[h] = 0.0;
+    return;
+  }
   if (b.width == 1) {
     out[0] = b.y >= 0 ? Dot(shapes, x + b.y, b.modes) : 0.0;
     out[1] = b.z >= 0 ? Dot(shapes, x + b.z, b.modes) : 0.0;
