@@ -92,7 +92,7 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
   velocity_step_.assign(slots, 0);
   force_.assign(zones.size(), 0.0);
   closed_.assign(zones.size(), 0);
-  station_forces_.resize(2 * zones.size());
+  station_forces_.reserve(2 * zones.size());
 }
 
 void ContactStations::Evaluate(const Eigen::VectorXd& x, Slots& out) const {
@@ -135,7 +135,7 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
 }
 
 void ContactStations::Push(int slot, double force_y, double force_z) {
-  if (slot != 0) station_forces_[n_station_forces_++] = {slot, force_y, force_z};
+  if (slot != 0) station_forces_.push_back({slot, force_y, force_z});
 }
 
 void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
@@ -182,7 +182,7 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
   const double* const c = damping_.data();
   double* const force = force_.data();
   const int* const closed = closed_.data();
-  n_station_forces_ = 0;
+  station_forces_.clear();
   for (int j = 0; j < n_closed; ++j) {
     const int i = closed[j], sa = slot_a[i], sb = slot_b[i];
     if (c[i] != 0.0) {
@@ -205,7 +205,7 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
   }
   const StationLayout layout{rows_.data(), slot_row_.data(), slot_y_.data(), slot_z_.data(),
                              slot_modes_.data()};
-  AddStationForces(station_forces_.data(), n_station_forces_, layout, a.data());
+  AddStationForces(station_forces_, layout, a.data());
 }
 
 double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {

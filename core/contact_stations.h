@@ -151,7 +151,6 @@ class ContactStations {
   std::vector<double> force_;
   std::vector<int> closed_;                   // The zones closed in this step, in zone order.
   std::vector<StationForce> station_forces_;  // The step's forces per station side, in order.
-  int n_station_forces_ = 0;
   // EnergyAt and the stiffness operator evaluate into this: one thread per system.
   mutable Slots scratch_;
   double friction_power_w_ = 0.0;  // Friction's over the last AddForces' step (W).

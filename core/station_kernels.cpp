@@ -209,10 +209,9 @@ SHOCKMAP_CLONES int LinearPenaltyForces(const PenaltyZones& zones, const double*
   for (int i = 0; i < n; ++i) out[i] += f * row[i];
 }
 
-SHOCKMAP_CLONES void AddStationForces(const StationForce* forces, int count,
+SHOCKMAP_CLONES void AddStationForces(std::span<const StationForce> forces,
                                       const StationLayout& layout, double* a) {
-  for (int j = 0; j < count; ++j) {
-    const StationForce& f = forces[j];
+  for (const StationForce& f : forces) {
     const double* row = layout.rows + layout.row[f.slot];
     const int n = layout.modes[f.slot];
     if (layout.y[f.slot] >= 0) AddRow(a + layout.y[f.slot], f.y, row, n);

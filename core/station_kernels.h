@@ -66,7 +66,6 @@ struct StationLayout {
 
 // a[y + i] += f.y row[i] and a[z + i] += f.z row[i] for each force in order (the order in
 // which a station's forces are added is the zones' order, which fixes the sums' roundings).
-void AddStationForces(const StationForce* forces, int count, const StationLayout& layout,
-                      double* a);
+void AddStationForces(std::span<const StationForce> forces, const StationLayout& layout, double* a);
 
 }  // namespace shockmap

@@ -120,7 +120,7 @@ TEST(StationKernels, StationForcesAddInOrder) {
     const std::vector<double> f = Values(rng, 14);
     for (int j = 0; j < 7; ++j) forces.push_back({1 + j % 3, f[2 * j], f[2 * j + 1]});
     std::vector<double> a = Values(rng, 3 * modes), expected = a;
-    AddStationForces(forces.data(), static_cast<int>(forces.size()), layout, a.data());
+    AddStationForces(forces, layout, a.data());
     for (const StationForce& s : forces) {
       for (int i = 0; i < modes; ++i) {
         expected[y[s.slot] + i] += s.y * rows[row[s.slot] + i];
