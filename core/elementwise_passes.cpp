@@ -30,6 +30,12 @@ __attribute__((target_clones("avx2", "default"))) void Negative(const double* __
   for (Index i = 0; i < n; ++i) out[i] = -(w[i] * x[i]);
 }
 
+__attribute__((target_clones("avx2", "default"))) void NegativePlusScaled(
+    const double* __restrict w, const double* __restrict x, double c, const double* __restrict s,
+    double* __restrict out, Index n) {
+  for (Index i = 0; i < n; ++i) out[i] = -(w[i] * x[i]) + c * s[i];
+}
+
 __attribute__((target_clones("avx2", "default"))) void Damp(double* __restrict a,
                                                             const double* __restrict d,
                                                             const double* __restrict v,
@@ -72,6 +78,13 @@ void NegativeProduct(const Eigen::VectorXd& w, const Eigen::VectorXd& x, Eigen::
   assert(x.size() == w.size());
   out.resize(w.size());
   Negative(w.data(), x.data(), out.data(), w.size());
+}
+
+void NegativeProductPlusScaled(const Eigen::VectorXd& w, const Eigen::VectorXd& x, double c,
+                               const Eigen::VectorXd& s, Eigen::VectorXd& out) {
+  assert(x.size() == w.size() && s.size() == w.size());
+  out.resize(w.size());
+  NegativePlusScaled(w.data(), x.data(), c, s.data(), out.data(), w.size());
 }
 
 }  // namespace shockmap

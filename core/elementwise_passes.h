@@ -29,4 +29,9 @@ void RaiseToMaxInPlace(std::span<double> largest, std::span<const double> values
 // out = -(w .* x), out resized to w's size.
 void NegativeProduct(const Eigen::VectorXd& w, const Eigen::VectorXd& x, Eigen::VectorXd& out);
 
+// out = -(w .* x) + c s, out resized to w's size: NegativeProduct then AddScaledInPlace in one
+// pass, equal to them bit for bit (the restoring force and one load).
+void NegativeProductPlusScaled(const Eigen::VectorXd& w, const Eigen::VectorXd& x, double c,
+                               const Eigen::VectorXd& s, Eigen::VectorXd& out);
+
 }  // namespace shockmap

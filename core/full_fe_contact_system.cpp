@@ -117,9 +117,9 @@ bool FullFeContactSystem::Dissipates() const {
   return mass_damping_per_s_ != 0.0 || AnyContactDamping(contacts_);
 }
 
-double FullFeContactSystem::DissipatedPower(const Eigen::VectorXd& x,
-                                            const Eigen::VectorXd& v) const {
-  return mass_damping_per_s_ * v.dot(mass_ * v) + ContactDampingPower(contacts_, x, v);
+SecondOrderSystem::Powers FullFeContactSystem::PowersAt(double /*t_s*/, const Eigen::VectorXd& x,
+                                                        const Eigen::VectorXd& v) const {
+  return {mass_damping_per_s_ * v.dot(mass_ * v) + ContactDampingPower(contacts_, x, v), 0.0};
 }
 
 }  // namespace shockmap

@@ -31,7 +31,8 @@ class FullFeContactSystem final : public SecondOrderSystem {
   }
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
-  double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
+  // Mass-proportional and contact damping; no time-dependent loads.
+  Powers PowersAt(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   const std::vector<PointContact>& Contacts() const { return contacts_; }
 
   // Iterations of the active-set loop allowed per solve; the law is piecewise linear with

@@ -40,4 +40,20 @@ std::array<double, 2> KineticAndStrainSums(const Eigen::VectorXd& v, const Eigen
       });
 }
 
+std::array<double, 2> WeightedSquareAndDot(const Eigen::VectorXd& w, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& s) {
+  assert(w.size() == v.size() && w.size() == s.size());
+  const double *pw = w.data(), *pv = v.data(), *ps = s.data();
+  return FusedSums<2>(
+      v.size(),
+      [&](Eigen::Index i) {
+        const SumPacket vi = Load(pv + i);
+        return PacketTerms<2>{{Eigen::internal::pmul(Load(pw + i), Eigen::internal::pmul(vi, vi)),
+                               Eigen::internal::pmul(Load(ps + i), vi)}};
+      },
+      [&](Eigen::Index i) {
+        return std::array<double, 2>{pw[i] * (pv[i] * pv[i]), ps[i] * pv[i]};
+      });
+}
+
 }  // namespace shockmap

@@ -73,4 +73,9 @@ std::array<double, 2> DotBoth(const Eigen::VectorXd& row, const Eigen::VectorXd&
 std::array<double, 2> KineticAndStrainSums(const Eigen::VectorXd& v, const Eigen::VectorXd& w,
                                            const Eigen::VectorXd& x);
 
+// {w . (v .* v), s . v}: equal bit for bit to w.dot(v.cwiseProduct(v)) and s.dot(v), a modal
+// damping's power and a load's. Sizes must agree.
+std::array<double, 2> WeightedSquareAndDot(const Eigen::VectorXd& w, const Eigen::VectorXd& v,
+                                           const Eigen::VectorXd& s);
+
 }  // namespace shockmap

@@ -27,8 +27,14 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
                                          const Eigen::VectorXd& v_pred, Eigen::VectorXd& a) {
   assert(beta_dt2 == 0.0 && "the scene's modal model is integrated explicitly");
   (void)beta_dt2;
-  NegativeProduct(omega_squared_, x_pred, a);
-  for (const auto& load : loads_) AddScaledInPlace(a, load.Amplitude(t_s), load.shape);
+  if (loads_.empty()) {
+    NegativeProduct(omega_squared_, x_pred, a);
+  } else {
+    NegativeProductPlusScaled(omega_squared_, x_pred, loads_.front().Amplitude(t_s),
+                              loads_.front().shape, a);
+  }
+  for (std::size_t i = 1; i < loads_.size(); ++i)
+    AddScaledInPlace(a, loads_[i].Amplitude(t_s), loads_[i].shape);
   contacts_.AddForces(t_s, x_pred, v_pred, a);
   if (modal_damping_) {
     const auto& d = *modal_damping_;
@@ -62,15 +68,21 @@ Energies SceneModalSystem::EnergyAt(const Eigen::VectorXd& x, const Eigen::Vecto
 
 bool SceneModalSystem::Dissipates() const { return modal_damping_ || contacts_.AnyDamping(); }
 
-double SceneModalSystem::DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const {
-  const double p = modal_damping_ ? modal_damping_->dot(v.cwiseProduct(v)) : 0.0;
-  return contacts_.AddDampingPower(x, v, p);
-}
-
-double SceneModalSystem::ExternalPower(double t_s, const Eigen::VectorXd& v) const {
-  double p = 0.0;
-  for (const auto& load : loads_) p += load.Amplitude(t_s) * load.shape.dot(v);
-  return p;
+SecondOrderSystem::Powers SceneModalSystem::PowersAt(double t_s, const Eigen::VectorXd& x,
+                                                     const Eigen::VectorXd& v) const {
+  double damping = 0.0, external = 0.0;
+  std::size_t summed_loads = 0;
+  if (modal_damping_ && !loads_.empty()) {
+    const auto [d, s] = WeightedSquareAndDot(*modal_damping_, v, loads_.front().shape);
+    damping = d;
+    external += loads_.front().Amplitude(t_s) * s;
+    summed_loads = 1;
+  } else if (modal_damping_) {
+    damping = modal_damping_->dot(v.cwiseProduct(v));
+  }
+  for (std::size_t i = summed_loads; i < loads_.size(); ++i)
+    external += loads_[i].Amplitude(t_s) * loads_[i].shape.dot(v);
+  return {contacts_.AddDampingPower(x, v, damping), external};
 }
 
 double SceneModalSystem::StiffestOmegaSquared(std::span<const double> normal_stiffness) const {

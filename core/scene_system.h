@@ -42,9 +42,10 @@ class SceneModalSystem final : public SecondOrderSystem {
   double PenetrationRate(int contact, const Eigen::VectorXd& v) const override;
   Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool Dissipates() const override;
-  double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
   bool HasExternalLoads() const override { return !loads_.empty(); }
-  double ExternalPower(double t_s, const Eigen::VectorXd& v) const override;
+  // The modal damping's power and the first load's summed in one pass (core/fused_sums.h),
+  // each equal bit for bit to its own dot product; then the contacts' damping, the other loads.
+  Powers PowersAt(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const override;
 
   // The largest eigenvalue of diag(omega^2) + sum_z (k_z r_z r_z^T + k_t,z t_z t_z^T) (every
   // zone closed with normal stiffness k_z, zone order, and the tangential springs of its zones

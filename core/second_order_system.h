@@ -61,17 +61,22 @@ class SecondOrderSystem {
 
   virtual Energies EnergyAt(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
 
-  // True when the system declares structural or contact damping; otherwise DissipatedPower is
-  // identically zero and callers skip it.
+  // True when the system declares structural or contact damping; otherwise the dissipated power
+  // is identically zero.
   virtual bool Dissipates() const = 0;
 
-  // True when time-dependent loads act (base motion, forces); their power is then
-  // ExternalPower, and the energy balance counts their work.
+  // True when time-dependent loads act (base motion, forces); the energy balance then counts
+  // their work.
   virtual bool HasExternalLoads() const { return false; }
-  virtual double ExternalPower(double /*t_s*/, const Eigen::VectorXd& /*v*/) const { return 0.0; }
 
-  // Power dissipated by structural and contact damping at a state (W), >= 0.
-  virtual double DissipatedPower(const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
+  // The powers the energy balance integrates, at time t_s and state (x, v): what structural and
+  // contact damping take out (W, >= 0; 0 unless Dissipates()) and what the loads feed in (W; 0
+  // unless HasExternalLoads()). One call, so that a system may sum both in one pass.
+  struct Powers {
+    double dissipated_w = 0.0;
+    double external_w = 0.0;
+  };
+  virtual Powers PowersAt(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v) const = 0;
 };
 
 // Sum over contacts of the penalty energy at state x.

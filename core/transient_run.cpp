@@ -255,12 +255,12 @@ TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
   }
   const bool dissipates = system.Dissipates();
   double dissipated = 0.0;
-  double power_before = dissipates ? system.DissipatedPower(x0, v0) : 0.0;
   // Work of the external loads, and the total of its magnitude: the scale energy is judged
   // against when loads feed it (a base shock starts from rest).
   const bool loaded = system.HasExternalLoads();
   double work = 0.0, work_magnitude = 0.0;
-  double load_power_before = loaded ? system.ExternalPower(0.0, v0) : 0.0;
+  SecondOrderSystem::Powers before;
+  if (dissipates || loaded) before = system.PowersAt(0.0, x0, v0);
   summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
   auto record = [&] {
     recorder.RecordObserved(integrator.X(), integrator.V());
@@ -292,16 +292,12 @@ TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
       RaiseToMaxInPlace(result.max_contact_force_n, system.LastContactForces());
     }
     if (impacts) impacts->Step(integrator.V());
-    if (dissipates) {
-      const double power_now = system.DissipatedPower(integrator.X(), integrator.V());
-      dissipated += 0.5 * dt * (power_before + power_now);
-      power_before = power_now;
-    }
-    if (loaded) {
-      const double power_now = system.ExternalPower(integrator.T(), integrator.V());
-      work += 0.5 * dt * (load_power_before + power_now);
-      work_magnitude += 0.5 * dt * (std::abs(load_power_before) + std::abs(power_now));
-      load_power_before = power_now;
+    if (dissipates || loaded) {
+      const auto now = system.PowersAt(integrator.T(), integrator.X(), integrator.V());
+      dissipated += 0.5 * dt * (before.dissipated_w + now.dissipated_w);
+      work += 0.5 * dt * (before.external_w + now.external_w);
+      work_magnitude += 0.5 * dt * (std::abs(before.external_w) + std::abs(now.external_w));
+      before = now;
     }
     if (--to_record == 0) {
       to_record = options.record_stride;

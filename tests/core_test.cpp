@@ -1075,6 +1075,9 @@ TEST(FusedSums, EqualEigenReductionsBitForBit) {
     const auto [vv, wxx] = KineticAndStrainSums(v, w, x);
     EXPECT_EQ(vv, v.squaredNorm()) << "n = " << n;
     EXPECT_EQ(wxx, w.dot(x.cwiseProduct(x))) << "n = " << n;
+    const auto [wvv, rv2] = WeightedSquareAndDot(w, v, row);
+    EXPECT_EQ(wvv, w.dot(v.cwiseProduct(v))) << "n = " << n;
+    EXPECT_EQ(rv2, row.dot(v)) << "n = " << n;
   }
 }
 
@@ -1118,9 +1121,14 @@ TEST(ElementwisePasses, EqualEigenExpressionsBitForBit) {
     ASSERT_EQ(out.size(), n);
     v_eigen.noalias() += cv * a;
     const Eigen::VectorXd out_eigen = -w.cwiseProduct(x);
+    Eigen::VectorXd loaded, loaded_twice = out;
+    NegativeProductPlusScaled(w, x, -2.5e3, a, loaded);
+    AddScaledInPlace(loaded_twice, -2.5e3, a);  // The two passes it fuses.
+    ASSERT_EQ(loaded.size(), n);
     for (int i = 0; i < n; ++i) {
       ASSERT_EQ(v[i], v_eigen[i]) << "n = " << n << ", i = " << i;
       ASSERT_EQ(out[i], out_eigen[i]) << "n = " << n << ", i = " << i;
+      ASSERT_EQ(loaded[i], loaded_twice[i]) << "n = " << n << ", i = " << i;
     }
     const Eigen::VectorXd d = (Eigen::VectorXd::Random(n).array() + 1.5).matrix() * 30.0;
     const Eigen::VectorXd divisor = (1.0 + cv * d.array()).matrix();
