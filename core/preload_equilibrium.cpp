@@ -41,11 +41,16 @@ const NormalLaw& LawOf(const SceneModalSystem& system, std::size_t zone) {
 // at its penetration d0 = r . x - g: F ~ K_t (r . x - g) + (F(d0) - K_t d0), so that
 // (diag(omega^2) + sum K_t r r^T) x' = sum (K_t g - (F(d0) - K_t d0)) r. For a linear law the
 // bracket is exactly 0 and x' is the minimum of the closed set's quadratic.
+// Only the lower triangle is assembled: the factorization reads no other (SimplicialLDLT's Lower),
+// and each entry's terms are summed in the same order as in the full matrix.
 Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
                                 const std::vector<std::vector<std::pair<int, double>>>& rows,
                                 const std::set<std::size_t>& active, const Eigen::VectorXd& x) {
   const int n = system.Size();
   std::vector<Eigen::Triplet<double>> entries;
+  std::size_t count = n;
+  for (const std::size_t z : active) count += rows[z].size() * (rows[z].size() + 1) / 2;
+  entries.reserve(count);
   for (int i = 0; i < n; ++i) entries.emplace_back(i, i, system.OmegaSquared()[i]);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (const std::size_t z : active) {
@@ -56,12 +61,14 @@ Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
     const double offset = law.ElasticForce(d0) - k * d0;
     for (const auto& [i, ci] : rows[z]) {
       rhs[i] += (k * zone.gap_m - offset) * ci;
-      for (const auto& [j, cj] : rows[z]) entries.emplace_back(i, j, k * ci * cj);
+      for (const auto& [j, cj] : rows[z]) {
+        if (j <= i) entries.emplace_back(i, j, k * ci * cj);
+      }
     }
   }
   Eigen::SparseMatrix<double> a(n, n);
   a.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(a);
   if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0.0).any()) {
     throw InputError(
         "zones with a negative gap (preloaded contacts): the model has a rigid-body mode the "
