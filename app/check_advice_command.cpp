@@ -21,7 +21,9 @@
 #include "db/study_database.h"
 #include "engine/stop_request.h"
 #include "engine/study_run.h"
+#include "formats/advice_check_outcomes.h"
 #include "formats/advice_check_study.h"
+#include "formats/ensemble_study_spec.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
@@ -48,6 +50,7 @@ struct CheckAdviceFlags {
   int max_rungs = 6;
   SizingOptions options;
   std::string write_study;
+  std::string record;
   bool quiet = false;
   SceneFileAccess access;
 };
@@ -109,8 +112,17 @@ std::string AdvisedTruncations(const SceneAdvice& advice) {
   return text;
 }
 
+// A ladder's sizing statistics and what its members were: their number per state and rung,
+// their window and the clearance states.
+struct LadderRun {
+  EnsembleSizing sizing;
+  int members = 0;
+  double window_s = 0.0;
+  std::vector<std::string> states;
+};
+
 // Runs the ladder's study (only the members not stored yet) and reads its sizing statistics.
-EnsembleSizing RunLadder(const CheckAdviceFlags& f, const Json& study) {
+LadderRun RunLadder(const CheckAdviceFlags& f, const Json& study) {
   const StudyFile parsed = ParseStudyFile(study, f.study_file, f.access);
   StudyRunOptions options;
   options.database_path = f.database_path;
@@ -128,7 +140,56 @@ EnsembleSizing RunLadder(const CheckAdviceFlags& f, const Json& study) {
   Connection db(f.database_path, Connection::Mode::kReadOnly);
   CheckSchema(db);
   const std::string name = study.at("name");
-  return SizeEnsemble(CurrentMembers(ReadEnsemble(db, name)), name, f.options);
+  const auto& spec = std::get<EnsembleStudySpec>(parsed);
+  LadderRun run{SizeEnsemble(CurrentMembers(ReadEnsemble(db, name)), name, f.options),
+                spec.members,
+                spec.window_s,
+                {}};
+  for (const ClearanceState& state : spec.states) run.states.push_back(state.name);
+  return run;
+}
+
+// What an outcome names: the study, and the scene and criteria files with their digests (the
+// rest is the check's). The study's name is checked by the ladder's parser.
+AdviceCheckOutcome NamedOutcome(const Json& ensemble, const std::string& scene_file,
+                                const Json& scene_json, const std::string& criteria_file,
+                                const Json& criteria_json) {
+  AdviceCheckOutcome outcome;
+  const Json name = ensemble.value("name", Json());
+  if (name.is_string()) outcome.study = name.get<std::string>();
+  outcome.scene = scene_file;
+  outcome.scene_digest = JsonDigest(scene_json);
+  outcome.criteria = criteria_file;
+  outcome.criteria_digest = JsonDigest(criteria_json);
+  return outcome;
+}
+
+// Adds the check's outcome to the file --record names (created when absent), for `advise`:
+// only a decided check is recorded.
+void Record(const CheckAdviceFlags& f, const AdviceCheck& check, const LadderRun& run,
+            AdviceCheckOutcome outcome) {
+  if (!check.converged || check.undecided) {
+    fmt::print("  not recorded in {}: the check is {}\n", f.record,
+               check.undecided ? "undecided" : "not converged");
+    return;
+  }
+  outcome.states = run.states;
+  outcome.members = run.members;
+  outcome.window_s = run.window_s;
+  outcome.quantile = f.options.quantile;
+  outcome.tolerance = f.options.tolerance;
+  outcome.pairs = static_cast<int>(check.families.size());
+  outcome.held = static_cast<int>(std::ranges::count_if(check.families, [&](const auto& family) {
+    return AdviceHolds(check, family).value_or(false);
+  }));
+  outcome.verdict = AdviceVerdict(check, f.options.quantile);
+  std::vector<AdviceCheckOutcome> outcomes;
+  if (std::filesystem::exists(f.record))
+    outcomes = ParseAdviceCheckOutcomes(ReadJsonFile(f.record), f.record);
+  fmt::print("  outcome recorded in {}: the advice held at {} of {} pairs\n", f.record,
+             outcome.held, outcome.pairs);
+  RecordOutcome(outcomes, std::move(outcome));
+  WriteFileAtomically(f.record, AdviceCheckOutcomesJson(outcomes).dump(2) + "\n");
 }
 
 void PrintCheck(const AdviceCheck& check, const SizingOptions& options) {
@@ -149,9 +210,15 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
           .lexically_normal();
   const Json scene_json = ReadJsonFile(scene_file);
   const Scene scene = ParseScene(scene_json, scene_file, f.access);
+  const Json criteria_json = ReadJsonFile(criteria_file);
   CriteriaTolerances tolerances;
   const SceneAdvice advice =
-      AdviseScene(scene, CriteriaFromJson(ReadJsonFile(criteria_file), criteria_file, &tolerances));
+      AdviseScene(scene, CriteriaFromJson(criteria_json, criteria_file, &tolerances));
+  // A file --record names is read before the ladder runs: a bad one stops nothing computed.
+  if (!f.record.empty() && std::filesystem::exists(f.record))
+    ParseAdviceCheckOutcomes(ReadJsonFile(f.record), f.record);
+  const AdviceCheckOutcome outcome =
+      NamedOutcome(ensemble, scene_file.string(), scene_json, criteria_file, criteria_json);
   fmt::print("advice for scene {} from {}: dt = {:g} dt_sharp, R_ftrunc {}\n", scene.name,
              criteria_file, advice.dt_ratio, AdvisedTruncations(advice));
   for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);
@@ -170,11 +237,15 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
       return;
     }
     fmt::print("ladder: x {:.4g} of the advised truncations\n", fmt::join(factors, ", x "));
-    const EnsembleSizing sizing = RunLadder(f, study);
-    const AdviceCheck check = CheckAdvice(sizing, study.at("settings"), factors, kAdvisedRung);
+    const LadderRun run = RunLadder(f, study);
+    const AdviceCheck check = CheckAdvice(run.sizing, study.at("settings"), factors, kAdvisedRung);
     const bool may_refine =
         rungs < f.max_rungs && RungFits(advice, LadderFactors(rungs + 1).back());
-    if (check.converged || check.undecided || !may_refine) return PrintCheck(check, f.options);
+    if (check.converged || check.undecided || !may_refine) {
+      PrintCheck(check, f.options);
+      if (!f.record.empty()) Record(f, check, run, outcome);
+      return;
+    }
   }
 }
 
@@ -224,6 +295,10 @@ void AddCheckAdviceCommand(CLI::App& app) {
   cmd->add_option("--write-study", flags->write_study,
                   "write the ladder's study file here instead of running it (to run it under "
                   "MPI with `study run`)");
+  cmd->add_option("--record", flags->record,
+                  "add the check's outcome to this outcomes file (created when absent), which "
+                  "`advise --checks` reads for this scene and criteria")
+      ->type_name("FILE");
   cmd->add_flag("--quiet", flags->quiet, "no progress on stderr");
   AddAllowPathFlag(cmd, flags->access);
   cmd->callback([flags, criteria] {

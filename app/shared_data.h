@@ -14,6 +14,10 @@ namespace shockmap {
 // 10 % (PFr >= 0.9), the statistic a zone is sized on (docs/physics.md §5.1).
 inline constexpr const char* kSceneCriteria = "studies/baselines/modes_fig4_peak_force.json";
 
+// The recorded outcomes of `check-advice` that `advise SCENE.json` reads (formats/
+// advice_check_outcomes.h): the shipped bundles' advice checked on their ensembles.
+inline constexpr const char* kAdviceChecks = "studies/baselines/advice_checks.json";
+
 // <folder of the running binary (/proc/self/exe)>/../share/shockmap; empty when the binary's
 // location cannot be read.
 std::filesystem::path SharedDataFolder();

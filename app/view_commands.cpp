@@ -12,6 +12,7 @@
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "db/study_database.h"
+#include "formats/advice_check_outcomes.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
@@ -34,6 +35,7 @@ struct ViewFlags {
   double r_k = 0.0;
   bool json = false;
   std::string criteria = kSceneCriteria;
+  std::string checks = kAdviceChecks;
   bool every_zone = false;
   SceneFileAccess access;
 };
@@ -61,14 +63,22 @@ bool IsSceneFile(const std::string& argument) {
   return argument.ends_with(".json") && std::filesystem::is_regular_file(argument);
 }
 
-// Each zone's R_k and each beam's truncation from the criteria file (docs/ensembles.md).
-void AdviseForScene(const ViewFlags& f, const std::string& criteria_file) {
+// Each zone's R_k and each beam's truncation from the criteria file, with the outcome of its
+// check on the scene's ensemble when one is recorded for this scene and criteria
+// (docs/ensembles.md).
+void AdviseForScene(const ViewFlags& f, const std::string& criteria_file,
+                    const std::string& checks_file) {
   const Scene scene = LoadScene(f.study, f.access);
+  const nlohmann::json criteria_json = ReadJsonFile(criteria_file);
   CriteriaTolerances tolerances;
-  const ValidityCriteria criteria =
-      CriteriaFromJson(ReadJsonFile(criteria_file), criteria_file, &tolerances);
+  const ValidityCriteria criteria = CriteriaFromJson(criteria_json, criteria_file, &tolerances);
+  const std::vector<AdviceCheckOutcome> checks =
+      ParseAdviceCheckOutcomes(ReadJsonFile(checks_file), checks_file);
+  const AdviceCheckOutcome* check =
+      OutcomeFor(checks, JsonDigest(ReadJsonFile(f.study)), JsonDigest(criteria_json));
   std::cout << "criteria from " << criteria_file << '\n'
-            << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone);
+            << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone, check,
+                                  checks_file);
 }
 
 }  // namespace
@@ -148,13 +158,23 @@ void AddAdviseCommand(CLI::App& app, const Flags& flags) {
                        "(docs/physics.md §5.1), is looked up in the working folder, then in the "
                        "shared data installed with shockmap (share/shockmap)")
           ->capture_default_str();
+  CLI::Option* checks =
+      advise
+          ->add_option("--checks", flags->checks,
+                       "with a scene file for STUDY: the outcomes `check-advice --record` wrote; "
+                       "the one recorded for this scene and criteria says whether the advice "
+                       "held on the scene's ensemble (the default, the shipped bundles' checks, "
+                       "is looked up as --criteria is)")
+          ->capture_default_str();
   advise->add_flag("--zones", flags->every_zone, "with a scene file: also list every zone");
   AddAllowPathFlag(advise, flags->access);
-  advise->callback([flags, criteria] {
+  advise->callback([flags, criteria, checks] {
     if (IsSceneFile(flags->study)) {
-      return AdviseForScene(*flags, criteria->count() > 0
-                                        ? flags->criteria
-                                        : DefaultDataFile(flags->criteria, "--criteria"));
+      const std::string criteria_file =
+          criteria->count() > 0 ? flags->criteria : DefaultDataFile(flags->criteria, "--criteria");
+      const std::string checks_file =
+          checks->count() > 0 ? flags->checks : DefaultDataFile(flags->checks, "--checks");
+      return AdviseForScene(*flags, criteria_file, checks_file);
     }
     if (flags->r_k <= 0.0) {
       throw InputError(

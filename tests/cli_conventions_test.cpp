@@ -249,11 +249,26 @@ TEST_F(CliConventions, AdviseFindsItsDefaultCriteriaBesideTheBinary) {
 
   std::filesystem::create_directories(Path("prefix/share/shockmap/studies/baselines"));
   std::filesystem::copy_file(source + "/" + baseline, shared);
+  // The recorded checks of the advice are a default data file too.
+  const std::string checks = "studies/baselines/advice_checks.json";
+  const auto without_checks = advise(Path("prefix/bin/shockmap"));
+  EXPECT_EQ(without_checks.exit_code, 2) << without_checks.output;
+  EXPECT_NE(without_checks.output.find("--checks: the default file " + checks), std::string::npos)
+      << without_checks.output;
+  std::filesystem::copy_file(source + "/" + checks, Path("prefix/share/shockmap/" + checks));
   const auto found = advise(Path("prefix/bin/shockmap"));
   EXPECT_EQ(found.exit_code, 0) << found.output;
   EXPECT_EQ(found.output.rfind("criteria from " + shared + "\n", 0), 0u) << found.output;
   std::string same_advice = built.output;
   same_advice.replace(0, same_advice.find('\n'), "criteria from " + shared);
+  // The recorded check is named by where it was read.
+  const std::string built_share =
+      (std::filesystem::path(SHOCKMAP_BIN).parent_path().parent_path() / "share" / "shockmap")
+          .lexically_normal()
+          .string();
+  const std::size_t at = same_advice.find(built_share);
+  ASSERT_NE(at, std::string::npos) << same_advice;
+  same_advice.replace(at, built_share.size(), Path("prefix/share/shockmap"));
   EXPECT_EQ(found.output, same_advice);
 
   // Given, the same relative path is read from the working folder only.

@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -87,6 +90,33 @@ TEST(CompareCommand, FullFeSchemePrintsItsModelNotModes) {
   ASSERT_EQ(full.exit_code, 0) << full.output;
   EXPECT_EQ(full.output.find("modes kept"), std::string::npos) << full.output;
   EXPECT_NE(full.output.find("the full FE model"), std::string::npos) << full.output;
+}
+
+// `advise` on a shipped bundle reads the outcome of its check on the bundle's ensemble
+// (studies/baselines/advice_checks.json) and warns of nothing; the same bundle with its wires
+// 1 % stiffer has no recorded check, and what one beam did not measure is a warning again.
+TEST(AdviseCommand, TheShippedBundleIsCheckedAndAnEditedOneIsNot) {
+  const std::string scene = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json";
+  const Outcome shipped = RunShockmap("advise " + scene);
+  EXPECT_EQ(shipped.exit_code, 0) << shipped.output;
+  EXPECT_EQ(shipped.output.find("warning"), std::string::npos) << shipped.output;
+  EXPECT_NE(shipped.output.find("checked      on the scene's ensemble: the advice held"),
+            std::string::npos)
+      << shipped.output;
+
+  nlohmann::json edited = nlohmann::json::parse(shockmap::testing::ReadBytes(scene));
+  edited["bundle"]["wire"]["stiffness_n_per_m"] = 1.01e6;
+  const std::string copy = (std::filesystem::temp_directory_path() /
+                            ("shockmap_edited_row_" + std::to_string(getpid()) + ".json"))
+                               .string();
+  shockmap::testing::WriteText(copy, edited.dump(2));
+  const Outcome changed = RunShockmap("advise " + copy);
+  std::filesystem::remove(copy);
+  EXPECT_EQ(changed.exit_code, 0) << changed.output;
+  EXPECT_NE(changed.output.find("warning      no studied truncation passes"), std::string::npos)
+      << changed.output;
+  EXPECT_NE(changed.output.find("check-advice STUDY.json --record FILE"), std::string::npos)
+      << changed.output;
 }
 
 TEST(CompareCommand, HelpExitsZero) {

@@ -8,13 +8,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/input_error.h"
+#include "formats/advice_check_outcomes.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
 #include "views/criteria_report.h"
+#include "views/scene_advice_summary.h"
 
 namespace shockmap {
 namespace {
@@ -121,7 +125,11 @@ TEST(SceneAdvice, AStudiedRkWithoutAPassingTruncationAroundTheZonesIsNamed) {
       std::string::npos)
       << a.warnings[0];
   // With what answers it on the structure itself.
-  EXPECT_NE(a.warnings[0].find("shockmap check-advice"), std::string::npos) << a.warnings[0];
+  const std::string summary = SceneAdviceSummary(ShippedScene("bundle_row"), a, false);
+  EXPECT_NE(summary.find("warning      no studied truncation passes"), std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("shockmap check-advice STUDY.json --record FILE"), std::string::npos)
+      << summary;
   // Far from the zones' R_k (the Fig. 3 scene's one zone at 3000), a hole at R_k = 1 is not.
   ValidityCriteria far = ShippedCriteria();
   auto one = std::ranges::find(far.boundary, 1.0, &RkBoundary::r_k);
@@ -143,6 +151,154 @@ TEST(SceneAdvice, AnUnscoredRkIsNamedOnlyAroundTheZones) {
   ASSERT_EQ(a.warnings.size(), 1u);
   EXPECT_NE(a.warnings[0].find("left 3 points unscored, at R_k = 1e+06"), std::string::npos)
       << a.warnings[0];
+}
+
+std::string Shipped(const std::string& relative) {
+  return std::string(SHOCKMAP_SOURCE_DIR) + "/" + relative;
+}
+
+AdviceCheckOutcome AnOutcome() {
+  AdviceCheckOutcome o;
+  o.study = "bundle_row_ensemble";
+  o.scene = "scenes/bundle_row.json";
+  o.scene_digest = JsonDigest(ReadJsonFile(Shipped(o.scene)));
+  o.criteria = "studies/baselines/modes_fig4_peak_force.json";
+  o.criteria_digest = JsonDigest(ReadJsonFile(Shipped(o.criteria)));
+  o.states = {"new", "end_of_life"};
+  o.members = 120;
+  o.window_s = 0.1;
+  o.quantile = 0.95;
+  o.tolerance = 0.05;
+  o.pairs = 6;
+  o.held = 6;
+  o.verdict = "Advice held at 6 of 6 state and zone family pairs.";
+  return o;
+}
+
+// A digest names a file's JSON, not its spelling: spacing and the order of keys leave it, any
+// value changed moves it.
+TEST(AdviceCheckOutcomes, ADigestFollowsTheJsonNotItsSpelling) {
+  const auto a = ParseJsonText(R"({"k": 1.5, "name": "row", "z": [1, 2]})", "a.json");
+  const auto b = ParseJsonText("{\"z\":[1,2],\n \"name\":\"row\",\"k\":1.5}", "b.json");
+  const auto c = ParseJsonText(R"({"k": 1.6, "name": "row", "z": [1, 2]})", "c.json");
+  EXPECT_EQ(JsonDigest(a), JsonDigest(b));
+  EXPECT_NE(JsonDigest(a), JsonDigest(c));
+  EXPECT_EQ(JsonDigest(a).size(), std::string("fnv1a64:").size() + 16);
+}
+
+// Written and read back, an outcome keeps every field; recording the same study, scene and
+// criteria again replaces it, another study is added; the one found for a scene and criteria
+// is a held one when any is, and none for another scene.
+TEST(AdviceCheckOutcomes, RecordedOutcomesReadBackAndTheHeldOneIsFound) {
+  std::vector<AdviceCheckOutcome> outcomes;
+  AdviceCheckOutcome failed = AnOutcome();
+  failed.held = 4;
+  RecordOutcome(outcomes, failed);
+  AdviceCheckOutcome other = AnOutcome();
+  other.study = "row_again";
+  RecordOutcome(outcomes, other);
+  ASSERT_EQ(outcomes.size(), 2u);
+  const AdviceCheckOutcome o = AnOutcome();
+  ASSERT_EQ(OutcomeFor(outcomes, o.scene_digest, o.criteria_digest), &outcomes[1]);
+  RecordOutcome(outcomes, o);  // Replaces the failed one.
+  ASSERT_EQ(outcomes.size(), 2u);
+  EXPECT_EQ(OutcomeFor(outcomes, o.scene_digest, o.criteria_digest), &outcomes[0]);
+  EXPECT_EQ(OutcomeFor(outcomes, "fnv1a64:0000000000000000", o.criteria_digest), nullptr);
+
+  const auto back = ParseAdviceCheckOutcomes(
+      ParseJsonText(AdviceCheckOutcomesJson(outcomes).dump(2), "checks.json"), "checks.json");
+  ASSERT_EQ(back.size(), 2u);
+  const AdviceCheckOutcome& r = back[0];
+  EXPECT_EQ(r, o);  // Every field.
+  EXPECT_TRUE(r.Held());
+  EXPECT_FALSE(failed.Held());
+}
+
+// A bad outcomes file is refused naming the file, the key and what is allowed.
+TEST(AdviceCheckOutcomes, ABadFileIsRefusedNamingTheKey) {
+  const auto refused = [](const std::function<void(nlohmann::json&)>& spoil) {
+    nlohmann::json j = AdviceCheckOutcomesJson({AnOutcome()});
+    spoil(j);
+    try {
+      ParseAdviceCheckOutcomes(j, "checks.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(refused([](auto& j) { j["kind"] = "criteria"; }).find("checks.json: kind"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) {
+              j["outcomes"][0]["held"] = 7;
+            }).find("outcomes[0].held: 7 does not lie in [0, pairs = 6]"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) { j["outcomes"][0]["quantile"] = 1; }).find("outcomes[0].quantile"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) {
+              j["outcomes"][0].erase("scene_digest");
+            }).find("outcomes[0].scene_digest: required string is missing"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) {
+              j["outcomes"][0]["states"] = nlohmann::json::array();
+            }).find("outcomes[0].states"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) {
+              j["outcomes"][0]["extra"] = 1;
+            }).find("outcomes[0].extra: unknown key"),
+            std::string::npos);
+  EXPECT_NE(refused([](auto& j) { j["outcomes"] = 3; }).find("checks.json: outcomes"),
+            std::string::npos);
+}
+
+// Where the advice held on the scene's ensemble, what one beam did not measure is listed as
+// such and nothing is a warning; where it failed, it stays a warning with the check's verdict;
+// without a check, the warning names the check that would answer it.
+TEST(SceneAdvice, AnEnsembleThatHeldTheAdviceAnswersWhatOneBeamDidNotMeasure) {
+  ValidityCriteria criteria = ShippedCriteria();
+  for (RkBoundary& b : criteria.boundary) {
+    if (b.r_k >= 3e5 && b.r_k <= 1e6) b.r_ftrunc_min.reset();
+  }
+  const Scene scene = ShippedScene("bundle_row");
+  const SceneAdvice a = AdviseScene(scene, criteria);
+  ASSERT_FALSE(a.warnings.empty());
+  const AdviceCheckOutcome held = AnOutcome();
+  const std::string checked = SceneAdviceSummary(scene, a, false, &held, "checks.json");
+  EXPECT_EQ(checked.find("warning"), std::string::npos) << checked;
+  EXPECT_NE(checked.find("checked      on the scene's ensemble: the advice held at 6 of 6"),
+            std::string::npos)
+      << checked;
+  EXPECT_NE(checked.find("P95 of 120 members per state and rung (states new, end_of_life) over "
+                         "the first 0.1 s, tolerance 5 %; recorded in checks.json"),
+            std::string::npos)
+      << checked;
+  EXPECT_NE(checked.find("one beam     " + a.warnings[0]), std::string::npos) << checked;
+
+  AdviceCheckOutcome failed = held;
+  failed.held = 4;
+  const std::string warned = SceneAdviceSummary(scene, a, false, &failed, "checks.json");
+  EXPECT_NE(warned.find("warning      on the scene's ensemble the advice held at only 4 of 6"),
+            std::string::npos)
+      << warned;
+  EXPECT_NE(warned.find("warning      " + a.warnings[0]), std::string::npos) << warned;
+  EXPECT_EQ(warned.find("one beam"), std::string::npos) << warned;
+}
+
+// The shipped outcomes hold the advice for the shipped bundles with the shipped scene criteria,
+// and name those files as they are now: editing a bundle or the criteria without checking the
+// advice again fails here.
+TEST(SceneAdvice, TheShippedBundlesAdviceIsCheckedOnTheirEnsembles) {
+  const std::string file = Shipped("studies/baselines/advice_checks.json");
+  const auto outcomes = ParseAdviceCheckOutcomes(ReadJsonFile(file), file);
+  const std::string criteria =
+      JsonDigest(ReadJsonFile(Shipped("studies/baselines/modes_fig4_peak_force.json")));
+  for (const char* scene :
+       {"scenes/bundle_row.json", "scenes/bundle_hex_7.json", "scenes/bundle_hex.json"}) {
+    const AdviceCheckOutcome* o =
+        OutcomeFor(outcomes, JsonDigest(ReadJsonFile(Shipped(scene))), criteria);
+    ASSERT_NE(o, nullptr) << scene << ": no outcome for the shipped scene and criteria";
+    EXPECT_TRUE(o->Held()) << scene << ": " << o->verdict;
+    EXPECT_EQ(o->scene, scene);
+  }
 }
 
 }  // namespace

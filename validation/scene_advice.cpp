@@ -43,8 +43,7 @@ std::optional<std::string> UnpassedWarning(const ValidityCriteria& criteria, dou
   return fmt::format(
       "no studied truncation passes at R_k = {:.3g}, among the studied R_k around the zones' "
       "[{:.3g}, {:.3g}]: the fit's envelope does not cover it, so the truncation advised near it "
-      "is not a measured boundary; study larger truncations there, or check the advice on an "
-      "ensemble of the scene (shockmap check-advice STUDY.json, docs/ensembles.md)",
+      "is not a measured boundary; study larger truncations there",
       fmt::join(unpassed, ", "), r_k_min, r_k_max);
 }
 

@@ -40,8 +40,10 @@ struct SceneAdvice {
   double dt_sharp_s = 0.0;        // Of the scene at the advised truncations.
   double dt_s = 0.0;
   double scene_dt_s = 0.0;  // What the scene asks for, resolved.
-  // R_k outside the criteria's studied range; R_k the criteria's study left unscored and
-  // studied R_k where no truncation passes, each among the studied R_k around the zones'.
+  // Where the advice is not a measured single-beam boundary: R_k outside the criteria's
+  // studied range; R_k the criteria's study left unscored and studied R_k where no truncation
+  // passes, each among the studied R_k around the zones'. An ensemble of the scene that held the
+  // advice answers them (formats/advice_check_outcomes.h).
   std::vector<std::string> warnings;
 };
 

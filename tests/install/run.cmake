@@ -35,6 +35,11 @@ step(${prefix}/bin/shockmap --version)
 step(${prefix}/bin/shockmap advise ${prefix}/share/shockmap/scenes/bundle_hex_7.json)
 expect("^criteria from ${prefix}/share/shockmap/studies/baselines/modes_fig4_peak_force.json\n.*R_k"
        "advise with the default criteria")
+# The installed bundle's advice with its check on the bundle's ensemble, from the installed
+# outcomes.
+step(${prefix}/bin/shockmap advise ${prefix}/share/shockmap/scenes/bundle_row.json)
+expect("checked      on the scene's ensemble: the advice held.*recorded in ${prefix}/share/shockmap/studies/baselines/advice_checks.json"
+       "advise with the default checks")
 file(GLOB leftovers ${WORK_DIR}/empty/*)
 if(leftovers)
   message(FATAL_ERROR "advise wrote into the working folder: ${leftovers}")
