@@ -152,13 +152,13 @@ LadderRun RunLadder(const CheckAdviceFlags& f, const Json& study) {
 // What an outcome names: the study, and the scene and criteria files with their digests (the
 // rest is the check's). The study's name is checked by the ladder's parser.
 AdviceCheckOutcome NamedOutcome(const Json& ensemble, const std::string& scene_file,
-                                const Json& scene_json, const std::string& criteria_file,
+                                const std::string& scene_digest, const std::string& criteria_file,
                                 const Json& criteria_json) {
   AdviceCheckOutcome outcome;
   const Json name = ensemble.value("name", Json());
   if (name.is_string()) outcome.study = name.get<std::string>();
   outcome.scene = scene_file;
-  outcome.scene_digest = JsonDigest(scene_json);
+  outcome.scene_digest = scene_digest;
   outcome.criteria = criteria_file;
   outcome.criteria_digest = JsonDigest(criteria_json);
   return outcome;
@@ -217,8 +217,8 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
   // A file --record names is read before the ladder runs: a bad one stops nothing computed.
   if (!f.record.empty() && std::filesystem::exists(f.record))
     ParseAdviceCheckOutcomes(ReadJsonFile(f.record), f.record);
-  const AdviceCheckOutcome outcome =
-      NamedOutcome(ensemble, scene_file.string(), scene_json, criteria_file, criteria_json);
+  const AdviceCheckOutcome outcome = NamedOutcome(
+      ensemble, scene_file.string(), SceneDigest(scene_json, scene), criteria_file, criteria_json);
   fmt::print("advice for scene {} from {}: dt = {:g} dt_sharp, R_ftrunc {}\n", scene.name,
              criteria_file, advice.dt_ratio, AdvisedTruncations(advice));
   for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);

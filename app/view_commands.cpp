@@ -75,7 +75,7 @@ void AdviseForScene(const ViewFlags& f, const std::string& criteria_file,
   const std::vector<AdviceCheckOutcome> checks =
       ParseAdviceCheckOutcomes(ReadJsonFile(checks_file), checks_file);
   const AdviceCheckOutcome* check =
-      OutcomeFor(checks, JsonDigest(ReadJsonFile(f.study)), JsonDigest(criteria_json));
+      OutcomeFor(checks, SceneDigest(ReadJsonFile(f.study), scene), JsonDigest(criteria_json));
   std::cout << "criteria from " << criteria_file << '\n'
             << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone, check,
                                   checks_file);

@@ -83,6 +83,14 @@ std::string JsonDigest(const Json& json) {
   return fmt::format("fnv1a64:{:016x}", Fnv1a64(text));
 }
 
+std::string SceneDigest(const Json& scene_json, const Scene& scene) {
+  if (!scene.base_motion || scene.base_motion->table_t_s.empty()) return JsonDigest(scene_json);
+  return JsonDigest(
+      {{"scene", scene_json},
+       {"base_motion_table",
+        {{"t_s", scene.base_motion->table_t_s}, {"a_m_s2", scene.base_motion->table_a_m_s2}}}});
+}
+
 std::vector<AdviceCheckOutcome> ParseAdviceCheckOutcomes(const Json& json,
                                                          const std::string& file) {
   JsonObjectReader r(json, file, "");

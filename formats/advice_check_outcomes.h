@@ -13,16 +13,22 @@
 #include <string>
 #include <vector>
 
+#include "core/scene.h"
+
 namespace shockmap {
 
 // "fnv1a64:" and 16 hexadecimal digits: FNV-1a of the JSON's compact text with its keys sorted,
 // so that neither spacing nor the order of keys in the file changes it.
 std::string JsonDigest(const nlohmann::json& json);
+// A scene's: JsonDigest of its file's JSON, `scene_json`; with a base motion read from a table
+// file, of that JSON together with the table's samples (`scene`, the scene it parses to), so
+// that an edit of the table changes it too.
+std::string SceneDigest(const nlohmann::json& scene_json, const Scene& scene);
 
 struct AdviceCheckOutcome {
   std::string study;            // The ensemble study's name.
   std::string scene;            // The scene file, as check-advice read it.
-  std::string scene_digest;     // JsonDigest of the scene file's JSON.
+  std::string scene_digest;     // SceneDigest of the scene.
   std::string criteria;         // The criteria file.
   std::string criteria_digest;  // JsonDigest of the criteria file's JSON.
   std::vector<std::string> states;

@@ -186,6 +186,24 @@ TEST(AdviceCheckOutcomes, ADigestFollowsTheJsonNotItsSpelling) {
   EXPECT_EQ(JsonDigest(a).size(), std::string("fnv1a64:").size() + 16);
 }
 
+// A scene's digest is its JSON's, and with a base motion from a table file it also follows the
+// table's samples, which the scene's JSON only names.
+TEST(AdviceCheckOutcomes, ASceneDigestFollowsItsAccelerationTable) {
+  const auto json =
+      ParseJsonText(R"({"name": "s", "effects": {"base_motion": {"csv": "a.csv"}}})", "s.json");
+  Scene half_sine;
+  half_sine.base_motion = BaseMotionEffect{};
+  EXPECT_EQ(SceneDigest(json, half_sine), JsonDigest(json));
+  Scene table = half_sine;
+  table.base_motion->table_t_s = {0.0, 0.01, 0.02};
+  table.base_motion->table_a_m_s2 = {0.0, 98.1, 0.0};
+  Scene edited = table;
+  edited.base_motion->table_a_m_s2[1] = 98.2;
+  EXPECT_NE(SceneDigest(json, table), JsonDigest(json));
+  EXPECT_NE(SceneDigest(json, table), SceneDigest(json, edited));
+  EXPECT_EQ(SceneDigest(json, table), SceneDigest(json, Scene(table)));
+}
+
 // Written and read back, an outcome keeps every field; recording the same study, scene and
 // criteria again replaces it, another study is added; the one found for a scene and criteria
 // is a held one when any is, and none for another scene.
@@ -293,8 +311,8 @@ TEST(SceneAdvice, TheShippedBundlesAdviceIsCheckedOnTheirEnsembles) {
       JsonDigest(ReadJsonFile(Shipped("studies/baselines/modes_fig4_peak_force.json")));
   for (const char* scene :
        {"scenes/bundle_row.json", "scenes/bundle_hex_7.json", "scenes/bundle_hex.json"}) {
-    const AdviceCheckOutcome* o =
-        OutcomeFor(outcomes, JsonDigest(ReadJsonFile(Shipped(scene))), criteria);
+    const AdviceCheckOutcome* o = OutcomeFor(
+        outcomes, SceneDigest(ReadJsonFile(Shipped(scene)), LoadScene(Shipped(scene))), criteria);
     ASSERT_NE(o, nullptr) << scene << ": no outcome for the shipped scene and criteria";
     EXPECT_TRUE(o->Held()) << scene << ": " << o->verdict;
     EXPECT_EQ(o->scene, scene);
