@@ -142,10 +142,10 @@ def test_set_refuses_a_bad_path_or_value_naming_it(source_dir):
 
 
 def concurrency_scene(source_dir):
-    """The planar bundle over a simulated time that takes a few tenths of a second."""
+    """The planar bundle over a simulated time that takes about half a second."""
     path = source_dir / "scenes" / "bundle_row.json"
     spec = json.loads(path.read_text())
-    spec["solver"]["end_time_s"] = 1.5
+    spec["solver"]["end_time_s"] = 3.0
     return shockmap.Scene.from_dict(spec, path=str(path))
 
 
