@@ -14,12 +14,19 @@ namespace {
 // How long a writer waits for another writer's lock before giving up.
 constexpr int kBusyTimeout_ms = 10000;
 
-// SQLite's message, with what "busy" means for the user.
+// SQLite's message, with what "busy" and a journal left by a killed writer mean for the user.
 std::string Describe(sqlite3* db) {
   std::string message = sqlite3_errmsg(db);
   if ((sqlite3_extended_errcode(db) & 0xff) == SQLITE_BUSY) {
     message += " by another writer (waited " + std::to_string(kBusyTimeout_ms / 1000) +
                " s); nothing was written, run again once it is done";
+  }
+  if (sqlite3_extended_errcode(db) == SQLITE_READONLY_ROLLBACK) {
+    message +=
+        ": a run was killed while it wrote this file (as when it created the database) and left "
+        "its rollback journal, which a reader cannot roll back; a command that writes the "
+        "database (`shockmap study run STUDY_FILE --db` this file) rolls it back, losing "
+        "nothing committed";
   }
   return message;
 }

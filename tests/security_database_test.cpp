@@ -104,6 +104,28 @@ const std::vector<std::string> kCanonicalReaders = {"query 'SELECT count(*) FROM
                                                     "export reference --rk 10 --out ref.csv",
                                                     "advise --rk 1000"};
 
+// A run killed while it created its database can leave the rollback journal of its schema's
+// transaction beside the file (tests/data/killed_while_created.db: `study run` killed by
+// SIGKILL 3 ms in). A reader cannot roll it back: it is refused, unchanged, with what to do; a
+// run rolls it back and completes its study into the file.
+TEST_F(DatabaseCorruption, AJournalLeftByAKilledRunIsNamedByReadersAndRolledBackByARun) {
+  const std::string fixture =
+      std::string(SHOCKMAP_SOURCE_DIR) + "/tests/data/killed_while_created.db";
+  std::filesystem::copy_file(fixture, db());
+  std::filesystem::copy_file(fixture + "-journal", db() + "-journal");
+  const std::string journal = ReadBytes(db() + "-journal");
+  for (const char* reader : {"study status", "criteria derive", "report --out report"}) {
+    ExpectRefused(reader,
+                  "a run was killed while it wrote this file (as when it created the database) "
+                  "and left its rollback journal, which a reader cannot roll back");
+    EXPECT_EQ(ReadBytes(db() + "-journal"), journal) << reader;
+  }
+  Canonical();
+  EXPECT_FALSE(std::filesystem::exists(db() + "-journal"));
+  EXPECT_EQ(testing::Rows(db(), "SELECT count(*) FROM points WHERE status = 'ok'"),
+            std::vector<std::string>{"4"});
+}
+
 TEST_F(DatabaseCorruption, NegativeSchemaVersionIsRefusedByTheWriterAndEveryReader) {
   Canonical();
   for (const char* version : {"-1", "-2147483648"}) {
