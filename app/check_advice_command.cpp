@@ -183,6 +183,7 @@ void Record(const CheckAdviceFlags& f, const AdviceCheck& check, const LadderRun
     return AdviceHolds(check, family).value_or(false);
   }));
   outcome.verdict = AdviceVerdict(check, f.options.quantile);
+  // Read again: another check may have recorded its outcome while this ladder ran.
   std::vector<AdviceCheckOutcome> outcomes;
   if (std::filesystem::exists(f.record))
     outcomes = ParseAdviceCheckOutcomes(ReadJsonFile(f.record), f.record);

@@ -68,14 +68,15 @@ bool IsSceneFile(const std::string& argument) {
 // (docs/ensembles.md).
 void AdviseForScene(const ViewFlags& f, const std::string& criteria_file,
                     const std::string& checks_file) {
-  const Scene scene = LoadScene(f.study, f.access);
+  const nlohmann::json scene_json = ReadJsonFile(f.study);
+  const Scene scene = ParseScene(scene_json, f.study, f.access);
   const nlohmann::json criteria_json = ReadJsonFile(criteria_file);
   CriteriaTolerances tolerances;
   const ValidityCriteria criteria = CriteriaFromJson(criteria_json, criteria_file, &tolerances);
   const std::vector<AdviceCheckOutcome> checks =
       ParseAdviceCheckOutcomes(ReadJsonFile(checks_file), checks_file);
   const AdviceCheckOutcome* check =
-      OutcomeFor(checks, SceneDigest(ReadJsonFile(f.study), scene), JsonDigest(criteria_json));
+      OutcomeFor(checks, SceneDigest(scene_json, scene), JsonDigest(criteria_json));
   std::cout << "criteria from " << criteria_file << '\n'
             << SceneAdviceSummary(scene, AdviseScene(scene, criteria), f.every_zone, check,
                                   checks_file);
