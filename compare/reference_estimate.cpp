@@ -43,8 +43,12 @@ double OutputGridStep(const ReferenceSolution& solution, double window_s) {
 
 void ResampleLevel(ReferenceLevel& level, double window_s, const ShockSegmentationOptions& shocks,
                    double dt_s) {
-  const double dt = dt_s > 0.0 ? dt_s : OutputGridStep(level.solution, window_s);
-  level.histories = level.solution.SampleHistories(dt, window_s);
+  if (dt_s > 0.0) {  // A check: its tip alone.
+    level.histories = {level.solution.SampleTipDisplacement(dt_s, window_s), {}};
+  } else {
+    level.histories =
+        level.solution.SampleHistories(OutputGridStep(level.solution, window_s), window_s);
+  }
   level.shocks = ReferenceShocks(level.solution, level.histories.force_n, shocks, window_s);
 }
 

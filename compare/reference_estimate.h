@@ -14,7 +14,10 @@
 namespace shockmap {
 
 // One truncation solved over [0, window]: its histories on the grid of the reference being
-// estimated (its own output grid when it is that reference) and its shocks (ReferenceShocks).
+// estimated and its shocks (ReferenceShocks). The reference itself, on its own output grid,
+// has its tip and force and its shocks' peaks; a check, on the reference's grid, has its tip
+// alone (force_n empty) and its shocks' impulses, each peak then the force at the middle of
+// the shock's first contact (its memory and time go to what the estimate reads).
 struct ReferenceLevel {
   double r_fref = 0.0;
   ReferenceSolution solution;
@@ -26,13 +29,14 @@ struct ReferenceLevel {
 // sample falls on the window's end.
 double OutputGridStep(const ReferenceSolution& solution, double window_s);
 
-// Solves truncation r_fref over [0, window_s] and samples it every dt_s (0: on its own output
-// grid).
+// Solves truncation r_fref over [0, window_s] and samples it every dt_s as a check, or
+// (dt_s = 0) on its own output grid as the reference.
 ReferenceLevel SolveReferenceLevel(const CantileverImpact& problem, const ReferenceOptions& options,
                                    double r_fref, double window_s,
                                    const ShockSegmentationOptions& shocks, double dt_s = 0.0);
 
-// Samples `level` again every dt_s (0: on its own output grid).
+// Samples `level` again every dt_s as a check, or (dt_s = 0) on its own output grid as the
+// reference.
 void ResampleLevel(ReferenceLevel& level, double window_s, const ShockSegmentationOptions& shocks,
                    double dt_s = 0.0);
 

@@ -15,8 +15,8 @@
 namespace shockmap {
 
 // The shocks of `solution` over [0, window_s]; each peak is the largest sample of `force` (the
-// solution's force on any grid) within the shock, or the force at the middle of its first
-// contact when no sample falls inside. Preconditions: options.IsValid(),
+// solution's force on any grid, or none) within the shock, or the force at the middle of its
+// first contact when no sample falls inside. Preconditions: options.IsValid(),
 // options.force_threshold_n == 0 (contact means a positive force), window_s within the
 // solution.
 std::vector<Shock> ReferenceShocks(const ReferenceSolution& solution, const UniformSignal& force,

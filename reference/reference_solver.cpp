@@ -161,8 +161,9 @@ void ReferenceSolution::Sample(double dt_s, double end_s, UniformSignal& tip,
     const Configuration& c = ConfigurationOf(p);
     RotatingModalSum& sum = p.in_contact ? contact_sum : free_sum;
     sum.Start(c.tip.cwiseProduct(p.a), c.tip.cwiseProduct(p.b), tip.TimeAt(i) - p.start_s);
+    sum.NextInto(tip.values.data() + i, static_cast<long>(end - i));
     for (; i < end; ++i) {
-      const double u = c.tip_offset_m + sum.Next();
+      const double u = c.tip_offset_m + tip.values[i];
       tip.values[i] = u;
       if (force != nullptr && p.in_contact) {
         force->values[i] = std::max(0.0, stiffness_n_per_m_ * (gap_m_ - u));

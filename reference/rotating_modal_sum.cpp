@@ -1,6 +1,7 @@
 #include "reference/rotating_modal_sum.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace shockmap {
 namespace {
@@ -32,6 +33,42 @@ __attribute__((target_clones("avx2", "default"))) double SumThenRotate(
   return (lane_sum[0] + lane_sum[1]) + (lane_sum[2] + lane_sum[3]);
 }
 
+// kLanes doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic, two
+// SSE2 instructions where the target has no 256-bit register).
+using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
+
+[[gnu::always_inline]] inline Lanes Load(const double* p) {
+  Lanes r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+
+[[gnu::always_inline]] inline void Store(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
+
+// SumThenRotate of two walks on the same rotations, side by side: each walk's sum and rotation
+// are SumThenRotate's operations in the same order, lane by lane, so each result is equal bit
+// for bit; two independent chains of additions instead of one (a single walk waits on its own
+// sum's latency).
+__attribute__((target_clones("avx2", "default"))) void SumThenRotateTwo(
+    double* __restrict re_a, double* __restrict im_a, double* __restrict re_b,
+    double* __restrict im_b, const double* __restrict rotation_re,
+    const double* __restrict rotation_im, Eigen::Index n, double& sum_a, double& sum_b) {
+  Lanes lanes_a{}, lanes_b{};
+  for (Eigen::Index i = 0; i < n; i += kLanes) {
+    const Lanes rr = Load(rotation_re + i), ri = Load(rotation_im + i);
+    const Lanes a = Load(re_a + i), b = Load(im_a + i);
+    lanes_a += a;
+    Store(re_a + i, a * rr - b * ri);
+    Store(im_a + i, a * ri + b * rr);
+    const Lanes c = Load(re_b + i), d = Load(im_b + i);
+    lanes_b += c;
+    Store(re_b + i, c * rr - d * ri);
+    Store(im_b + i, c * ri + d * rr);
+  }
+  sum_a = (lanes_a[0] + lanes_a[1]) + (lanes_a[2] + lanes_a[3]);
+  sum_b = (lanes_b[0] + lanes_b[1]) + (lanes_b[2] + lanes_b[3]);
+}
+
 }  // namespace
 
 RotatingModalSum::RotatingModalSum(const Eigen::VectorXd& omega_rad_s, double decay_per_s,
@@ -51,16 +88,18 @@ void RotatingModalSum::Start(const Eigen::VectorXd& cos_weight, const Eigen::Vec
   Anchor();
 }
 
-void RotatingModalSum::Anchor() {
-  const double tau = tau0_s_ + static_cast<double>(k_) * step_s_;
+void RotatingModalSum::Anchor() { AnchorAt(k_, z_re_, z_im_); }
+
+void RotatingModalSum::AnchorAt(long k, Eigen::ArrayXd& re, Eigen::ArrayXd& im) const {
+  const double tau = tau0_s_ + static_cast<double>(k) * step_s_;
   const double decay = std::exp(-decay_per_s_ * tau);
-  z_re_.resize(omega_.size());
-  z_im_.resize(omega_.size());
+  re.resize(omega_.size());
+  im.resize(omega_.size());
   for (Eigen::Index i = 0; i < omega_.size(); ++i) {
     const double w = omega_[i] * tau;
     const double c = std::cos(w), s = std::sin(w);  // One sincos.
-    z_re_[i] = decay * (weight_re_[i] * c - weight_im_[i] * s);
-    z_im_[i] = decay * (weight_re_[i] * s + weight_im_[i] * c);
+    re[i] = decay * (weight_re_[i] * c - weight_im_[i] * s);
+    im[i] = decay * (weight_re_[i] * s + weight_im_[i] * c);
   }
 }
 
@@ -74,6 +113,24 @@ double RotatingModalSum::Next() {
                                  rotation_im_.data(), z_re_.size());
   if (++k_ % kAnchorEvery == 0) Anchor();
   return u;
+}
+
+void RotatingModalSum::NextInto(double* out, long count) {
+  // Singly up to the next anchor, then pairs of anchored blocks side by side: the walk reaches
+  // a block's first sample as AnchorAt sets it, so a block needs nothing of the one before.
+  long done = 0;
+  for (; done < count && k_ % kAnchorEvery != 0; ++done) out[done] = Next();
+  for (; count - done >= 2 * kAnchorEvery; done += 2 * kAnchorEvery) {
+    AnchorAt(k_ + kAnchorEvery, second_re_, second_im_);
+    for (long j = 0; j < kAnchorEvery; ++j) {
+      SumThenRotateTwo(z_re_.data(), z_im_.data(), second_re_.data(), second_im_.data(),
+                       rotation_re_.data(), rotation_im_.data(), z_re_.size(), out[done + j],
+                       out[done + kAnchorEvery + j]);
+    }
+    k_ += 2 * kAnchorEvery;
+    Anchor();
+  }
+  for (; done < count; ++done) out[done] = Next();
 }
 
 }  // namespace shockmap

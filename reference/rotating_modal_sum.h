@@ -29,18 +29,25 @@ class RotatingModalSum {
   // u at the current sample; then moves to the next one.
   double Next();
 
+  // Fills out[0 .. count) as `count` calls of Next() would, equal bit for bit, walking two
+  // anchored blocks of kAnchorEvery samples side by side (two chains of additions, not one).
+  void NextInto(double* out, long count);
+
   // Moves `samples` (>= 0) samples on without summing them: the next Next() returns u at the
   // sample that many further, set from exact trigonometry (one sine and cosine per mode).
   void Skip(long samples);
 
  private:
   void Anchor();
+  // z at sample k from exact trigonometry, into (re, im).
+  void AnchorAt(long k, Eigen::ArrayXd& re, Eigen::ArrayXd& im) const;
 
   // Every array holds the modes, then zeros up to a multiple of four (kLanes).
   Eigen::ArrayXd omega_, rotation_re_, rotation_im_;
   double decay_per_s_ = 0.0, step_s_ = 0.0;
   Eigen::ArrayXd weight_re_, weight_im_;  // c_i - j s_i
   Eigen::ArrayXd z_re_, z_im_;
+  Eigen::ArrayXd second_re_, second_im_;  // NextInto's second block.
   double tau0_s_ = 0.0;
   long k_ = 0;
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "reference/reference_solver.h"
 #include "reference/rotating_modal_sum.h"
@@ -57,6 +58,38 @@ TEST(RotatingModalSum, SkippedSamplesLandOnTheGrid) {
       const double exact =
           std::exp(-decay * tau) * (c.array() * w.cos() + s.array() * w.sin()).sum();
       EXPECT_NEAR(sum.Next(), exact, 1e-13) << "sample " << k;
+    }
+  }
+}
+
+// NextInto is Next() called `count` times, bit for bit, whatever the walk's position in its
+// anchor interval (after a skip or not) and whatever the count: shorter than an interval, one
+// pair of intervals side by side, several pairs and a tail. The walk then goes on alike.
+TEST(RotatingModalSum, FillingARangeEqualsSamplingOneByOneBitForBit) {
+  const int n = 23;  // Not a multiple of the four lanes.
+  Eigen::VectorXd omega(n), c(n), s(n);
+  for (int i = 0; i < n; ++i) {
+    omega[i] = 50.0 * std::pow(10.0, 4.0 * i / (n - 1)) * (1.0 + 0.05 * std::cos(i));
+    c[i] = std::sin(2.0 * i + 1.0) / (1 + i);
+    s[i] = std::cos(7.0 * i) / (2 + i);
+  }
+  const long anchor = RotatingModalSum::kAnchorEvery;
+  for (const long skip : {0L, 1L, anchor - 3, anchor}) {
+    for (const long count : {0L, 5L, anchor, 2 * anchor, 2 * anchor + 7, 5 * anchor + 300}) {
+      RotatingModalSum one_by_one(omega, 2.5, 3e-7), filled(omega, 2.5, 3e-7);
+      one_by_one.Start(c, s, 1.7e-3);
+      filled.Start(c, s, 1.7e-3);
+      one_by_one.Skip(skip);
+      filled.Skip(skip);
+      std::vector<double> out(static_cast<std::size_t>(count) + 3);
+      filled.NextInto(out.data(), count);
+      for (std::size_t k = static_cast<std::size_t>(count); k < out.size(); ++k) {
+        out[k] = filled.Next();
+      }
+      for (std::size_t k = 0; k < out.size(); ++k) {
+        ASSERT_EQ(out[k], one_by_one.Next())
+            << "skip " << skip << ", count " << count << ", sample " << k;
+      }
     }
   }
 }
