@@ -1,7 +1,6 @@
 #include "reference/rotating_modal_sum.h"
 
 #include <cmath>
-#include <cstring>
 
 namespace shockmap {
 namespace {
@@ -34,16 +33,12 @@ __attribute__((target_clones("avx2", "default"))) double SumThenRotate(
 }
 
 // kLanes doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic, two
-// SSE2 instructions where the target has no 256-bit register).
+// SSE2 instructions where the target has no 256-bit register), and the same at a double's
+// alignment, read and written in place through any double array: no helper function takes or
+// returns a vector, so none crosses from one clone's target to another's.
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
-
-[[gnu::always_inline]] inline Lanes Load(const double* p) {
-  Lanes r;
-  std::memcpy(&r, p, sizeof r);
-  return r;
-}
-
-[[gnu::always_inline]] inline void Store(double* p, Lanes v) { std::memcpy(p, &v, sizeof v); }
+using LanesInPlace = double
+    __attribute__((vector_size(kLanes * sizeof(double)), aligned(alignof(double)), may_alias));
 
 // SumThenRotate of two walks on the same rotations, side by side: each walk's sum and rotation
 // are SumThenRotate's operations in the same order, lane by lane, so each result is equal bit
@@ -55,15 +50,20 @@ __attribute__((target_clones("avx2", "default"))) void SumThenRotateTwo(
     const double* __restrict rotation_im, Eigen::Index n, double& sum_a, double& sum_b) {
   Lanes lanes_a{}, lanes_b{};
   for (Eigen::Index i = 0; i < n; i += kLanes) {
-    const Lanes rr = Load(rotation_re + i), ri = Load(rotation_im + i);
-    const Lanes a = Load(re_a + i), b = Load(im_a + i);
+    const Lanes rr = *reinterpret_cast<const LanesInPlace*>(rotation_re + i);
+    const Lanes ri = *reinterpret_cast<const LanesInPlace*>(rotation_im + i);
+    auto& za_re = *reinterpret_cast<LanesInPlace*>(re_a + i);
+    auto& za_im = *reinterpret_cast<LanesInPlace*>(im_a + i);
+    const Lanes a = za_re, b = za_im;
     lanes_a += a;
-    Store(re_a + i, a * rr - b * ri);
-    Store(im_a + i, a * ri + b * rr);
-    const Lanes c = Load(re_b + i), d = Load(im_b + i);
+    za_re = a * rr - b * ri;
+    za_im = a * ri + b * rr;
+    auto& zb_re = *reinterpret_cast<LanesInPlace*>(re_b + i);
+    auto& zb_im = *reinterpret_cast<LanesInPlace*>(im_b + i);
+    const Lanes c = zb_re, d = zb_im;
     lanes_b += c;
-    Store(re_b + i, c * rr - d * ri);
-    Store(im_b + i, c * ri + d * rr);
+    zb_re = c * rr - d * ri;
+    zb_im = c * ri + d * rr;
   }
   sum_a = (lanes_a[0] + lanes_a[1]) + (lanes_a[2] + lanes_a[3]);
   sum_b = (lanes_b[0] + lanes_b[1]) + (lanes_b[2] + lanes_b[3]);
