@@ -8,6 +8,7 @@ namespace {
 
 // The largest sample of `force` in [shock.start_s, shock.end_s] as the shock's peak.
 void SetPeak(const UniformSignal& force, Shock& shock) {
+  if (force.values.empty()) return;  // A check carries no force history (nor a step).
   const double from = std::ceil((shock.start_s - force.t0_s) / force.dt_s);
   for (auto i = static_cast<std::size_t>(std::max(0.0, from));
        i < force.values.size() && force.TimeAt(i) <= shock.end_s; ++i) {

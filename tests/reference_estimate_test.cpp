@@ -78,6 +78,32 @@ TEST(ReferenceEstimate, ConvergedReferencePassesAndItsEstimateBoundsAFinerOne) {
   EXPECT_LE(std::abs(impulse / finest_impulse - 1.0), ref.convergence.impulse.error);
 }
 
+// A check is sampled for what the estimate reads: the same truncation solved as a check on the
+// reference's grid has the reference's tip bit for bit, no force history, and the same shocks
+// (times and impulses in closed form); each peak is then the force at the middle of the shock's
+// first contact, where the reference's is the largest of that force and its samples.
+TEST(ReferenceEstimate, ACheckHasTheTipAndShocksOfTheReferenceWithoutItsForce) {
+  CantileverImpact p;
+  p.r_k = 1e5;
+  const ReferenceLevel reference =
+      SolveReferenceLevel(p, ReferenceOptions{}, 3000.0, kWindow, Shocks(p));
+  const ReferenceLevel check = SolveReferenceLevel(p, ReferenceOptions{}, 3000.0, kWindow,
+                                                   Shocks(p), reference.histories.tip_m.dt_s);
+  ASSERT_FALSE(reference.histories.force_n.values.empty());
+  EXPECT_TRUE(check.histories.force_n.values.empty());
+  EXPECT_EQ(check.histories.tip_m.values, reference.histories.tip_m.values);
+  ASSERT_EQ(check.shocks.size(), reference.shocks.size());
+  ASSERT_FALSE(check.shocks.empty());
+  for (std::size_t i = 0; i < check.shocks.size(); ++i) {
+    EXPECT_EQ(check.shocks[i].start_s, reference.shocks[i].start_s);
+    EXPECT_EQ(check.shocks[i].end_s, reference.shocks[i].end_s);
+    EXPECT_EQ(check.shocks[i].impulse_n_s, reference.shocks[i].impulse_n_s);
+    EXPECT_EQ(check.shocks[i].peak_force_n,
+              check.solution.ContactForce(check.shocks[i].peak_time_s));
+    EXPECT_LE(check.shocks[i].peak_force_n, reference.shocks[i].peak_force_n);
+  }
+}
+
 // With a target, the truncation is raised threefold until the estimate meets it.
 TEST(ReferenceEstimate, AdaptiveTruncationRaisesTheReferenceUntilTheTargetIsMet) {
   const ReferenceRun ref = Reference(1e5, 300.0, 1e-3);
