@@ -34,11 +34,23 @@ __attribute__((target_clones("avx2", "default"))) double SumThenRotate(
 
 // kLanes doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic, two
 // SSE2 instructions where the target has no 256-bit register), and the same at a double's
-// alignment, read and written in place through any double array: no helper function takes or
-// returns a vector, so none crosses from one clone's target to another's.
+// alignment, read and written in place through any double array.
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
 using LanesInPlace = double
     __attribute__((vector_size(kLanes * sizeof(double)), aligned(alignof(double)), may_alias));
+
+// One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated.
+// (Vectors only by reference: none is passed or returned by value from one clone's target to
+// another's.)
+[[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im, const Lanes& rr,
+                                                      const Lanes& ri, Lanes& sums) {
+  auto& z_re = *reinterpret_cast<LanesInPlace*>(re);
+  auto& z_im = *reinterpret_cast<LanesInPlace*>(im);
+  const Lanes a = z_re, b = z_im;
+  sums += a;
+  z_re = a * rr - b * ri;
+  z_im = a * ri + b * rr;
+}
 
 // SumThenRotate of two walks on the same rotations, side by side: each walk's sum and rotation
 // are SumThenRotate's operations in the same order, lane by lane, so each result is equal bit
@@ -52,18 +64,8 @@ __attribute__((target_clones("avx2", "default"))) void SumThenRotateTwo(
   for (Eigen::Index i = 0; i < n; i += kLanes) {
     const Lanes rr = *reinterpret_cast<const LanesInPlace*>(rotation_re + i);
     const Lanes ri = *reinterpret_cast<const LanesInPlace*>(rotation_im + i);
-    auto& za_re = *reinterpret_cast<LanesInPlace*>(re_a + i);
-    auto& za_im = *reinterpret_cast<LanesInPlace*>(im_a + i);
-    const Lanes a = za_re, b = za_im;
-    lanes_a += a;
-    za_re = a * rr - b * ri;
-    za_im = a * ri + b * rr;
-    auto& zb_re = *reinterpret_cast<LanesInPlace*>(re_b + i);
-    auto& zb_im = *reinterpret_cast<LanesInPlace*>(im_b + i);
-    const Lanes c = zb_re, d = zb_im;
-    lanes_b += c;
-    zb_re = c * rr - d * ri;
-    zb_im = c * ri + d * rr;
+    SumThenRotateLanes(re_a + i, im_a + i, rr, ri, lanes_a);
+    SumThenRotateLanes(re_b + i, im_b + i, rr, ri, lanes_b);
   }
   sum_a = (lanes_a[0] + lanes_a[1]) + (lanes_a[2] + lanes_a[3]);
   sum_b = (lanes_b[0] + lanes_b[1]) + (lanes_b[2] + lanes_b[3]);
