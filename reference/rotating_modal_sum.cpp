@@ -13,25 +13,6 @@ Eigen::ArrayXd Padded(const Eigen::VectorXd& v) {
   return p;
 }
 
-// Returns sum_i re_i, then sets z_i = z_i r_i; n is a multiple of kLanes. Lane l sums the modes
-// i = l mod kLanes, so that the AVX2 clone and the default one (SSE2) perform the same
-// operations in the same order; neither may contract into fused multiply-adds, which AVX2
-// alone does not offer.
-__attribute__((target_clones("avx2", "default"))) double SumThenRotate(
-    double* __restrict re, double* __restrict im, const double* __restrict rotation_re,
-    const double* __restrict rotation_im, Eigen::Index n) {
-  double lane_sum[kLanes] = {0.0, 0.0, 0.0, 0.0};
-  for (Eigen::Index i = 0; i < n; i += kLanes) {
-    for (Eigen::Index l = 0; l < kLanes; ++l) {
-      const double a = re[i + l], b = im[i + l];
-      lane_sum[l] += a;
-      re[i + l] = a * rotation_re[i + l] - b * rotation_im[i + l];
-      im[i + l] = a * rotation_im[i + l] + b * rotation_re[i + l];
-    }
-  }
-  return (lane_sum[0] + lane_sum[1]) + (lane_sum[2] + lane_sum[3]);
-}
-
 // kLanes doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic, two
 // SSE2 instructions where the target has no 256-bit register), and the same at a double's
 // alignment, read and written in place through any double array.
@@ -42,8 +23,11 @@ using LanesInPlace = double
 // One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated.
 // (Vectors only by reference: none is passed or returned by value from one clone's target to
 // another's.)
-[[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im, const Lanes& rr,
-                                                      const Lanes& ri, Lanes& sums) {
+[[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im,
+                                                      const double* rotation_re,
+                                                      const double* rotation_im, Lanes& sums) {
+  const Lanes rr = *reinterpret_cast<const LanesInPlace*>(rotation_re);
+  const Lanes ri = *reinterpret_cast<const LanesInPlace*>(rotation_im);
   auto& z_re = *reinterpret_cast<LanesInPlace*>(re);
   auto& z_im = *reinterpret_cast<LanesInPlace*>(im);
   const Lanes a = z_re, b = z_im;
@@ -52,23 +36,39 @@ using LanesInPlace = double
   z_im = a * ri + b * rr;
 }
 
-// SumThenRotate of two walks on the same rotations, side by side: each walk's sum and rotation
-// are SumThenRotate's operations in the same order, lane by lane, so each result is equal bit
-// for bit; two independent chains of additions instead of one (a single walk waits on its own
-// sum's latency).
+// The lanes' sums folded in pairs.
+[[gnu::always_inline]] inline double Fold(const Lanes& sums) {
+  return (sums[0] + sums[1]) + (sums[2] + sums[3]);
+}
+
+// Returns sum_i re_i, then sets z_i = z_i r_i; n is a multiple of kLanes. Lane l sums the modes
+// i = l mod kLanes, so that the AVX2 clone and the default one (SSE2) perform the same
+// operations in the same order; neither may contract into fused multiply-adds, which AVX2
+// alone does not offer.
+__attribute__((target_clones("avx2", "default"))) double SumThenRotate(
+    double* __restrict re, double* __restrict im, const double* __restrict rotation_re,
+    const double* __restrict rotation_im, Eigen::Index n) {
+  Lanes sums{};
+  for (Eigen::Index i = 0; i < n; i += kLanes) {
+    SumThenRotateLanes(re + i, im + i, rotation_re + i, rotation_im + i, sums);
+  }
+  return Fold(sums);
+}
+
+// SumThenRotate of two walks on the same rotations, side by side: each walk's sums and
+// rotation are SumThenRotate's, so each result is equal bit for bit; two independent chains of
+// additions instead of one (a single walk waits on its own sums' latency).
 __attribute__((target_clones("avx2", "default"))) void SumThenRotateTwo(
     double* __restrict re_a, double* __restrict im_a, double* __restrict re_b,
     double* __restrict im_b, const double* __restrict rotation_re,
     const double* __restrict rotation_im, Eigen::Index n, double& sum_a, double& sum_b) {
-  Lanes lanes_a{}, lanes_b{};
+  Lanes sums_a{}, sums_b{};
   for (Eigen::Index i = 0; i < n; i += kLanes) {
-    const Lanes rr = *reinterpret_cast<const LanesInPlace*>(rotation_re + i);
-    const Lanes ri = *reinterpret_cast<const LanesInPlace*>(rotation_im + i);
-    SumThenRotateLanes(re_a + i, im_a + i, rr, ri, lanes_a);
-    SumThenRotateLanes(re_b + i, im_b + i, rr, ri, lanes_b);
+    SumThenRotateLanes(re_a + i, im_a + i, rotation_re + i, rotation_im + i, sums_a);
+    SumThenRotateLanes(re_b + i, im_b + i, rotation_re + i, rotation_im + i, sums_b);
   }
-  sum_a = (lanes_a[0] + lanes_a[1]) + (lanes_a[2] + lanes_a[3]);
-  sum_b = (lanes_b[0] + lanes_b[1]) + (lanes_b[2] + lanes_b[3]);
+  sum_a = Fold(sums_a);
+  sum_b = Fold(sums_b);
 }
 
 }  // namespace
