@@ -1,6 +1,7 @@
 #include "reference/rotating_modal_sum.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace shockmap {
 namespace {
@@ -14,26 +15,24 @@ Eigen::ArrayXd Padded(const Eigen::VectorXd& v) {
 }
 
 // kLanes doubles side by side (GCC and Clang vector extension: lane-wise IEEE arithmetic, two
-// SSE2 instructions where the target has no 256-bit register), and the same at a double's
-// alignment, read and written in place through any double array.
+// SSE2 instructions where the target has no 256-bit register).
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
-using LanesInPlace = double
-    __attribute__((vector_size(kLanes * sizeof(double)), aligned(alignof(double)), may_alias));
 
-// One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated.
-// (Vectors only by reference: none is passed or returned by value from one clone's target to
-// another's.)
+// One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated. The
+// arrays have a double's alignment only, so lanes are copied in and out (unaligned moves), and
+// vectors pass by reference only: none crosses by value from one clone's target to another's.
 [[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im,
                                                       const double* rotation_re,
                                                       const double* rotation_im, Lanes& sums) {
-  const Lanes rr = *reinterpret_cast<const LanesInPlace*>(rotation_re);
-  const Lanes ri = *reinterpret_cast<const LanesInPlace*>(rotation_im);
-  auto& z_re = *reinterpret_cast<LanesInPlace*>(re);
-  auto& z_im = *reinterpret_cast<LanesInPlace*>(im);
-  const Lanes a = z_re, b = z_im;
+  Lanes a, b, rr, ri;
+  std::memcpy(&a, re, sizeof a);
+  std::memcpy(&b, im, sizeof b);
+  std::memcpy(&rr, rotation_re, sizeof rr);
+  std::memcpy(&ri, rotation_im, sizeof ri);
   sums += a;
-  z_re = a * rr - b * ri;
-  z_im = a * ri + b * rr;
+  const Lanes rotated_re = a * rr - b * ri, rotated_im = a * ri + b * rr;
+  std::memcpy(re, &rotated_re, sizeof rotated_re);
+  std::memcpy(im, &rotated_im, sizeof rotated_im);
 }
 
 // The lanes' sums folded in pairs.
