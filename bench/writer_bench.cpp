@@ -89,7 +89,6 @@ void Writer(benchmark::State& state, const Kind& kind) {
   const auto path = std::filesystem::temp_directory_path() / "shockmap_writer_bench.db";
   std::filesystem::remove(path);
   StudyDatabase db(path.string());
-  const std::int64_t study = db.UpsertStudy(kind.Header().name, kind.Header().spec_json);
   const auto n_points = static_cast<std::int64_t>(state.range(1));
   std::vector<NewPoint> rows;
   for (std::int64_t i = 0; i < n_points; ++i) {
@@ -98,8 +97,10 @@ void Writer(benchmark::State& state, const Kind& kind) {
     p.point_key += std::to_string(i);
     rows.push_back(std::move(p));
   }
-  db.AddPoints(kind.Table(), study, rows);
-  const std::int64_t run = db.BeginRun(study, Provenance{"bench", "", "", "bench", 1, 1});
+  const std::int64_t run =
+      db.RegisterRun({kind.Header().name, kind.Header().spec_json, kind.Table(), rows,
+                      Provenance{"bench", "", "", "bench", 1, 1}})
+          .run_id;
   const std::int64_t reference = kind.StoreReference(db, SyntheticReference(kind), run);
   ByteWriter out;
   EncodeOutcome(kind, SyntheticOutcome(kind, reference), out);

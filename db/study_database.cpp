@@ -73,26 +73,25 @@ std::optional<std::string> StudyDatabase::StoredSpec(const std::string& name) {
   return s.GetText(0);
 }
 
-std::int64_t StudyDatabase::UpsertStudy(const std::string& name, const std::string& spec_json) {
-  Transaction t(db_);
+namespace {
+
+// Creates the study or, when it exists, records its latest spec. Returns study_id. Inside the
+// caller's transaction.
+std::int64_t UpsertStudy(Connection& db, const std::string& name, const std::string& spec_json) {
   const std::string now = UtcNow();
-  db_.Prepare(
-         "INSERT INTO studies(name, spec_json, created_utc, updated_utc) VALUES (?, ?, ?, ?) "
-         "ON CONFLICT(name) DO UPDATE SET spec_json = excluded.spec_json, "
-         "updated_utc = excluded.updated_utc WHERE spec_json != excluded.spec_json")
+  db.Prepare(
+        "INSERT INTO studies(name, spec_json, created_utc, updated_utc) VALUES (?, ?, ?, ?) "
+        "ON CONFLICT(name) DO UPDATE SET spec_json = excluded.spec_json, "
+        "updated_utc = excluded.updated_utc WHERE spec_json != excluded.spec_json")
       .Bind(1, name)
       .Bind(2, spec_json)
       .Bind(3, now)
       .Bind(4, now)
       .Run();
-  Statement id = db_.Prepare("SELECT study_id FROM studies WHERE name = ?");
+  Statement id = db.Prepare("SELECT study_id FROM studies WHERE name = ?");
   id.Bind(1, name).Step();
-  const std::int64_t study_id = id.GetInt(0);
-  t.Commit();
-  return study_id;
+  return id.GetInt(0);
 }
-
-namespace {
 
 // True when the process has exited but was not yet reaped by its parent (a zombie: an MPI
 // rank killed with its launcher still winding the job down).
@@ -126,22 +125,15 @@ void CheckNoLiveHolder(Connection& db, const std::string& our_host) {
       kLeaseGraceS));
 }
 
-}  // namespace
-
-std::int64_t StudyDatabase::BeginRun(std::int64_t study_id, const Provenance& p) {
-  // Check and insert in one IMMEDIATE transaction: two runs starting together are serialized
-  // by SQLite, and the second sees the first.
-  Transaction t(db_);
-  CheckNoLiveHolder(db_, p.host);
-  const double now = UnixNow();
-  db_.Prepare(
-         "UPDATE runs SET ended_utc = ?, end_reason = 'abandoned' "
-         "WHERE ended_utc IS NULL")
+// Ends every run row left open (their processes are gone: the caller holds the lease) and
+// opens this run's. Returns its run_id. Inside the caller's transaction.
+std::int64_t InsertRun(Connection& db, std::int64_t study_id, const Provenance& p) {
+  db.Prepare("UPDATE runs SET ended_utc = ?, end_reason = 'abandoned' WHERE ended_utc IS NULL")
       .Bind(1, UtcNow())
       .Run();
-  db_.Prepare(
-         "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
-         "started_utc, heartbeat_unix_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)")
+  db.Prepare(
+        "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
+        "started_utc, heartbeat_unix_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)")
       .Bind(1, study_id)
       .Bind(2, p.code_version)
       .Bind(3, p.compiler)
@@ -150,11 +142,63 @@ std::int64_t StudyDatabase::BeginRun(std::int64_t study_id, const Provenance& p)
       .Bind(6, p.pid)
       .Bind(7, p.jobs)
       .Bind(8, UtcNow())
-      .Bind(9, now)
+      .Bind(9, UnixNow())
       .Run();
-  const std::int64_t run_id = db_.LastInsertRowId();
+  return db.LastInsertRowId();
+}
+
+// The study's last run when it did not complete (RegisteredRun::previous_run), empty otherwise.
+std::string UnfinishedLastRun(Connection& db, std::int64_t study_id) {
+  Statement s = db.Prepare(
+      "SELECT run_id, host, pid, coalesce(end_reason, 'abandoned'), coalesce(end_message, '') "
+      "FROM runs WHERE study_id = ? ORDER BY run_id DESC LIMIT 1");
+  s.Bind(1, study_id);
+  if (!s.Step() || s.GetText(3) == "completed") return "";
+  const std::string message = s.GetText(4);
+  return fmt::format("run {} (host {}, pid {}) {}{}", s.GetInt(0), s.GetText(1), s.GetInt(2),
+                     s.GetText(3) == "abandoned" ? "was killed" : s.GetText(3),
+                     message.empty() ? "" : ": " + message);
+}
+
+// Inserts the points not yet in the study as 'pending' and writes the table's parameter view
+// again. Inside the caller's transaction.
+void InsertPoints(Connection& db, const PointTable& table, std::int64_t study_id,
+                  const std::vector<NewPoint>& points) {
+  std::string columns, placeholders;
+  for (std::string_view c : table.parameter_columns) {
+    columns += fmt::format(", {}", c);
+    placeholders += ", ?";
+  }
+  Statement insert = db.Prepare(
+      fmt::format("INSERT OR IGNORE INTO {}(study_id, point_key, reference_key, updated_utc{}) "
+                  "VALUES (?, ?, ?, ?{})",
+                  table.name, columns, placeholders));
+  const std::string now = UtcNow();
+  for (const NewPoint& p : points) {
+    insert.Bind(1, study_id).Bind(2, p.point_key).Bind(3, p.reference_key).Bind(4, now);
+    for (std::size_t i = 0; i < p.parameters.size(); ++i) {
+      insert.BindValue(static_cast<int>(5 + i), p.parameters[i]);
+    }
+    insert.Run();
+  }
+  RefreshParameterView(db, table);
+}
+
+}  // namespace
+
+RegisteredRun StudyDatabase::RegisterRun(const RunRegistration& r) {
+  // One IMMEDIATE transaction, the lease checked before anything is written: two runs starting
+  // together are serialized by SQLite, the second sees the first, and a refused run has
+  // changed nothing (neither the study's stored spec nor its points).
+  Transaction t(db_);
+  CheckNoLiveHolder(db_, r.provenance.host);
+  RegisteredRun run;
+  run.study_id = UpsertStudy(db_, r.study_name, r.spec_json);
+  InsertPoints(db_, r.table, run.study_id, r.points);
+  run.previous_run = UnfinishedLastRun(db_, run.study_id);
+  run.run_id = InsertRun(db_, run.study_id, r.provenance);
   t.Commit();
-  return run_id;
+  return run;
 }
 
 void StudyDatabase::Heartbeat(std::int64_t run_id) {
@@ -179,45 +223,6 @@ void StudyDatabase::EndRun(std::int64_t run_id, RunEnd end, const std::string& m
       .Bind(3, message)
       .Bind(4, run_id)
       .Run();
-}
-
-std::optional<std::string> StudyDatabase::UnfinishedLastRun(std::int64_t study_id) {
-  Statement s = db_.Prepare(
-      "SELECT run_id, host, pid, coalesce(end_reason, 'abandoned'), coalesce(end_message, '') "
-      "FROM runs WHERE study_id = ? ORDER BY run_id DESC LIMIT 1");
-  s.Bind(1, study_id);
-  if (!s.Step() || s.GetText(3) == "completed") return std::nullopt;
-  const std::string message = s.GetText(4);
-  return fmt::format("run {} (host {}, pid {}) {}{}", s.GetInt(0), s.GetText(1), s.GetInt(2),
-                     s.GetText(3) == "abandoned" ? "was killed" : s.GetText(3),
-                     message.empty() ? "" : ": " + message);
-}
-
-int StudyDatabase::AddPoints(const PointTable& table, std::int64_t study_id,
-                             const std::vector<NewPoint>& points) {
-  std::string columns, placeholders;
-  for (std::string_view c : table.parameter_columns) {
-    columns += fmt::format(", {}", c);
-    placeholders += ", ?";
-  }
-  Transaction t(db_);
-  Statement insert = db_.Prepare(
-      fmt::format("INSERT OR IGNORE INTO {}(study_id, point_key, reference_key, updated_utc{}) "
-                  "VALUES (?, ?, ?, ?{})",
-                  table.name, columns, placeholders));
-  const std::string now = UtcNow();
-  int added = 0;
-  for (const NewPoint& p : points) {
-    insert.Bind(1, study_id).Bind(2, p.point_key).Bind(3, p.reference_key).Bind(4, now);
-    for (std::size_t i = 0; i < p.parameters.size(); ++i) {
-      insert.BindValue(static_cast<int>(5 + i), p.parameters[i]);
-    }
-    insert.Run();
-    added += sqlite3_changes(db_.Raw());
-  }
-  RefreshParameterView(db_, table);
-  t.Commit();
-  return added;
 }
 
 template <typename... Ids>

@@ -56,6 +56,23 @@ struct PendingPoint {
   std::string reference_key;
 };
 
+// What a run registers before it computes (StudyDatabase::RegisterRun): its study, the points
+// its spec lists in `table`, and where it runs.
+struct RunRegistration {
+  std::string study_name, spec_json;
+  const PointTable& table;
+  const std::vector<NewPoint>& points;
+  Provenance provenance;
+};
+
+// A registered run: its study and run ids, and how the study's previous run ended when it did
+// not complete ("run 3 (host h, pid 42) interrupted: ...", empty otherwise), for the run that
+// takes up its points.
+struct RegisteredRun {
+  std::int64_t study_id = 0, run_id = 0;
+  std::string previous_run;
+};
+
 // How a run ended, stored in runs.end_reason.
 enum class RunEnd { kCompleted, kInterrupted, kFailed };
 
@@ -64,26 +81,19 @@ class StudyDatabase {
   // Opens or creates `path` in WAL mode and migrates it. Throws DbError (see MigrateToCurrent).
   explicit StudyDatabase(const std::string& path);
 
-  // Creates the study or, when it exists, records its latest spec. Returns study_id.
-  std::int64_t UpsertStudy(const std::string& name, const std::string& spec_json);
   std::optional<std::string> StoredSpec(const std::string& name);
 
-  // Takes the writer's lease: throws DbError naming the holder (run, host, pid, heartbeat age)
-  // when another run's heartbeat is younger than kLeaseGraceS. Returns the new run_id.
-  std::int64_t BeginRun(std::int64_t study_id, const Provenance& provenance);
+  // Registers a run in one IMMEDIATE transaction: takes the writer's lease first (throws
+  // DbError naming the holder, its run, host, pid and heartbeat age, when another run's
+  // heartbeat is younger than kLeaseGraceS, having written nothing), then creates the study or
+  // records its latest spec, inserts the points not yet in the study as 'pending' (writing the
+  // table's parameter view again) and opens the run's row.
+  RegisteredRun RegisterRun(const RunRegistration& registration);
   // Renews the lease. Throws DbError when another run has taken it over (this process was
   // stopped for longer than the grace period): it must stop writing.
   void Heartbeat(std::int64_t run_id);
   // `message` says why a run that did not complete ended.
   void EndRun(std::int64_t run_id, RunEnd end, const std::string& message = "");
-  // The last run of the study when it did not complete ("run 3 (host h, pid 42) interrupted:
-  // ..."), for the run that takes up its points. Call before BeginRun.
-  std::optional<std::string> UnfinishedLastRun(std::int64_t study_id);
-
-  // Inserts the points not yet in the study as 'pending', and writes the table's parameter view
-  // again; returns how many were new.
-  int AddPoints(const PointTable& table, std::int64_t study_id,
-                const std::vector<NewPoint>& points);
   // Points left 'running' by any run but `run_id` go back to 'pending'; the caller holds the
   // lease, so their runs are gone. Returns how many.
   int ReclaimStalePoints(const PointTable& table, std::int64_t study_id, std::int64_t run_id);

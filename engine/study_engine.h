@@ -237,16 +237,17 @@ class StudyRun {
   void Register() {
     const StudyHeader& header = kind_.Header();
     if (const auto stored = db_.StoredSpec(header.name)) CheckStoredSpec(*stored);
-    const std::int64_t study_id = db_.UpsertStudy(header.name, header.spec_json);
     std::vector<NewPoint> rows;
     const auto& points = kind_.Points();
     for (std::size_t i = 0; i < points.size(); ++i) {
       rows.push_back(kind_.Describe(points[i]));
       by_key_[rows.back().point_key] = i;
     }
-    db_.AddPoints(kind_.Table(), study_id, rows);
-    summary_.previous_run = db_.UnfinishedLastRun(study_id).value_or("");
-    run_id_ = db_.BeginRun(study_id, CurrentProvenance(summary_.jobs));
+    const RegisteredRun run = db_.RegisterRun(
+        {header.name, header.spec_json, kind_.Table(), rows, CurrentProvenance(summary_.jobs)});
+    const std::int64_t study_id = run.study_id;
+    run_id_ = run.run_id;
+    summary_.previous_run = run.previous_run;
     summary_.points_reclaimed = db_.ReclaimStalePoints(kind_.Table(), study_id, run_id_);
     // A point whose value was removed from the file keeps its row but is not computed.
     for (PendingPoint& p : db_.PointsToCompute(kind_.Table(), study_id, options_.retry_failed)) {

@@ -136,6 +136,51 @@ TEST_F(StudyFaults, ASecondWriterIsRefusedNamingTheHolderAndWritesNothing) {
       << status.output;
 }
 
+// A run refused because another holds the database writes nothing at all, whatever it asks:
+// neither another study's registration, nor an extended grid's new points, nor a changed
+// threshold in the stored study file (which `criteria derive` would then judge with).
+TEST_F(StudyFaults, ARefusedRunRegistersNothingAndLeavesTheStoredStudyFileAsItWas) {
+  const std::string spec = Spec(kSmallStudy), db = Path("s.db");
+  ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+  {
+    Connection c(db, Connection::Mode::kReadWriteCreate);
+    c.Execute(
+        "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
+        "started_utc, heartbeat_unix_s) SELECT study_id, 'x', 'x', 'x', 'node-17', 4242, 1, "
+        "'2026-01-01T00:00:00.000Z', unixepoch('now') FROM studies");
+  }
+  const std::string before = ReadBytes(db);
+  const auto stored = [&] {
+    return testing::Rows(db, "SELECT name, spec_json, updated_utc FROM studies ORDER BY name");
+  };
+  const auto studies = stored();
+  const std::string other = R"({
+    "name": "other",
+    "grids": [{"rk": [10, 100], "rftrunc": [10, 30, 100]}]
+  })";
+  const std::string extended = R"({
+    "name": "small",
+    "scoring": {"window_s": 0.02, "reference": {"r_fref_min": 300, "r_fref_per_sqrt_rk": 3}},
+    "grids": [{"rk": [10, 100, 1000, 3000, 10000], "rftrunc": [10, 30, 100]}]
+  })";
+  const std::string rethresholded = R"({
+    "name": "small",
+    "scoring": {"window_s": 0.02, "reference": {"r_fref_min": 300, "r_fref_per_sqrt_rk": 3},
+                "thresholds": {"err_max": 0.5}},
+    "grids": [{"rk": [10, 100, 1000, 3000], "rftrunc": [10, 30]}]
+  })";
+  for (const std::string& json : {other, extended, rethresholded}) {
+    const std::string changed = Path("changed.json");
+    WriteText(changed, json);
+    const auto refused = RunShockmap("study run " + changed + " --db " + db + " --quiet");
+    EXPECT_EQ(refused.exit_code, 2) << refused.output;
+    EXPECT_NE(refused.output.find("one writer at a time"), std::string::npos) << refused.output;
+    EXPECT_EQ(stored(), studies) << json;
+    EXPECT_EQ(Count(db, "SELECT count(*) FROM points"), 8) << json;
+    EXPECT_TRUE(ReadBytes(db) == before) << json;
+  }
+}
+
 // Twenty times, two runs start together on a fresh database: no raw SQLite error, every point
 // computed and stored once, every run row closed.
 TEST_F(StudyFaults, TwoRunsStartedTogetherNeverComputeAPointTwice) {

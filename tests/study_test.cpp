@@ -388,12 +388,12 @@ TEST_F(StudyDatabaseRuns, ChangedSettingsAreRefusedAndNothingIsWritten) {
 // Every status is stored as its text and read back as the same status.
 TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
   StudyDatabase db(options_.database_path);
-  const std::int64_t study = db.UpsertStudy("statuses", "{}");
   std::vector<NewPoint> points;
   for (RunStatus status : kAllRunStatuses) points.push_back({ToString(status), "ref", {}});
   for (auto& p : points) p.parameters = CellsOf(PointParameters{}, kPointParameterColumns);
-  db.AddPoints(kCanonicalPoints, study, points);
-  const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
+  const RegisteredRun registered = db.RegisterRun(
+      {"statuses", "{}", kCanonicalPoints, points, Provenance{"v", "c", "b", "host", 1, 1}});
+  const std::int64_t study = registered.study_id, run = registered.run_id;
   const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
   ASSERT_EQ(pending.size(), kAllRunStatuses.size());
   StorePointOutcomes(db, kCanonicalPoints, run, pending.size(), [&](Connection&, std::size_t i) {
@@ -413,14 +413,14 @@ TEST_F(StudyDatabaseRuns, EveryStatusRoundTripsThroughTheDatabase) {
 // group is stored and the run counts none of them done; the next group stores as usual.
 TEST_F(StudyDatabaseRuns, AGroupOfOutcomesIsStoredWhollyOrNotAtAll) {
   StudyDatabase db(options_.database_path);
-  const std::int64_t study = db.UpsertStudy("group", "{}");
   std::vector<NewPoint> points(4);
   for (std::size_t i = 0; i < points.size(); ++i) {
     points[i] = {"p" + std::to_string(i), "ref",
                  CellsOf(PointParameters{}, kPointParameterColumns)};
   }
-  db.AddPoints(kCanonicalPoints, study, points);
-  const std::int64_t run = db.BeginRun(study, Provenance{"v", "c", "b", "host", 1, 1});
+  const RegisteredRun registered = db.RegisterRun(
+      {"group", "{}", kCanonicalPoints, points, Provenance{"v", "c", "b", "host", 1, 1}});
+  const std::int64_t study = registered.study_id, run = registered.run_id;
   const auto pending = db.PointsToCompute(kCanonicalPoints, study, false);
   ASSERT_EQ(pending.size(), 4u);
   auto store = [&](std::size_t first, std::size_t count, std::optional<std::size_t> failing) {

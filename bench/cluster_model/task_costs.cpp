@@ -60,15 +60,15 @@ template <StudyKind Kind>
 MeasuredCosts Measure(const Kind& kind, const std::string& path, std::size_t points_to_measure) {
   StudyDatabase db(path);
   const StudyHeader& header = kind.Header();
-  const std::int64_t study_id = db.UpsertStudy(header.name, header.spec_json);
   std::vector<NewPoint> rows;
   std::map<std::string, std::size_t> index_of;  // Point key -> index in Points().
   for (std::size_t i = 0; i < kind.Points().size(); ++i) {
     rows.push_back(kind.Describe(kind.Points()[i]));
     index_of[rows.back().point_key] = i;
   }
-  db.AddPoints(kind.Table(), study_id, rows);
-  const std::int64_t run_id = db.BeginRun(study_id, CurrentProvenance(1));
+  const RegisteredRun registered =
+      db.RegisterRun({header.name, header.spec_json, kind.Table(), rows, CurrentProvenance(1)});
+  const std::int64_t study_id = registered.study_id, run_id = registered.run_id;
   std::vector<PendingPoint> pending = db.PointsToCompute(kind.Table(), study_id, false);
   MeasuredCosts m;
   m.points = pending.size();
