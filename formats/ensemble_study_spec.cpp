@@ -551,6 +551,7 @@ std::string NominalKey(const EnsembleStudySpec& spec, int state) {
               {"scene", spec.scene},
               {"draws", DrawsJson(spec)},
               {"state", StateJson(spec.states[state])},
+              {"state_name", spec.states[state].name},
               {"setting", spec.settings[spec.refined]},
               {"window_s", spec.window_s}}
       .dump();

@@ -84,7 +84,8 @@ std::uint64_t MemberSeedOf(const EnsembleStudySpec& spec, const EnsembleMember& 
 // {"member": i, "setting": {...}, "state": "name"}
 std::string MemberKey(const EnsembleStudySpec& spec, const EnsembleMember& member);
 // Identifies a state's nominal run across studies: the scene, the draws' centres, the state's
-// gaps, the refined setting and the window.
+// gaps and its name (two states of one study may share their gaps; each has its nominal run,
+// stored under its own name), the refined setting and the window.
 std::string NominalKey(const EnsembleStudySpec& spec, int state);
 // What a study keeps for life: the scene, the seed, the draws, the window, the impact counting
 // and each state's gaps.

@@ -113,6 +113,28 @@ TEST_F(EnsembleStudyTest, RerunningOneMemberGivesTheSameMaximaBitForBit) {
   EXPECT_NE(maxima.begin()->second, std::next(maxima.begin())->second);
 }
 
+// Two clearance states may share their gap laws: each keeps its name, its own nominal run
+// stored under that name, and its members, in one run and when the study is run again.
+TEST_F(EnsembleStudyTest, TwoStatesWithTheSameGapsKeepTheirNames) {
+  json spec = SmallEnsemble(2);
+  spec["clearance_states"][1] = spec["clearance_states"][0];
+  spec["clearance_states"][1]["name"] = "also_new";
+  const std::string file = Write(spec), db = Path("e.db");
+  const auto run = Run(file, db);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const std::vector<std::string> nominal = {"also_new|ok", "new|ok"};
+  EXPECT_EQ(testing::Rows(db, "SELECT state, status FROM ensemble_references ORDER BY state"),
+            nominal);
+  const char* members_by_nominal =
+      "SELECT count(*) FROM ensemble_members p JOIN ensemble_references r USING (reference_id) "
+      "WHERE p.state = r.state AND p.status = 'ok'";
+  EXPECT_EQ(Count(db, members_by_nominal), 4);
+  const auto again = RunShockmap("study run " + file + " --db " + db + " --retry-failed --quiet");
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_EQ(testing::Rows(db, "SELECT state, status FROM ensemble_references ORDER BY state"),
+            nominal);
+}
+
 TEST_F(EnsembleStudyTest, AddedMembersAreTheOnlyOnesComputed) {
   const std::string db = Path("e.db");
   ASSERT_EQ(Run(Write(SmallEnsemble(3)), db).exit_code, 0);
