@@ -1,6 +1,7 @@
 #include "db/report_queries.h"
 
 #include "db/corrupt_rows.h"
+#include "db/stored_json.h"
 #include "db/stored_signals.h"
 
 namespace shockmap {
@@ -52,6 +53,13 @@ std::optional<std::string> StoredStudySpec(const std::string& database_path,
       RunReadOnlyQuery(database_path, "SELECT spec_json FROM studies WHERE name = ?1", {study});
   if (spec.rows.empty()) return std::nullopt;
   return StoredText(spec.rows.front().front(), database_path, "study " + study, "spec_json");
+}
+
+std::optional<nlohmann::json> StoredStudyJson(const std::string& database_path,
+                                              const std::string& study) {
+  const auto text = StoredStudySpec(database_path, study);
+  if (!text) return std::nullopt;
+  return ParseStoredJson({database_path, "study " + study, "spec_json"}, *text);
 }
 
 }  // namespace shockmap

@@ -1,6 +1,7 @@
 #pragma once
 // The stored facts a study's report shows beside its figures, read on a read-only connection.
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
@@ -35,5 +36,10 @@ std::optional<ReferenceRow> StoredReference(const std::string& database_path,
 // The study file stored for `study`, or nothing when no study has that name.
 std::optional<std::string> StoredStudySpec(const std::string& database_path,
                                            const std::string& study);
+
+// The same, parsed; DbError "<file>: database corrupt: study <name>: spec_json: <reason>" when
+// it is not JSON or nests deeper than kMaxStoredJsonDepth.
+std::optional<nlohmann::json> StoredStudyJson(const std::string& database_path,
+                                              const std::string& study);
 
 }  // namespace shockmap

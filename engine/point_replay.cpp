@@ -7,7 +7,6 @@
 #include "db/report_queries.h"
 #include "db/stored_signals.h"
 #include "engine/reference_store.h"
-#include "formats/json_reader.h"
 #include "formats/study_file.h"
 
 namespace shockmap {
@@ -15,9 +14,9 @@ namespace shockmap {
 ReplayedPoint ReplayCanonicalPoint(const std::string& database_path, const std::string& study,
                                    std::int64_t point_id) {
   const std::string what = "point " + std::to_string(point_id) + " of study " + study;
-  const auto spec_json = StoredStudySpec(database_path, study);
-  if (!spec_json) throw InputError("no study named \"" + study + "\" in " + database_path);
-  const auto json = ParseJsonText(*spec_json, database_path + ": stored study " + study);
+  const auto stored = StoredStudyJson(database_path, study);
+  if (!stored) throw InputError("no study named \"" + study + "\" in " + database_path);
+  const nlohmann::json& json = *stored;
   if (StudyKindOf(json, database_path) != StudyFileKind::kCanonical) {
     throw InputError(what +
                      ": a scene study's points store no signals; `shockmap export "

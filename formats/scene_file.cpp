@@ -1,5 +1,7 @@
 #include "formats/scene_file.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -26,6 +28,24 @@ using Json = nlohmann::json;
 // Limits that catch units mistakes rather than physics: a scene beyond them is a typing error.
 constexpr int kMaxBeams = 10000;
 constexpr int kMaxZones = 1'000'000;
+
+// What a run holds in memory per beam and per contact zone: the peak resident size of
+// `shockmap simulate` on scenes/bundle_row.json grown to 2000 and 4000 pins with 1, 7 and 21
+// wire heights grew by about 0.9 kB per beam and 1.1 kB per zone (8000 pins with 7 heights:
+// 77 MB).
+constexpr double kRunBytesPerBeam = 1.0e3;
+constexpr double kRunBytesPerZone = 1.1e3;
+
+// "a scene may hold at most 10000 beams; 10001 beams [and Z contact zones] would take
+// about M GB of memory to run": the limit on beams, with the estimate for `beams`.
+std::string BeamLimit(double beams, double zones) {
+  const double bytes = beams * kRunBytesPerBeam + zones * kRunBytesPerZone;
+  return fmt::format(
+      "a scene may hold at most {} beams; {:.0f} beams{} would take about {:.2g} GB "
+      "of memory to run",
+      kMaxBeams, beams, zones > 0 ? fmt::format(" and {:.0f} contact zones", zones) : "",
+      bytes / 1e9);
+}
 
 // A wire height as it names its zones: rounded to the micrometre, in the shortest digits that
 // read back as that value (0.9144, not the 0.9144000000000001 a linspace computes).
@@ -288,11 +308,15 @@ ZoneLaws ParseZoneLaws(JsonObjectReader& r, BendingPlanes planes) {
 struct Lattice {
   bool row = true;
   double pitch_m = 0.0;
+  int rings = 0;          // Of a hex lattice.
+  std::int64_t pins = 0;  // How many the layout makes, before they are placed.
+  std::string count_key;  // The key that sets it: "pins" or "rings".
   std::vector<std::pair<double, double>> positions;
   std::vector<std::array<int, 2>> cells;
 };
 
-// layout "row": `pins` pins along y; "hex": `rings` rings around a centre pin.
+// layout "row": `pins` pins along y; "hex": `rings` rings around a centre pin. Reads how many;
+// PlacePins places them once CheckBundle has accepted that many.
 Lattice ParseLattice(JsonObjectReader& r) {
   Lattice l;
   const std::string layout = r.String("layout", "row");
@@ -301,25 +325,34 @@ Lattice ParseLattice(JsonObjectReader& r) {
   l.row = layout == "row";
   l.pitch_m = Positive(r, "pin_pitch_m", 1.0);
   if (l.row) {
-    const int pins = r.Integer("pins", 0);
-    if (pins < 1 || pins > kMaxBeams)
-      r.Fail("pins", "value " + std::to_string(pins) + " must lie in [1, " +
-                         std::to_string(kMaxBeams) + "]");
-    for (int i = 0; i < pins; ++i)
-      l.positions.push_back({(i - (pins - 1) / 2.0) * l.pitch_m, 0.0}), l.cells.push_back({i, 0});
+    l.count_key = "pins";
+    l.pins = r.Integer("pins", 0);
+    if (l.pins < 1) r.Fail("pins", "value " + std::to_string(l.pins) + " must be at least 1");
     return l;
   }
-  const int rings = r.Integer("rings", 0);
-  if (rings < 0 || rings > 50)
-    r.Fail("rings", "value " + std::to_string(rings) + " must lie in [0, 50]");
-  for (int q = -rings; q <= rings; ++q) {
-    for (int s = -rings; s <= rings; ++s) {
-      if (std::abs(q + s) > rings) continue;
+  l.count_key = "rings";
+  l.rings = r.Integer("rings", 0);
+  if (l.rings < 0 || l.rings > 50)
+    r.Fail("rings", "value " + std::to_string(l.rings) + " must lie in [0, 50]");
+  l.pins = 3 * l.rings * (l.rings + 1) + 1;
+  return l;
+}
+
+void PlacePins(Lattice& l) {
+  if (l.row) {
+    for (int i = 0; i < l.pins; ++i) {
+      l.positions.push_back({(i - (l.pins - 1) / 2.0) * l.pitch_m, 0.0});
+      l.cells.push_back({i, 0});
+    }
+    return;
+  }
+  for (int q = -l.rings; q <= l.rings; ++q) {
+    for (int s = -l.rings; s <= l.rings; ++s) {
+      if (std::abs(q + s) > l.rings) continue;
       l.positions.push_back({l.pitch_m * (q + s / 2.0), l.pitch_m * s * std::sqrt(3.0) / 2.0});
       l.cells.push_back({q, s});
     }
   }
-  return l;
 }
 
 const Json& RequiredObject(JsonObjectReader& r, const std::string& key) {
@@ -367,17 +400,38 @@ BundleParts ParseBundleParts(JsonObjectReader& r, BendingPlanes planes) {
 
 // Wires on both beams, and a size refused before anything is generated: at most 6 zones per
 // pin and height.
-void CheckBundle(const Lattice& l, const BundleParts& p, const std::string& file) {
+// The zones a bundle generates at each wire height (docs/scenes.md): a row's neighbouring pairs
+// and its two end pins against the wrapper; a hexagonal lattice's 3n(3n + 1) pairs and 12n + 6
+// faces against the wrapper.
+double BundleZonesPerHeight(const Lattice& l) {
+  const double n = l.rings;
+  return l.row ? static_cast<double>(l.pins) + 1.0 : 3.0 * n * (3.0 * n + 1.0) + 12.0 * n + 6.0;
+}
+
+// The wire heights on the beams, and the bundle's beams (with the wrapper and the `listed`
+// beams of "beams") and zones within the limits, before any is generated.
+void CheckBundle(const Lattice& l, const BundleParts& p, std::size_t listed,
+                 const std::string& file) {
   for (double h : p.heights) {
     if (h < 0 || h > p.pin.length_m || h > p.wrapper.length_m) {
       FailAt(file, p.heights_path,
              "height " + Shown(Json(h)) + " m lies outside the pins or the wrapper");
     }
   }
-  const double zones = 6.0 * static_cast<double>(l.positions.size()) * p.heights.size();
+  const double heights = static_cast<double>(p.heights.size());
+  const double beams = static_cast<double>(listed + 1) + static_cast<double>(l.pins);
+  if (beams > kMaxBeams) {
+    const double zones = BundleZonesPerHeight(l) * heights;
+    FailAt(file, "bundle." + l.count_key,
+           fmt::format("value {} makes {} pins, {:.0f} beams with the wrapper{}: {}",
+                       l.row ? l.pins : l.rings, l.pins, beams,
+                       listed > 0 ? fmt::format(" and the {} of \"beams\"", listed) : "",
+                       BeamLimit(beams, zones)));
+  }
+  const double zones = 6.0 * static_cast<double>(l.pins) * heights;
   if (zones > kMaxZones) {
     FailAt(file, "bundle",
-           std::to_string(l.positions.size()) + " pins with " + std::to_string(p.heights.size()) +
+           std::to_string(l.pins) + " pins with " + std::to_string(p.heights.size()) +
                " wire heights would make up to " + Shown(Json(zones)) + " zones: at most " +
                std::to_string(kMaxZones) + " are allowed");
   }
@@ -458,11 +512,12 @@ void AddBundleZones(BundleZones zones, const BundleParts& p, double pitch_m,
 // neighbouring pins and between the outer pins and the wrapper.
 void ExpandBundle(const Json& v, const std::string& file, Scene& scene) {
   JsonObjectReader r(v, file, "bundle");
-  const Lattice lattice = ParseLattice(r);
+  Lattice lattice = ParseLattice(r);
   if (!lattice.row) scene.planes = BendingPlanes::kBoth;
   const BundleParts parts = ParseBundleParts(r, scene.planes);
   r.Finish();
-  CheckBundle(lattice, parts, file);
+  CheckBundle(lattice, parts, scene.beams.size(), file);
+  PlacePins(lattice);
   const int wrapper = static_cast<int>(scene.beams.size());
   const auto index = AddBundleBeams(lattice, parts, scene);
   AddBundleZones(GenerateBundleZones(lattice, parts, index, wrapper, scene), parts, lattice.pitch_m,
@@ -573,7 +628,8 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
   if (scene.beams.empty())
     r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
   if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
-    r.Fail("beams", "more than " + std::to_string(kMaxBeams) + " beams");
+    r.Fail("beams", "lists " + std::to_string(scene.beams.size()) +
+                        " beams: " + BeamLimit(static_cast<double>(scene.beams.size()), 0.0));
   if (const std::string excess = BasesExcess(scene.beams); !excess.empty())
     r.Fail("beams", "the scene's distinct beams: " + excess);
 }

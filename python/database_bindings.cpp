@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -13,7 +14,6 @@
 #include "db/report_queries.h"
 #include "db/schema.h"
 #include "db/stored_signals.h"
-#include "formats/json_reader.h"
 #include "formats/study_file.h"
 #include "python/bindings.h"
 #include "python/signal_arrays.h"
@@ -56,11 +56,31 @@ py::dict TableDict(const Table& table) {
   return d;
 }
 
+// A Python int for a message: its digits, or its size when they would be too many to read.
+std::string IntegerShown(const py::handle& value) {
+  const auto bits = value.attr("bit_length")().cast<std::size_t>();
+  return bits <= 256 ? std::string(py::str(value)) : fmt::format("an integer of {} bits", bits);
+}
+
+// A Python int bound to a parameter, refused beyond SQLite's 64-bit integers.
+TableCell IntegerCell(const py::handle& value, std::size_t index) {
+  int overflow = 0;
+  const long long number = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+  if (overflow != 0) {
+    throw InputError(fmt::format(
+        "parameters[{}]: {} is outside [{}, {}], the integers SQLite stores; bind it as a float "
+        "or a str",
+        index, IntegerShown(value), std::numeric_limits<std::int64_t>::min(),
+        std::numeric_limits<std::int64_t>::max()));
+  }
+  return std::int64_t{number};
+}
+
 // A Python value bound to a parameter: None, an int, a float or a str.
 TableCell ParameterCell(const py::handle& value, std::size_t index) {
   if (value.is_none()) return {};
   if (py::isinstance<py::bool_>(value)) return std::int64_t{value.cast<bool>()};
-  if (py::isinstance<py::int_>(value)) return value.cast<std::int64_t>();
+  if (py::isinstance<py::int_>(value)) return IntegerCell(value, index);
   if (py::isinstance<py::float_>(value)) return value.cast<double>();
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   throw InputError(
@@ -105,10 +125,9 @@ py::dict ColumnUnits() {
 std::pair<std::string, std::string> StudyAndKind(const std::string& database_path,
                                                  const std::string& study) {
   const std::string name = ResolveStudyName(database_path, study);
-  const auto json = StoredStudySpec(database_path, name);
+  const auto json = StoredStudyJson(database_path, name);
   if (!json) throw InputError("no study named \"" + name + "\" in " + database_path);
-  const std::string file = database_path + ": stored study " + name;
-  return {name, ToString(StudyKindOf(ParseJsonText(*json, file), file))};
+  return {name, ToString(StudyKindOf(*json, database_path + ": stored study " + name))};
 }
 
 // The criteria as `criteria derive --out` writes them (JSON text), judged with the study's

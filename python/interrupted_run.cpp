@@ -7,11 +7,14 @@
 namespace shockmap::python {
 
 void RaiseStop(int signal) {
-  if (signal == SIGINT) {
-    PyErr_SetNone(PyExc_KeyboardInterrupt);
-    throw pybind11::error_already_set();
-  }
-  if (signal != 0) std::raise(signal);
+  if (signal == 0) return;
+  std::raise(signal);
+  if (PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
+}
+
+void ThrowInterrupted(const std::string& message) {
+  PyErr_SetString(PyExc_InterruptedError, message.c_str());
+  throw pybind11::error_already_set();
 }
 
 }  // namespace shockmap::python

@@ -1,9 +1,11 @@
 // Scene and simulate(): a scene file read with the file reader's checks and messages, its
 // parameters set by path as study files set them, and one simulation with its outputs.
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "compare/scene_run.h"
@@ -83,15 +85,26 @@ py::dict Histories(const SceneRunHandle& h) {
   return d;
 }
 
-// A run stopped by SIGINT, SIGTERM or SIGHUP between two progress reports.
+// A run stopped by SIGINT, SIGTERM or SIGHUP between two progress reports, at `t_s` simulated.
 struct RunStopped {
   int signal;
+  double t_s;
 };
+
+// After the interpreter's handler for the signal that stopped `scene` at `stopped.t_s` has
+// returned: the run has no result to give.
+[[noreturn]] void ThrowStopped(const Scene& scene, const RunStopped& stopped) {
+  ThrowInterrupted(fmt::format(
+      "simulate: scene \"{}\" stopped by {} at {:.4g} s of {:.4g} s simulated; a stopped "
+      "simulation has no result",
+      scene.name, SignalName(stopped.signal), stopped.t_s, scene.solver.end_time_s));
+}
 
 SceneRunHandle Simulate(const SceneHandle& handle, bool progress) {
   SceneRunHandle out;
   for (const auto& p : handle.scene.outputs.displacements) out.displacement_names.push_back(p.name);
-  int stopped_by = 0;
+  std::optional<RunStopped> stopped;
+  int late_signal = 0;  // One that came after the run's last progress check.
   {
     py::gil_scoped_release release;
     const StopHandlersDuringRun stop_handlers;
@@ -99,19 +112,24 @@ SceneRunHandle Simulate(const SceneHandle& handle, bool progress) {
                               handle.scene.solver.end_time_s, stderr, progress);
     try {
       auto run = std::make_shared<SceneRun>(RunScene(handle.scene, [&](double t_s) {
-        if (StopSignal() != 0) throw RunStopped{StopSignal()};
+        if (const int signal = StopSignal(); signal != 0) throw RunStopped{signal, t_s};
         reporter.Update(t_s);
       }));
       reporter.Finish(run->result.summary.dt_used_s *
                       static_cast<double>(run->result.summary.steps_taken));
       out.run = std::move(run);
+      late_signal = StopSignal();
     } catch (const InputError& e) {
       throw InputError(handle.path + ": " + e.what());
     } catch (const RunStopped& s) {
-      stopped_by = s.signal;
+      stopped = s;
     }
   }
-  RaiseStop(stopped_by);
+  if (stopped) {
+    RaiseStop(stopped->signal);
+    ThrowStopped(handle.scene, *stopped);
+  }
+  RaiseStop(late_signal);
   for (int z : out.run->recorded_zones) out.zone_names.push_back(handle.scene.zones[z].name);
   out.summary_json = SceneRunToJson(handle.scene, *out.run).dump();
   return out;

@@ -91,13 +91,15 @@ py::dict Run(const StudyHandle& h, const std::string& database_path, std::option
     options.on_progress = CallbackListener(callback, raised);
   }
   StudyRunSummary summary;
+  int stop_signal = 0;  // The run's, or one that came after its last check.
   {
     py::gil_scoped_release release;
     const StopHandlersDuringRun stop_handlers;
     summary = RunStudy(h.file, options);
+    stop_signal = summary.stop_signal != 0 ? summary.stop_signal : StopSignal();
   }
   if (raised) throw std::move(*raised);
-  RaiseStop(summary.stop_signal);
+  RaiseStop(stop_signal);
   return SummaryDict(summary);
 }
 

@@ -236,6 +236,37 @@ TEST_F(Security, MeshesBeyondTheBudgetAreRefusedAtOnce) {
   EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
 }
 
+// 4b. One limit on the beams, whichever key makes them, stated with the memory they would take.
+
+TEST_F(Security, BeamsBeyondTheLimitAreRefusedAtTheKeyThatMakesThem) {
+  std::ifstream in(kSource + "/scenes/bundle_row.json");
+  Json row = Json::parse(in);
+  row["bundle"]["pins"] = 9999;  // With the wrapper, the 10000 beams a scene may hold.
+  WriteText(Path("most.json"), row.dump());
+  EXPECT_NO_THROW(LoadScene(Path("most.json")));
+  row["bundle"]["pins"] = 10000;
+  WriteText(Path("pins.json"), row.dump());
+  Refused("simulate DIR/pins.json --quiet",
+          {Path("pins.json") + ": bundle.pins: value 10000 makes 10000 pins, 10001 beams with the "
+                               "wrapper: a scene may hold at most 10000 beams; 10001 beams and "
+                               "70007 contact zones would take about 0.087 GB of memory"});
+  row["bundle"]["pins"] = 2000000000;  // Refused before a pin is placed.
+  WriteText(Path("huge.json"), row.dump());
+  Refused("simulate DIR/huge.json --quiet",
+          {"bundle.pins: value 2000000000 makes 2000000000 pins", "about 1.7e+04 GB"});
+  Json hex = Json::parse(std::ifstream(kSource + "/scenes/bundle_hex.json"));
+  hex["bundle"]["rings"] = 50;  // 7651 pins, with the 2349 beams below and the wrapper 10001.
+  for (int i = 0; i < 2349; ++i) {
+    Json beam = CanonicalScene()["beams"][0];
+    beam["name"] = "extra_" + std::to_string(i);
+    hex["beams"].push_back(beam);
+  }
+  WriteText(Path("rings.json"), hex.dump());
+  Refused("simulate DIR/rings.json --quiet",
+          {"bundle.rings: value 50 makes 7651 pins, 10001 beams with the wrapper and the 2349 of "
+           "\"beams\": a scene may hold at most 10000 beams"});
+}
+
 // 5. The fuzzers' seeds reach the limits through the parse path the fuzz targets use.
 
 TEST_F(Security, FuzzSeedsHitTheLimits) {

@@ -7,7 +7,6 @@
 #include "db/corrupt_rows.h"
 #include "db/report_queries.h"
 #include "db/study_queries.h"
-#include "formats/json_reader.h"
 #include "formats/study_file.h"
 #include "records/canonical_records.h"
 
@@ -41,7 +40,7 @@ namespace {
 
 StudyFileKind StoredKind(const std::string& database_path, const std::string& study) {
   const std::string file = database_path + ": stored study " + study;
-  return StudyKindOf(ParseJsonText(StoredStudySpec(database_path, study).value_or("{}"), file),
+  return StudyKindOf(StoredStudyJson(database_path, study).value_or(nlohmann::json::object()),
                      file);
 }
 

@@ -19,13 +19,42 @@ __all__ = [
 ]
 
 DEFAULT_DATABASE = "shockmap.db"
+_INT_MAX = 2**31 - 1  # A C int: element counts.
+_ID_MAX = 2**63 - 1  # An SQLite integer: row ids.
+
+
+def _excerpt(text):
+    """At most 40 characters of `text` for a message, control characters escaped."""
+    shown = text[:40].encode("unicode_escape").decode("ascii")
+    return shown + ("..." if len(text) > 40 else "")
+
+
+def _text(name, value):
+    """`value` (a str or a path) as str; InputError naming `name` when it holds a NUL byte, which
+    ends a path, a name or SQL text for the library (and would cut its messages short)."""
+    text = str(value)
+    if "\0" in text:
+        raise InputError(f'{name}: "{_excerpt(text)}" holds a NUL byte at character '
+                         f"{text.index(chr(0))}; a path, a name or SQL text cannot hold one")
+    return text
+
+
+def _integer(name, value, low, high):
+    """`value` as int; InputError naming `name` when it lies outside [low, high]."""
+    number = int(value)
+    if not low <= number <= high:
+        bits = number.bit_length()
+        shown = number if bits <= 256 else f"an integer of {bits} bits"
+        raise InputError(f"{name}: {shown} is outside [{low}, {high}]")
+    return number
 
 
 def compare(rk, rftrunc, *, dt=None, dt_factor=0.1, dt_rule="sharp", window_s=0.06,
             scheme="explicit-modal", rfref=None, elements=0):
     """One run of the paper's problem scored against its reference, as `shockmap compare`."""
-    return _shockmap.compare(float(rk), float(rftrunc), dt, float(dt_factor), dt_rule,
-                             float(window_s), scheme, rfref, int(elements))
+    return _shockmap.compare(float(rk), float(rftrunc), dt, float(dt_factor),
+                             _text("dt_rule", dt_rule), float(window_s), _text("scheme", scheme),
+                             rfref, _integer("elements", elements, 0, _INT_MAX))
 
 
 def _score(self, name):
@@ -47,12 +76,12 @@ class Scene:
 
     @classmethod
     def load(cls, path):
-        return cls(_shockmap.Scene.load(str(path)))
+        return cls(_shockmap.Scene.load(_text("path", path)))
 
     @classmethod
     def from_dict(cls, scene, path="<dict>"):
         """`path` names the scene in messages; data files are found beside it."""
-        return cls(_shockmap.Scene.from_json_text(_json.dumps(scene), str(path)))
+        return cls(_shockmap.Scene.from_json_text(_json.dumps(scene), _text("path", path)))
 
     def to_dict(self):
         return _json.loads(self._handle.json_text())
@@ -60,7 +89,7 @@ class Scene:
     def set(self, key, value):
         """Sets the parameter `key` ("bundle.wire.stiffness_n_per_m", "zones[0].gap_m") to a
         value of the type the scene holds there; the scene is checked again."""
-        self._handle.set(key, _json.dumps(value))
+        self._handle.set(_text("key", key), _json.dumps(value))
         return self
 
     @property
@@ -120,8 +149,9 @@ class SceneRun:
 
 
 def simulate(scene, progress=False):
-    """Runs `scene` (a Scene or a path) with the explicit modal solver. Ctrl-C stops it and
-    raises KeyboardInterrupt."""
+    """Runs `scene` (a Scene or a path) with the explicit modal solver. SIGINT, SIGTERM or
+    SIGHUP stops it and goes to the program's handler (Ctrl-C: KeyboardInterrupt); when that
+    handler returns, InterruptedError (a stopped simulation has no result)."""
     if not isinstance(scene, Scene):
         scene = Scene.load(scene)
     return SceneRun(_shockmap.simulate(scene._handle, bool(progress)))
@@ -135,7 +165,7 @@ class Study:
 
     @classmethod
     def load(cls, path):
-        return cls(_shockmap.Study.load(str(path)))
+        return cls(_shockmap.Study.load(_text("path", path)))
 
     name = property(lambda self: self._handle.name)
     kind = property(lambda self: self._handle.kind)
@@ -147,7 +177,9 @@ class Study:
         progress: False, True (the command line's progress lines on stderr), or a callable
         progress(phase, done, total). Ctrl-C stops the run as it stops `study run`: the points
         computed are stored, the others stay pending, and KeyboardInterrupt is raised."""
-        return self._handle.run(str(db), jobs, bool(retry_failed), progress)
+        if jobs is not None:
+            jobs = _integer("jobs", jobs, 1, 1024)
+        return self._handle.run(_text("db", db), jobs, bool(retry_failed), progress)
 
     def __repr__(self):
         return f"<shockmap.Study {self.name!r} ({self.kind}) from {self.path}>"
@@ -170,7 +202,7 @@ def _frame(table):
 def query(db, sql, *parameters):
     """One read-only SQL statement, as `shockmap query`; ?1, ?2 ... bound to `parameters`
     (None, int, float or str)."""
-    return _frame(_shockmap.query(str(db), sql, list(parameters)))
+    return _frame(_shockmap.query(_text("db", db), _text("sql", sql), list(parameters)))
 
 
 _RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",
@@ -180,7 +212,7 @@ _RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",
 def results(db=DEFAULT_DATABASE, study=None):
     """The study's rows of its results view (`results`, `scene_results` or `ensemble_results`),
     ordered by point; frame.attrs["units"] gives each declared column's unit."""
-    name, kind = _shockmap.study_and_kind(str(db), study or "")
+    name, kind = _shockmap.study_and_kind(_text("db", db), _text("study", study or ""))
     view = _RESULTS_VIEW[kind]
     order = "point_id" if kind != "scene_ensemble" else "1"
     return query(db, f"SELECT * FROM {view} WHERE study = ?1 ORDER BY {order}", name)
@@ -197,7 +229,7 @@ def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
                 break
         else:
             raise InputError(f"{key}: not a threshold; give NAME_max or NAME_min (err_max, srf_min)")
-    data = _json.loads(_shockmap.criteria_json(str(db), study or "", given))
+    data = _json.loads(_shockmap.criteria_json(_text("db", db), _text("study", study or ""), given))
     frame = _pd.DataFrame(data["boundary"])
     frame.attrs["criteria"] = data
     return frame
@@ -205,16 +237,18 @@ def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
 
 def sizing(db=DEFAULT_DATABASE, study=None, wear=False, quantile=0.95, confidence=0.95):
     """The sizing table of an ensemble study, as `sizing --format csv` (`--wear` with wear)."""
-    return _frame(_shockmap.sizing(str(db), study or "", bool(wear), float(quantile),
-                                   float(confidence)))
+    return _frame(_shockmap.sizing(_text("db", db), _text("study", study or ""), bool(wear),
+                                   float(quantile), float(confidence)))
 
 
 def reference(db, reference_id, scene=False):
     """A stored reference's signals as arrays ("t_s" first), by its id in reference_runs, or in
     scene_references with scene=True."""
-    return _shockmap.reference(str(db), int(reference_id), bool(scene))
+    return _shockmap.reference(_text("db", db), _integer("reference_id", reference_id, 1, _ID_MAX),
+                               bool(scene))
 
 
 def point(db, study, point_id):
     """A stored point of the paper's problem computed again against its stored reference."""
-    return _shockmap.point(str(db), study, int(point_id))
+    return _shockmap.point(_text("db", db), _text("study", study),
+                           _integer("point_id", point_id, 1, _ID_MAX))

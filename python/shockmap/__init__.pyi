@@ -195,8 +195,9 @@ class SceneRun:
         SceneRun is deleted."""
 
 def simulate(scene: Union[Scene, PathLike], progress: bool = False) -> SceneRun:
-    """Run a scene (or a scene file), as `shockmap simulate`. Releases the GIL; Ctrl-C stops it
-    and raises KeyboardInterrupt."""
+    """Run a scene (or a scene file), as `shockmap simulate`. Releases the GIL. SIGINT, SIGTERM
+    or SIGHUP stops it and goes to the program's handler (Ctrl-C: KeyboardInterrupt); when that
+    handler returns, InterruptedError (a stopped simulation has no result)."""
 
 class Study:
     """A study file of any kind: canonical, scene_sweep or scene_ensemble."""

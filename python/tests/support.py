@@ -4,6 +4,10 @@ import json
 import sqlite3
 
 CLI_ERROR_PREFIX = "shockmap: error: "  # app/error_report.cpp, for an InputError
+# The module's refusal of a text holding a NUL byte: the argument, the text escaped, the index.
+NUL_REFUSAL = (
+    '{}: "{}" holds a NUL byte at character {}; a path, a name or SQL text cannot hold one'
+)
 
 
 def cli_error_message(stderr):

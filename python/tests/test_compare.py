@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import shockmap
-from support import read_only, write_json
+from support import NUL_REFUSAL, read_only, write_json
 
 WINDOW_S = 0.03
 DT_FACTOR = 0.1
@@ -172,3 +172,16 @@ def test_bad_value_raises_input_error_naming_it(arguments, named):
     with pytest.raises(shockmap.InputError, match=named):
         shockmap.compare(**arguments)
     assert issubclass(shockmap.InputError, ValueError)
+
+
+@pytest.mark.parametrize("keyword", ["dt_rule", "scheme"])
+def test_a_nul_byte_in_a_text_argument_is_refused_whole(keyword):
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.compare(1000, 100, **{keyword: "sharp\0paper"})
+    assert str(raised.value) == NUL_REFUSAL.format(keyword, "sharp\\x00paper", 5)
+
+
+def test_a_huge_element_count_is_refused_naming_its_range():
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.compare(1000, 100, elements=10**30)
+    assert str(raised.value) == f"elements: {10**30} is outside [0, 2147483647]"

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import shockmap
-from support import cli_error_message, write_json
+from support import NUL_REFUSAL, cli_error_message, write_json
 
 TIMINGS = {"wall_s", "cpu_s", "build_wall_s"}  # The only summary entries that may differ.
 
@@ -237,6 +237,56 @@ def test_ctrl_c_stops_a_simulation(source_dir):
     assert out.startswith("KeyboardInterrupt"), (out, err)
 
 
+HANDLED_SIGNAL_SIMULATION = textwrap.dedent(
+    """
+    import os
+    import signal
+    import sys
+    import threading
+    import shockmap
+    scene, name, handler = sys.argv[1:]
+    number = getattr(signal, name)
+    received = []
+
+    def record(signum, frame):
+        received.append(signum)
+        if handler == "exits":
+            sys.exit(7)
+
+    signal.signal(number, record)
+    threading.Timer(1.5, os.kill, (os.getpid(), number)).start()
+    try:
+        shockmap.simulate(scene)
+    except InterruptedError as e:
+        print("InterruptedError", received == [number], e, flush=True)
+        sys.exit(0)
+    print("finished", received, flush=True)
+    """
+)
+
+
+@pytest.mark.parametrize("name", ["SIGTERM", "SIGHUP"])
+@pytest.mark.parametrize("handler", ["returns", "exits"])
+def test_a_python_handler_of_the_signal_that_stops_a_simulation_runs(source_dir, name, handler):
+    # The 217-pin bundle: several seconds of CPU, signalled after 1.5 s by the process itself.
+    scene = source_dir / "scenes" / "bundle_hex.json"
+    done = subprocess.run(
+        [sys.executable, "-c", HANDLED_SIGNAL_SIMULATION, str(scene), name, handler],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    if handler == "exits":  # The handler's SystemExit leaves simulate().
+        assert done.returncode == 7 and done.stdout == "", (done.returncode, done.stdout,
+                                                              done.stderr)
+        return
+    assert done.returncode == 0, (done.returncode, done.stdout, done.stderr)
+    assert done.stdout.startswith(
+        f'InterruptedError True simulate: scene "bundle_hex" stopped by {name} at '
+    ), done.stdout
+    assert done.stdout.rstrip().endswith("s simulated; a stopped simulation has no result")
+
+
 def test_the_interpreter_s_ctrl_c_is_back_after_a_run(source_dir):
     before = signal.getsignal(signal.SIGINT)
     shockmap.simulate(shockmap.Scene.load(source_dir / "scenes" / "cantilever_spring.json"))
@@ -244,3 +294,30 @@ def test_the_interpreter_s_ctrl_c_is_back_after_a_run(source_dir):
     with pytest.raises(KeyboardInterrupt):
         signal.raise_signal(signal.SIGINT)
         time.sleep(1)  # The interpreter raises it at its next check.
+
+
+def test_a_nul_byte_in_a_path_or_key_is_refused_whole(source_dir):
+    scene = shockmap.Scene.load(source_dir / "scenes" / "cantilever_spring.json")
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.Scene.load("scenes/cantilever\0spring.json")
+    assert str(raised.value) == NUL_REFUSAL.format("path", "scenes/cantilever\\x00spring.json", 17)
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.Scene.from_dict(scene.to_dict(), path="a\0b.json")
+    assert str(raised.value) == NUL_REFUSAL.format("path", "a\\x00b.json", 1)
+    with pytest.raises(shockmap.InputError) as raised:
+        scene.set("solver.r_ftrunc\0x", 30)
+    assert str(raised.value) == NUL_REFUSAL.format("key", "solver.r_ftrunc\\x00x", 15)
+
+
+def test_bundle_pins_beyond_the_beam_limit_are_refused_at_the_key_with_the_memory(source_dir):
+    path = source_dir / "scenes" / "bundle_row.json"
+    scene = shockmap.Scene.load(path)
+    scene.set("bundle.pins", 9999)  # 10000 beams with the wrapper: the most a scene may hold.
+    with pytest.raises(shockmap.InputError) as raised:
+        scene.set("bundle.pins", 10000)
+    assert str(raised.value) == (
+        f"{path}: bundle.pins: value 10000 makes 10000 pins, 10001 beams with the wrapper: a "
+        "scene may hold at most 10000 beams; 10001 beams and 70007 contact zones would "
+        "take about 0.087 GB of memory to run"
+    )
+    assert scene.to_dict()["bundle"]["pins"] == 9999

@@ -15,7 +15,7 @@ import time
 import pytest
 
 import shockmap
-from support import cli_error_message, read_only, write_json
+from support import NUL_REFUSAL, cli_error_message, read_only, write_json
 
 CANONICAL = {
     "kind": "canonical",
@@ -335,3 +335,79 @@ def test_criteria_of_an_ensemble_are_refused_as_the_command_line_refuses_them(sm
         shockmap.criteria(db, name)
     assert str(raised.value) == cli_error_message(printed.stderr)
     assert "shockmap sizing" in str(raised.value)
+
+
+INT64 = "[-9223372036854775808, 9223372036854775807]"
+
+
+def test_a_huge_integer_query_parameter_is_refused_naming_it(canonical):
+    _, db, _ = canonical
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.query(db, "SELECT ?", 1, 10**30)
+    assert str(raised.value) == (
+        f"parameters[1]: {10**30} is outside {INT64}, the integers SQLite stores; bind it as a "
+        "float or a str"
+    )
+    with pytest.raises(shockmap.InputError) as raised:
+        shockmap.query(db, "SELECT ?", -(10**400))
+    assert str(raised.value).startswith("parameters[0]: an integer of 1329 bits is outside ")
+
+
+@pytest.mark.parametrize(
+    "call, named",
+    [
+        (
+            lambda db, path: shockmap.Study.load(path).run(db=db, jobs=10**30),
+            "jobs: {} is outside [1, 1024]",
+        ),
+        (
+            lambda db, path: shockmap.reference(db, 10**30),
+            "reference_id: {} is outside [1, 9223372036854775807]",
+        ),
+        (
+            lambda db, path: shockmap.point(db, "small_grid", 10**30),
+            "point_id: {} is outside [1, 9223372036854775807]",
+        ),
+    ],
+)
+def test_a_huge_integer_keyword_is_refused_naming_its_range(canonical, call, named):
+    path, db, _ = canonical
+    with pytest.raises(shockmap.InputError) as raised:
+        call(db, path)
+    assert str(raised.value) == named.format(10**30)
+
+
+def test_a_nul_byte_in_a_path_name_or_sql_is_refused_whole(canonical, tmp_path):
+    _, db, _ = canonical
+    cut = str(tmp_path / "study\0.json")
+    calls = [
+        (lambda: shockmap.Study.load(cut), "path", cut),
+        (lambda: shockmap.query(f"{db}\0", "SELECT 1"), "db", f"{db}\0"),
+        (lambda: shockmap.query(db, "SELECT 1\0; SELECT 2"), "sql", "SELECT 1\0; SELECT 2"),
+        (lambda: shockmap.results(db, "small\0grid"), "study", "small\0grid"),
+        (lambda: shockmap.criteria(db, "small\0grid"), "study", "small\0grid"),
+    ]
+    for call, name, value in calls:
+        with pytest.raises(shockmap.InputError) as raised:
+            call()
+        shown = value[:40].encode("unicode_escape").decode() + ("..." if len(value) > 40 else "")
+        assert str(raised.value) == NUL_REFUSAL.format(name, shown, value.index("\0"))
+
+
+def test_corrupt_stored_study_json_is_a_database_error(canonical, tmp_path):
+    _, db, _ = canonical
+    copy = tmp_path / "corrupt.db"
+    with sqlite3.connect(db) as source, sqlite3.connect(copy) as target:
+        source.backup(target)
+    with sqlite3.connect(copy) as connection:
+        connection.execute("UPDATE studies SET spec_json = '{\"kind\": \"canonical\", '")
+    for call in (
+        lambda: shockmap.results(copy, "small_grid"),
+        lambda: shockmap.criteria(copy, "small_grid"),
+        lambda: shockmap.point(copy, "small_grid", 1),
+    ):
+        with pytest.raises(shockmap.DatabaseError) as raised:
+            call()
+        assert str(raised.value).startswith(
+            f"{copy}: database corrupt: study small_grid: spec_json: parse error at line 1"
+        ), str(raised.value)
