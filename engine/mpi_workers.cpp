@@ -32,7 +32,7 @@
 namespace shockmap {
 namespace {
 
-enum Tag : int { kTask = 1, kResult = 2, kQuit = 3, kBye = 4, kAlive = 5 };
+enum Tag : int { kTask = 1, kResult = 2, kQuit = 3, kBye = 4, kAlive = 5, kFinalize = 6 };
 
 using Clock = std::chrono::steady_clock;
 
@@ -220,6 +220,9 @@ class MpiWorkers final : public RemoteWorkers {
   // A worker's MPI thread: takes tasks and sends results (or a heartbeat when it has sent
   // nothing for kWorkerHeartbeatPeriodS) until rank 0 says quit.
   void Relay(WorkerQueues& q);
+  // A worker rank, after its goodbye: waits until rank 0 says that the job finalizes (or ends
+  // it with MPI_Abort, which kills this rank meanwhile).
+  void AwaitFinalize();
 
   int threads_;
   double rank_timeout_s_;
@@ -335,7 +338,10 @@ void MpiWorkers::LoseSilentRanks(Schedule& schedule, const Describe& describe) {
 
 // Tells every worker rank not lost to quit and waits for each one's goodbye, discarding late
 // results and heartbeats. A rank silent for the rank timeout meanwhile (stopped after its last
-// task) is lost, not waited for.
+// task) is lost, not waited for. Then, when no rank was lost, tells the worker ranks to finalize.
+// When one was, the live worker ranks stay out of MPI_Finalize, whose fence could not complete:
+// Open MPI 4.1's mpirun, aborting a job whose ranks wait in that fence, often deadlocks or
+// crashes in its own PMIx_server_finalize once every rank has ended (docs/cluster.md).
 void MpiWorkers::EndJob() {
   std::set<int> waiting;
   for (int r = 1; r < size_; ++r) {
@@ -366,6 +372,8 @@ void MpiWorkers::EndJob() {
     }
     backoff.Wait();
   }
+  if (!lost_.empty()) return;
+  for (int r = 1; r < size_; ++r) MPI_Send(nullptr, 0, MPI_BYTE, r, kFinalize, MPI_COMM_WORLD);
 }
 
 void MpiWorkers::Serve(const Execute& execute) {
@@ -403,6 +411,12 @@ void MpiWorkers::Serve(const Execute& execute) {
   }  // The threads finish the task they hold; its result is dropped.
   while (!sends_.Empty()) sends_.Progress();
   MPI_Send(nullptr, 0, MPI_BYTE, 0, kBye, MPI_COMM_WORLD);
+  AwaitFinalize();
+}
+
+void MpiWorkers::AwaitFinalize() {
+  Backoff backoff;
+  while (!Receive(0, kFinalize)) backoff.Wait();
 }
 
 void MpiWorkers::Relay(WorkerQueues& q) {
