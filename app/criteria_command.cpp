@@ -49,15 +49,18 @@ void Check(const CriteriaFlags& f) {
   const std::string study = ResolveCanonicalStudy(f.database_path, f.study, "criteria check");
   const auto points = LoadCriteriaPoints(f.database_path, study);
   const ValidityCriteria current = DeriveCriteria(points, baseline.options);
-  const auto problems = CheckAgainstBaseline(baseline, tolerances, current, points);
-  if (problems.empty()) {
+  const BaselineCheck check = CheckAgainstBaseline(baseline, tolerances, current, points);
+  if (check.contradictions.empty()) {
     std::cout << "criteria check: study " << study << " agrees with " << f.baseline << " ("
-              << points.size() << " points)\n";
-    return;
+              << points.size() << " points)"
+              << (check.not_comparable.empty() ? "" : " wherever their grids compare") << "\n";
+  } else {
+    std::cout << "criteria check: study " << study << " contradicts " << f.baseline << ":\n";
+    for (const auto& p : check.contradictions) std::cout << "  " << p << '\n';
   }
-  std::cout << "criteria check: study " << study << " contradicts " << f.baseline << ":\n";
-  for (const auto& p : problems) std::cout << "  " << p << '\n';
-  throw CLI::RuntimeError(kExitFailure);  // The data contradicts the baseline.
+  for (const auto& n : check.not_comparable) std::cout << "  " << n << '\n';
+  // The data contradicts the baseline.
+  if (!check.contradictions.empty()) throw CLI::RuntimeError(kExitFailure);
 }
 
 }  // namespace

@@ -36,9 +36,22 @@ ProgressReporter::ProgressReporter(std::string phase, std::string unit, double t
       start_(std::chrono::steady_clock::now()),
       last_print_(start_) {}
 
+void ProgressReporter::HoldEstimate() {
+  estimate_held_ = true;
+  estimate_started_ = false;
+}
+
+void ProgressReporter::StartEstimate(double done) {
+  estimate_held_ = false;
+  estimate_started_ = true;
+  estimate_start_ = std::chrono::steady_clock::now();
+  estimate_start_done_ = done;
+}
+
 void ProgressReporter::Update(double done, std::string_view detail) {
   if (!enabled_ && !listener_) return;
   const auto now = std::chrono::steady_clock::now();
+  if (!estimate_held_ && !estimate_started_ && done > 0.0) StartEstimate(done);
   const double since = std::chrono::duration<double>(now - last_print_).count();
   if (since < (terminal_ || listener_ ? kBarInterval_s : kLineInterval_s)) return;
   last_print_ = now;
@@ -57,8 +70,7 @@ void ProgressReporter::Print(double done, std::string_view detail, bool final_li
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   const double rate = elapsed > 0.0 ? done / elapsed : 0.0;
   const std::string eta =
-      final_line ? "took " + FormatDuration(elapsed)
-                 : "ETA " + (rate > 0.0 ? FormatDuration((total_ - done) / rate) : "?");
+      final_line ? "took " + FormatDuration(elapsed) : Eta(done, std::chrono::steady_clock::now());
   std::string line =
       fmt::format("{} {:.4g}/{:.4g} {}, {:.3g}/s, {}", phase_, done, total_, unit_, rate, eta);
   if (!detail.empty()) line += fmt::format(", {}", detail);
@@ -72,6 +84,15 @@ void ProgressReporter::Print(double done, std::string_view detail, bool final_li
     std::fprintf(out_, "progress: %s\n", line.c_str());
   }
   std::fflush(out_);
+}
+
+std::string ProgressReporter::Eta(double done, std::chrono::steady_clock::time_point now) const {
+  const double since = std::chrono::duration<double>(now - estimate_start_).count();
+  const double done_since = done - estimate_start_done_;
+  if (estimate_held_ || !estimate_started_ || done_since <= 0.0 || since < kEstimateAfter_s) {
+    return "ETA estimating";
+  }
+  return "ETA " + FormatDuration((total_ - done) * since / done_since);
 }
 
 }  // namespace shockmap

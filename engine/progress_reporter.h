@@ -28,10 +28,21 @@ class ProgressReporter {
   void Update(double done, std::string_view detail = {});
   // The phase's last line, always printed when enabled.
   void Finish(double done, std::string_view detail = {});
+  // The ETA is the rate since the estimate's start: the first update with work done (the wait
+  // for the first item is no rate), or the last StartEstimate. Until an item more is done and
+  // kEstimateAfter_s has passed since that start, and while held, the line says
+  // "ETA estimating". Hold it while the phase waits on another (the points on their
+  // references), and start it again, with the work done then, when the wait is over.
+  void HoldEstimate();
+  void StartEstimate(double done);
+
+  static constexpr double kEstimateAfter_s = 1.0;
 
  private:
   void Report(double done, std::string_view detail, bool final_line);
   void Print(double done, std::string_view detail, bool final_line);
+  // "ETA 3 min 20 s", or "ETA estimating" (see HoldEstimate).
+  std::string Eta(double done, std::chrono::steady_clock::time_point now) const;
 
   std::string phase_;
   std::string unit_;
@@ -42,6 +53,10 @@ class ProgressReporter {
   ProgressListener listener_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;
+  bool estimate_held_ = false;
+  bool estimate_started_ = false;
+  std::chrono::steady_clock::time_point estimate_start_;
+  double estimate_start_done_ = 0.0;
 };
 
 // "12 s", "3 min 20 s", "1 h 05 min": a duration for a progress line.

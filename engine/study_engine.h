@@ -354,6 +354,9 @@ class StudyRun {
                                         stderr, options_.progress, options_.on_progress);
     ProgressReporter point_progress("points", "done", static_cast<double>(to_compute_.size()),
                                     stderr, options_.progress, options_.on_progress);
+    // While references are computed the points wait on them: no rate of theirs foretells the
+    // rest until the last reference is stored.
+    if (n_references > 0) point_progress.HoldEstimate();
     auto reference_detail = [&] {
       return "unconverged " + std::to_string(summary_.references_unconverged) + ", failed " +
              std::to_string(summary_.references_failed);
@@ -363,6 +366,7 @@ class StudyRun {
     };
     auto finish_references = [&] {
       reference_progress.Finish(references_done(), reference_detail());
+      point_progress.StartEstimate(static_cast<double>(summary_.points_computed));
       summary_.reference_wall_s = timer.WallSeconds();
     };
     using Scored = std::pair<std::int64_t, Outcome>;  // point_id, outcome

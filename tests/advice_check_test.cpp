@@ -3,6 +3,7 @@
 // mesh that resolves it, listed settings and scene_set are read and refused as files are, and
 // a deliberately bad advice is reported as failing.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -82,6 +83,20 @@ TEST(AdviceLadder, TheVerdictSaysWhetherTheAdviceIsTheConvergedSetting) {
   EXPECT_NE(at_advice.find("it is the converged setting"), std::string::npos) << at_advice;
   EXPECT_NE(at_advice.find("x 1/3 of it is not enough for the duct pad."), std::string::npos)
       << at_advice;
+  // The table shows every rung's quantile with its interval, so that the converged rung is on
+  // the page beside the advised one, each named in its column's header.
+  const Table table = AdviceCheckTable(check);
+  ASSERT_EQ(table.columns.size(), 9u);
+  EXPECT_EQ(table.columns[3], "x 1/3 (N)");
+  EXPECT_EQ(table.columns[4], "x 1, advised, converged (N)");
+  EXPECT_EQ(table.columns[5], "x 3 (N)");
+  for (std::size_t i = 0; i < table.rows.size(); ++i) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      const QuantileInterval& q = check.families[i].rungs[k].sizing;
+      EXPECT_EQ(std::get<std::string>(table.rows[i][3 + k]),
+                fmt::format("{:.4g} [{:.4g}, {:.4g}]", q.estimate, q.lower, q.upper));
+    }
+  }
   check.families = {family(ZoneFamily::kPinPinWire, 0.0), family(ZoneFamily::kDuctPad, 0.0)};
   check.converged = 0;
   const std::string below = AdviceVerdict(check, 0.95);

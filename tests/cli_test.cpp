@@ -1,11 +1,15 @@
 // The command line as a user meets it: exit codes, messages naming the flag, JSON keys.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
 #include <string>
 
 #include "tests/run_command.h"
@@ -117,6 +121,50 @@ TEST(AdviseCommand, TheShippedBundleIsCheckedAndAnEditedOneIsNot) {
       << changed.output;
   EXPECT_NE(changed.output.find("check-advice STUDY.json --record FILE"), std::string::npos)
       << changed.output;
+}
+
+// A number as the README writes it ("0.490"), rounded to as many decimals.
+std::string AsQuoted(double value, const std::string& quoted) {
+  const auto point = quoted.find('.');
+  const int decimals = point == std::string::npos ? 0 : static_cast<int>(quoted.size() - point - 1);
+  return fmt::format("{:.{}f}", value, decimals);
+}
+
+// The scores the README quotes for the paper's Fig. 3 (R_k = 3000: its defaults table and its
+// fidelity paragraph), read from README.md itself, are what `compare` gives at each truncation.
+TEST(Readme, QuotesTheFig3ScoresCompareGives) {
+  const std::string readme =
+      shockmap::testing::ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/README.md");
+  std::map<std::string, nlohmann::json> runs;  // By R_ftrunc as quoted.
+  auto run = [&](const std::string& r_ftrunc) -> const nlohmann::json& {
+    if (!runs.contains(r_ftrunc)) {
+      const Outcome o = RunShockmap("compare --rk 3000 --rftrunc " + r_ftrunc + " --json");
+      EXPECT_EQ(o.exit_code, 0) << o.output;
+      runs[r_ftrunc] = nlohmann::json::parse(o.output);
+    }
+    return runs[r_ftrunc];
+  };
+  const std::regex table_row(R"(\| (\d+) \| (\d+) \| ([0-9.]+) \| ([0-9.]+) \|)");
+  const auto table = readme.find("| R_ftrunc | modes | Err | SRf |");
+  ASSERT_NE(table, std::string::npos);
+  std::istringstream rows(readme.substr(table));
+  int checked = 0;
+  for (std::string line; std::getline(rows, line) && line.starts_with("|");) {
+    std::smatch m;
+    if (!std::regex_match(line, m, table_row)) continue;
+    const nlohmann::json& j = run(m[1]);
+    EXPECT_EQ(m[2], std::to_string(j["n_modes"].get<int>())) << line;
+    EXPECT_EQ(m[3], AsQuoted(j["err"].get<double>(), m[3])) << line;
+    EXPECT_EQ(m[4], AsQuoted(j["srf"].get<double>(), m[4])) << line;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+  const std::regex trend(
+      R"(Err gives the Fig\. 3 trend \(([0-9.]+) and ([0-9.]+) at\s+R_ftrunc (\d+) and (\d+), R_k = 3000\))");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(readme, m, trend));
+  EXPECT_EQ(m[1], AsQuoted(run(m[3])["err"].get<double>(), m[1]));
+  EXPECT_EQ(m[2], AsQuoted(run(m[4])["err"].get<double>(), m[2]));
 }
 
 TEST(CompareCommand, HelpExitsZero) {

@@ -25,6 +25,7 @@
 #include "views/html_text.h"
 #include "views/map_grid.h"
 #include "views/scored_points.h"
+#include "views/study_verdict.h"
 
 namespace shockmap {
 namespace {
@@ -753,6 +754,42 @@ TEST(Fig3Svg, MinMaxPerColumnKeepsThePeaksAndStopsWhereTheRunDid) {
   s.values[5000] = NAN;
   const auto cut = MinMaxPerColumn(s, 0.0, s.EndTime(), 100);
   EXPECT_DOUBLE_EQ(cut.back().t_s, s.TimeAt(4999));
+}
+
+// A study from R_k = 1000 up, on R_ftrunc 31.6 to 1000, whose points pass from 3 sqrt(R_k): its
+// boundary rises at its first R_k, so its rule says nothing of a smaller R_k. Each failing
+// point is counted once, by the scores it fails together: 5 fail, 3 of them SRf as well.
+TEST(StudyVerdict, SpeaksOnlyOfTheStudiedRkAndCountsEachFailingPointOnce) {
+  std::vector<ScoredPoint> points;
+  for (double r_k : {1000.0, 3162.28, 1e4}) {
+    for (double r_ftrunc : {31.6228, 100.0, 316.228, 1000.0}) {
+      ScoredPoint p;
+      p.point_id = static_cast<std::int64_t>(points.size()) + 1;
+      p.r_k = r_k;
+      p.r_ftrunc = r_ftrunc;
+      p.status = RunStatus::kOk;
+      p.dt_s = 1e-6;
+      p.dt_sharp_s = 1e-5;
+      p.scores.Set("err", r_ftrunc >= 3.0 * std::sqrt(r_k) ? 0.05 : 0.3);
+      p.scores.Set("srf", r_ftrunc < 50.0 ? 0.5 : 0.95);
+      points.push_back(p);
+    }
+  }
+  const ValidityCriteria criteria = DeriveCriteria(points, CriteriaOptions{});
+  ASSERT_TRUE(criteria.fit);
+  EXPECT_EQ(criteria.fit->knee_r_k, 1000.0);
+  const std::string verdict = StudyVerdict("stiff", criteria, points, Table{});
+  EXPECT_EQ(verdict.find("below it"), std::string::npos) << verdict;
+  EXPECT_EQ(verdict.find("R_ftrunc >= 31.6"), std::string::npos) << verdict;
+  EXPECT_NE(verdict.find(" at R_k = 1000 to 1e+04 ("), std::string::npos) << verdict;
+  EXPECT_NE(verdict.find("It holds over the studied R_k = 1000 to 1e+04 (3 values) and says "
+                         "nothing outside them."),
+            std::string::npos)
+      << verdict;
+  EXPECT_NE(verdict.find("7 pass and 5 fail the thresholds (2 by Err alone, 3 by Err and SRf "
+                         "together)"),
+            std::string::npos)
+      << verdict;
 }
 
 TEST(ReportHtml, EscapesWhatComesFromUserFiles) {

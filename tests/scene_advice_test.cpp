@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -55,6 +56,33 @@ TEST(SceneAdvice, ZoneStiffnessRatioAndTruncationFollowTheCriteria) {
   Scene lower = ShippedScene("cantilever_spring");
   lower.zones[0].height_m = 0.5;
   EXPECT_NEAR(AdviseScene(lower, criteria).zones[0].r_k_a, 375.0, 375.0 * 1e-6);
+}
+
+// A Hertz zone has no single stiffness: the advice takes its tangent p k d_b^(p-1) at the bound
+// penetration d_b (what the stability bound takes), and says so, naming the law and d_b.
+TEST(SceneAdvice, APowerLawZoneSaysHowItWasLinearised) {
+  const std::string file = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json";
+  nlohmann::json json = ReadJsonFile(file);
+  json["zones"][0].erase("stiffness_n_per_m");
+  json["zones"][0]["power_law"] = {{"coefficient_n_per_m_exponent", 4e10},
+                                   {"bound_penetration_m", 1e-5}};
+  const Scene scene = ParseScene(json, file);
+  const double tangent = 1.5 * 4e10 * std::sqrt(1e-5);
+  ASSERT_DOUBLE_EQ(scene.zones[0].stiffness_n_per_m, tangent);
+  const SceneAdvice a = AdviseScene(scene, ShippedCriteria());
+  const std::string text = SceneAdviceSummary(scene, a, true);
+  EXPECT_NE(text.find(fmt::format(
+                "power law    zone tip_spring: F = k d^1.5 (k = 4e+10 N/m^1.5) linearised as its "
+                "tangent stiffness p k d_b^(p-1) = {:.4g} N/m at the bound penetration d_b = "
+                "1e-05 m",
+                tangent)),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(
+      SceneAdviceSummary(ShippedScene("cantilever_spring"),
+                         AdviseScene(ShippedScene("cantilever_spring"), ShippedCriteria()), true)
+          .find("power law"),
+      std::string::npos);
 }
 
 // The shipped bundles' zones lie inside the shipped criteria's R_k (0.01 to 1e6): no warning.

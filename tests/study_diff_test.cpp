@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "core/input_error.h"
@@ -108,6 +109,47 @@ TEST(StudyDiff, AKnownChangedPointIsReportedAloneWithTheBoundaryMoveAtItsRk) {
   EXPECT_EQ(n_changed, 1);
 }
 
+// B studied at R_ftrunc 10, 50, 100, 300 where A studied 10, 30, 100, 300: at R_k = 100 A's
+// boundary is 30 (10 fails) and B's 50 (10 fails), each decided by a point the other did not
+// study, so they are not comparable there; no point changed outcome. Once B's point at 100
+// fails too, its boundary (300, above a failing 100) is one A's passing 100 contradicts.
+TEST(StudyDiff, BoundariesOnDifferentGridsDifferOnlyWhereTheirDecidingPointsSaySo) {
+  DiffedStudy a = SyntheticStudy("a"), b = SyntheticStudy("b");
+  for (DiffPoint& p : b.points) {
+    if (p.scored.r_ftrunc == 30.0) {
+      p.scored.r_ftrunc = 50.0;
+      p.scored.scores.Set("err", 50.0 >= 3.0 * std::sqrt(p.scored.r_k) ? 0.05 : 0.3);
+    }
+  }
+  Derive(a);
+  Derive(b);
+  const StudyDiff d = DiffStudies(a, b, 1e-6);
+  EXPECT_TRUE(d.changed.empty());
+  ASSERT_EQ(d.criteria.size(), 3u);
+  for (const CriteriaRow& r : d.criteria) {
+    EXPECT_FALSE(r.TruncationDiffers() || r.DtDiffers()) << r.r_k;
+    EXPECT_EQ(r.Comparable(), r.r_k != 100.0) << r.r_k;
+  }
+  EXPECT_EQ(d.criteria[1].a->r_ftrunc_min, 30.0);
+  EXPECT_EQ(d.criteria[1].b->r_ftrunc_min, 50.0);
+  EXPECT_EQ(d.criteria[1].grids_differ, "R_ftrunc 30 in A only, 50 in B only");
+  const std::string text = DiffText(a, b, d);
+  EXPECT_NE(text.find("boundary     differs at 0 of 3 R_k; not comparable at 1"), std::string::npos)
+      << text;
+  EXPECT_NE(text.find("not comparable: grids differ at R_ftrunc 30 in A only, 50 in B only"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(DiffToJson(a, b, d)["criteria"]["by_r_k"][1]["comparable"], false);
+
+  PointAt(b, 100.0, 100.0).scored.scores.Set("err", 0.2);
+  Derive(b);
+  const StudyDiff moved = DiffStudies(a, b, 1e-6);
+  EXPECT_EQ(moved.criteria[1].b->r_ftrunc_min, 300.0);
+  EXPECT_TRUE(moved.criteria[1].TruncationDiffers());
+  EXPECT_TRUE(moved.criteria[1].Comparable());
+  EXPECT_NE(DiffText(a, b, moved).find("boundary     differs at 1 of 3 R_k\n"), std::string::npos);
+}
+
 // Points match when their numbers agree within the tolerance, and only then; a point of one
 // study only is counted on its side.
 TEST(StudyDiff, PointsMatchWithinTheToleranceAndThoseOfOneStudyAreCounted) {
@@ -158,6 +200,11 @@ class DiffCommand : public ::testing::Test {
     const std::string source = SHOCKMAP_SOURCE_DIR;
     nlohmann::json copy = nlohmann::json::parse(std::ifstream(source + "/studies/quick.json"));
     copy["name"] = "quick_copy";
+    nlohmann::json other_grid = copy;
+    other_grid["name"] = "quick_other_grid";
+    other_grid["grids"][0]["rk"] = {{"logspace", {3, 5, 5}}};
+    other_grid["grids"][0]["rftrunc"] = {{"logspace", {1.5, 3, 4}}};
+    other_grid["grids"][0]["dt"]["factor"] = {0.1, 0.5};
     nlohmann::json window = copy;
     window["name"] = "quick_window";
     window["scoring"]["window_s"] = 0.02;
@@ -172,13 +219,16 @@ class DiffCommand : public ::testing::Test {
                                  {"zone", "tip_spring"},
                                  {"window_s", 0.02},
                                  {"rest_duration_s", 0.005}}}};
-    for (const auto& [name, json] :
-         {std::pair{"copy", copy}, {"window", window}, {"sweep", sweep}}) {
+    for (const auto& [name, json] : {std::pair{"copy", copy},
+                                     {"other_grid", other_grid},
+                                     {"window", window},
+                                     {"sweep", sweep}}) {
       std::ofstream(dir_ / (std::string(name) + ".json")) << json.dump();
     }
     for (const std::string& file :
          {source + "/studies/quick.json", (dir_ / "copy.json").string(),
-          (dir_ / "window.json").string(), (dir_ / "sweep.json").string()}) {
+          (dir_ / "other_grid.json").string(), (dir_ / "window.json").string(),
+          (dir_ / "sweep.json").string()}) {
       const auto run = RunShockmap("study run " + file + " --db " + db_ + " --quiet");
       ASSERT_EQ(run.exit_code, 0) << run.output;
     }
@@ -238,6 +288,43 @@ TEST_F(DiffCommand, AScoreChangedInTheDatabaseIsThatPointAloneAndMovesItsRk) {
   for (const auto& row : report["criteria"]["by_r_k"]) {
     EXPECT_EQ(row["r_ftrunc_differs"].get<bool>(), row["r_k"].get<double>() == 1.0) << row;
   }
+}
+
+// quick against a study of R_k 1e3 to 1e5 on R_ftrunc 31.6, 100, 316, 1000 at dt 0.1 and 0.5
+// dt_sharp: the points studied in both keep their outcome, so no boundary may be said to differ;
+// where the grids decide it apart the table says so. `criteria check` of the other study
+// against quick's criteria agrees (exit 0) and names what it cannot compare.
+TEST_F(DiffCommand, AnotherGridIsNotComparableRatherThanADifferentBoundary) {
+  const auto json = RunShockmap("diff quick quick_other_grid --db " + db_ + " --format json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  const auto report = nlohmann::json::parse(json.output);
+  std::set<double> changed_r_k;
+  for (const auto& p : report["points"]["changed"]) changed_r_k.insert(p["r_k"].get<double>());
+  int not_comparable = 0;
+  for (const auto& row : report["criteria"]["by_r_k"]) {
+    const bool changed = changed_r_k.contains(row["r_k"].get<double>());
+    EXPECT_TRUE(!row["r_ftrunc_differs"].get<bool>() || changed) << row;
+    EXPECT_TRUE(!row["dt_differs"].get<bool>() || changed) << row;
+    not_comparable += !row["comparable"].get<bool>();
+  }
+  EXPECT_GT(not_comparable, 0) << report["criteria"]["by_r_k"];
+  const auto text = RunShockmap("diff quick quick_other_grid --db " + db_);
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("; not comparable at " + std::to_string(not_comparable) + ":"),
+            std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("not comparable: grids differ at R_ftrunc "), std::string::npos)
+      << text.output;
+
+  const std::string baseline = (dir_ / "quick_criteria.json").string();
+  const auto derive = RunShockmap("criteria derive quick --db " + db_ + " --out " + baseline);
+  ASSERT_EQ(derive.exit_code, 0) << derive.output;
+  const auto check =
+      RunShockmap("criteria check quick_other_grid --db " + db_ + " --baseline " + baseline);
+  EXPECT_EQ(check.exit_code, 0) << check.output;
+  EXPECT_NE(check.output.find("agrees with " + baseline), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("not comparable: grids differ at R_k"), std::string::npos)
+      << check.output;
 }
 
 TEST_F(DiffCommand, RefusesAnUnknownStudyAnotherWindowAndASceneSweep) {

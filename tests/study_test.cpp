@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -562,6 +563,56 @@ TEST(ProgressReporter, PrintsAPlainFinalLineOffATerminal) {
   EXPECT_EQ(FormatDuration(59.4), "59 s");
   EXPECT_EQ(FormatDuration(200), "3 min 20 s");
   EXPECT_EQ(FormatDuration(3900), "1 h 05 min");
+}
+
+// Every line printed to `out`.
+std::vector<std::string> LinesOf(std::FILE* out) {
+  std::rewind(out);
+  std::vector<std::string> lines;
+  char line[512] = {};
+  while (std::fgets(line, sizeof line, out) != nullptr) lines.emplace_back(line);
+  return lines;
+}
+
+// No ETA before one can be estimated: the wait for the first item done is no rate (a first
+// point done after 0.2 s of references would otherwise foretell total / done times 0.2 s), nor
+// is a phase held while it waits on another; the rate counts from the start of the estimate.
+// A listener makes the reporter print every 0.1 s off a terminal too.
+TEST(ProgressReporter, SaysEstimatingUntilARateCanBeMeasured) {
+  std::FILE* out = std::tmpfile();
+  ASSERT_NE(out, nullptr);
+  ProgressReporter progress("points", "done", 1000, out, true, [](auto, auto, auto) {});
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  progress.Update(1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  progress.Update(101);
+  ASSERT_EQ(LinesOf(out).size(), 2u);
+  EXPECT_NE(LinesOf(out)[0].find("progress: points 1/1000 done, "), std::string::npos);
+  EXPECT_NE(LinesOf(out)[0].find(", ETA estimating"), std::string::npos) << LinesOf(out)[0];
+  // 100 points in at least 1.1 s since the first: 899 more in at least 9.9 s.
+  const std::string second = LinesOf(out)[1];
+  const auto eta = second.find(", ETA ");
+  ASSERT_NE(eta, std::string::npos) << second;
+  EXPECT_GE(std::atoi(second.c_str() + eta + 6), 9) << second;
+  std::fclose(out);
+
+  std::FILE* held = std::tmpfile();
+  ASSERT_NE(held, nullptr);
+  ProgressReporter waiting("points", "done", 1000, held, true, [](auto, auto, auto) {});
+  waiting.HoldEstimate();
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  waiting.Update(5);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  waiting.Update(10);
+  waiting.StartEstimate(10);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  waiting.Update(20);
+  const auto lines = LinesOf(held);
+  ASSERT_EQ(lines.size(), 3u);
+  for (const std::string& line : lines) {
+    EXPECT_NE(line.find("ETA estimating"), std::string::npos) << line;
+  }
+  std::fclose(held);
 }
 
 // The CLI reports both phases of a study (stderr is a pipe here: plain lines), and a rerun

@@ -168,16 +168,21 @@ RkBoundary BoundaryAt(double r_k, const std::vector<const ScoredPoint*>& at,
   for (const auto* p : at) truncations.push_back(p->r_ftrunc);
   std::ranges::sort(truncations);
   truncations.erase(std::unique(truncations.begin(), truncations.end()), truncations.end());
-  for (double r : truncations) {
-    if (passes_from(r, ratios.front())) {
-      b.r_ftrunc_min = r;
+  b.r_ftrunc_below = truncations.back();
+  for (std::size_t i = 0; i < truncations.size(); ++i) {
+    if (passes_from(truncations[i], ratios.front())) {
+      b.r_ftrunc_min = truncations[i];
+      b.r_ftrunc_below = i > 0 ? truncations[i - 1] : 0.0;
       break;
     }
   }
   if (!b.r_ftrunc_min) return b;
-  for (double ratio : ratios) {
-    if (!passes_from(*b.r_ftrunc_min, ratio)) break;
-    b.dt_ratio_max = ratio;
+  for (std::size_t i = 0; i < ratios.size(); ++i) {
+    if (!passes_from(*b.r_ftrunc_min, ratios[i])) {
+      b.dt_ratio_above = ratios[i];
+      break;
+    }
+    b.dt_ratio_max = ratios[i];
   }
   return b;
 }
@@ -298,9 +303,11 @@ std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& u
 std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
                                               const std::vector<ScoredPoint>& points) {
   std::vector<Contradiction> found;
-  if (!criteria.fit || !criteria.dt_ratio_max) return found;
+  if (!criteria.fit || !criteria.dt_ratio_max || criteria.boundary.empty()) return found;
+  const double r_k_low = criteria.boundary.front().r_k, r_k_high = criteria.boundary.back().r_k;
   for (const auto& p : points) {
     if (!Scorable(p)) continue;
+    if (p.r_k < r_k_low * (1 - 1e-9) || p.r_k > r_k_high * (1 + 1e-9)) continue;
     const double required = *criteria.RequiredRFtrunc(p.r_k);
     if (p.r_ftrunc < required * (1 - 1e-9) || p.DtRatio() > *criteria.dt_ratio_max * (1 + 1e-9)) {
       continue;

@@ -69,8 +69,14 @@ struct RkBoundary {
   int n_points = 0;
   int n_passing = 0;
   std::optional<double> r_ftrunc_min;
+  // The studied truncation below r_ftrunc_min, the largest (0 when r_ftrunc_min is the
+  // smallest studied), or the largest studied when none passes: the grid puts the boundary
+  // above it. Unknown (nullopt) in a baseline written before it was recorded.
+  std::optional<double> r_ftrunc_below;
   // Largest dt / dt_sharp such that every point at or below it, at or above r_ftrunc_min, passes.
   std::optional<double> dt_ratio_max;
+  // The smallest studied dt / dt_sharp above dt_ratio_max (nullopt: it is the largest studied).
+  std::optional<double> dt_ratio_above;
   // The smallest dt / dt_sharp at which a point diverged or ended unstable, and the largest
   // below it at which a point ended ok: every point at or below it stayed stable.
   std::optional<double> largest_stable_dt_ratio;
@@ -142,7 +148,9 @@ struct Contradiction {
 };
 
 // Stored points that meet the criteria (truncation at least the required one, dt / dt_sharp at
-// most dt_ratio_max) but fail a threshold or did not run to the end.
+// most dt_ratio_max) but fail a threshold or did not run to the end, at the R_k the criteria
+// were derived over (from their smallest studied R_k to their largest): the criteria say
+// nothing beyond them.
 std::vector<Contradiction> FindContradictions(const ValidityCriteria& criteria,
                                               const std::vector<ScoredPoint>& points);
 

@@ -203,17 +203,31 @@ std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
 
 Table AdviceCheckTable(const AdviceCheck& check) {
   Table t;
-  t.columns = {"state",         "family", "hottest zone",  "advised (N)",
-               "converged (N)", "holds",  "coarser holds", "suffices from"};
+  t.columns = {"state", "family", "hottest zone"};
+  for (std::size_t k = 0; k < check.factors.size(); ++k) {
+    const bool advised = static_cast<int>(k) == check.advised;
+    const bool converged = check.converged && static_cast<int>(k) == *check.converged;
+    const std::string role = advised && converged ? ", advised, converged"
+                             : advised            ? ", advised"
+                             : converged          ? ", converged"
+                                                  : "";
+    t.columns.push_back(fmt::format("x {}{} (N)", Factor(check.factors[k]), role));
+  }
+  for (const char* column : {"holds", "coarser holds", "suffices from"})
+    t.columns.push_back(column);
   auto yes_no = [](std::optional<bool> b) { return std::string(!b ? "-" : *b ? "yes" : "no"); };
   for (const FamilyLadder& f : check.families) {
     const std::optional<bool> coarser =
         check.advised > 0 ? RungHolds(check, f, check.advised - 1) : std::nullopt;
-    t.rows.push_back({f.state, FamilyName(f.family), f.zone, Shown(f.rungs[check.advised].sizing),
-                      check.converged ? Shown(f.rungs[*check.converged].sizing) : std::string("-"),
-                      yes_no(AdviceHolds(check, f)), yes_no(coarser),
-                      f.convergence.rung ? "x " + Factor(check.factors[*f.convergence.rung])
-                                         : std::string("-")});
+    std::vector<TableCell> row{f.state, FamilyName(f.family), f.zone};
+    for (std::size_t k = 0; k < check.factors.size(); ++k) {
+      row.emplace_back(k < f.rungs.size() ? Shown(f.rungs[k].sizing) : std::string("-"));
+    }
+    row.emplace_back(yes_no(AdviceHolds(check, f)));
+    row.emplace_back(yes_no(coarser));
+    row.emplace_back(f.convergence.rung ? "x " + Factor(check.factors[*f.convergence.rung])
+                                        : std::string("-"));
+    t.rows.push_back(std::move(row));
   }
   return t;
 }

@@ -60,8 +60,9 @@ std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& fa
 // rung would do.
 std::string AdviceVerdict(const AdviceCheck& check, double quantile);
 
-// Per state and family: the advised rung's and the converged rung's sizing quantile with their
-// intervals, whether the advice holds, whether the coarser rung would, the rung that suffices.
+// Per state and family: every rung's sizing quantile with its interval, coarsest first, the
+// advised and the converged rung named in their column's header ("x 1, advised (N)"), whether
+// the advice holds, whether the coarser rung would, the rung that suffices.
 Table AdviceCheckTable(const AdviceCheck& check);
 
 }  // namespace shockmap

@@ -10,6 +10,7 @@
 #include "formats/counted.h"
 #include "formats/json_reader.h"
 #include "formats/study_spec.h"
+#include "validation/boundary_comparison.h"
 
 namespace shockmap {
 namespace {
@@ -36,6 +37,8 @@ constexpr Allowed kDtRatio{0.0, 1e3};
 // As a study's axes allow (formats/study_spec.cpp).
 constexpr Allowed kRk{0.0, kMaxRk};
 constexpr Allowed kRftrunc{1.0, 1e5, false};
+// 0: nothing studied below the boundary.
+constexpr Allowed kRftruncBelow{0.0, 1e5, false};
 constexpr Allowed kExponent{-10.0, 10.0, false};
 constexpr Allowed kCoefficient{0.0, 1e12};
 constexpr Allowed kSpread{0.0, 1e3, false};  // A standard error or residual.
@@ -134,7 +137,9 @@ Json CriteriaToJson(const std::string& study, const ValidityCriteria& c,
                         {"n_points", b.n_points},
                         {"n_passing", b.n_passing},
                         {"r_ftrunc_min", OrNull(b.r_ftrunc_min)},
+                        {"r_ftrunc_below", OrNull(b.r_ftrunc_below)},
                         {"dt_ratio_max", OrNull(b.dt_ratio_max)},
+                        {"dt_ratio_above", OrNull(b.dt_ratio_above)},
                         {"largest_stable_dt_ratio", OrNull(b.largest_stable_dt_ratio)},
                         {"smallest_diverged_dt_ratio", OrNull(b.smallest_diverged_dt_ratio)}});
   }
@@ -201,7 +206,9 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
       rb.n_points = b.Integer("n_points", 0);
       rb.n_passing = b.Integer("n_passing", 0);
       rb.r_ftrunc_min = OptionalNumber(b, "r_ftrunc_min", kRftrunc);
+      rb.r_ftrunc_below = OptionalNumber(b, "r_ftrunc_below", kRftruncBelow);
       rb.dt_ratio_max = OptionalNumber(b, "dt_ratio_max", kPassingDtRatio);
+      rb.dt_ratio_above = OptionalNumber(b, "dt_ratio_above", kDtRatio);
       rb.largest_stable_dt_ratio = OptionalNumber(b, "largest_stable_dt_ratio", kDtRatio);
       rb.smallest_diverged_dt_ratio = OptionalNumber(b, "smallest_diverged_dt_ratio", kDtRatio);
       b.Finish();
@@ -366,12 +373,70 @@ std::vector<std::string> CriteriaRuleLines(const ValidityCriteria& c,
   return lines;
 }
 
-std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
-                                              const CriteriaTolerances& t,
-                                              const ValidityCriteria& current,
-                                              const std::vector<ScoredPoint>& points) {
-  std::vector<std::string> problems;
-  if (baseline.fit.has_value() != current.fit.has_value()) {
+namespace {
+
+// The studied truncation at `r_k` below `r_ftrunc_min`, the largest (0 when none), or the
+// largest studied when r_ftrunc_min is none.
+double StudiedBelow(const std::vector<ScoredPoint>& points, double r_k,
+                    const std::optional<double>& r_ftrunc_min) {
+  double below = 0.0;
+  for (const ScoredPoint& p : points) {
+    if (std::abs(p.r_k - r_k) > 1e-9 * r_k) continue;
+    if (!r_ftrunc_min || p.r_ftrunc < *r_ftrunc_min * (1 - 1e-9))
+      below = std::max(below, p.r_ftrunc);
+  }
+  return below;
+}
+
+// "(100, 215.4]", "above 1000": where a grid put a truncation boundary.
+std::string Span(const ResolvedBoundary& b) {
+  if (!b.value) return fmt::format("above {:.4g}", b.low);
+  return fmt::format("({:.4g}, {:.4g}]", b.low, *b.value);
+}
+
+// Why the fits and the time-step bounds of two criteria cannot be set side by side: derived over
+// different R_k, or with a different smallest truncation (the knee is the first R_k whose
+// boundary rises above it); nullopt when they can.
+std::optional<std::string> FitGridDifference(const ValidityCriteria& baseline,
+                                             const ValidityCriteria& current) {
+  auto r_ks = [](const ValidityCriteria& c) {
+    std::vector<double> r_k;
+    for (const RkBoundary& b : c.boundary) r_k.push_back(b.r_k);
+    return r_k;
+  };
+  const std::vector<double> was = r_ks(baseline), is = r_ks(current);
+  const bool same_r_k = std::ranges::equal(
+      was, is, [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max(x, y); });
+  if (!same_r_k) {
+    auto range = [](const std::vector<double>& r) {
+      return r.empty() ? std::string("none")
+                       : fmt::format("{:.4g} to {:.4g} ({} values)", r.front(), r.back(), r.size());
+    };
+    return fmt::format(
+        "not comparable: grids differ at R_k (the baseline studied {}, the study {})", range(was),
+        range(is));
+  }
+  const double a = baseline.r_ftrunc_smallest_studied, b = current.r_ftrunc_smallest_studied;
+  if (std::abs(a - b) > 1e-9 * std::max(a, b)) {
+    return fmt::format(
+        "not comparable: grids differ at R_ftrunc (the smallest studied is {:g} in the baseline, "
+        "{:g} in the study)",
+        a, b);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+BaselineCheck CheckAgainstBaseline(const ValidityCriteria& baseline, const CriteriaTolerances& t,
+                                   const ValidityCriteria& current,
+                                   const std::vector<ScoredPoint>& points) {
+  BaselineCheck check;
+  std::vector<std::string>& problems = check.contradictions;
+  const std::optional<std::string> other_grid = FitGridDifference(baseline, current);
+  if (other_grid) {
+    check.not_comparable.push_back("criteria fit and dt/dt_sharp max: " + *other_grid);
+  } else if (baseline.fit.has_value() != current.fit.has_value()) {
     problems.push_back(fmt::format("criterion fit: baseline {}, now {}",
                                    baseline.fit ? "fitted" : "none",
                                    current.fit ? "fitted" : "none"));
@@ -391,7 +456,7 @@ std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
           fmt::format("criterion knee R_k: baseline {:.4g}, now {:.4g}", a.knee_r_k, b.knee_r_k));
     }
   }
-  if (baseline.dt_ratio_max && current.dt_ratio_max &&
+  if (!other_grid && baseline.dt_ratio_max && current.dt_ratio_max &&
       !WithinFactor(*baseline.dt_ratio_max, *current.dt_ratio_max, t.dt_ratio_factor)) {
     problems.push_back(fmt::format("criterion dt/dt_sharp max: baseline {:.4g}, now {:.4g}",
                                    *baseline.dt_ratio_max, *current.dt_ratio_max));
@@ -399,13 +464,23 @@ std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
   for (const auto& old : baseline.boundary) {
     for (const auto& now : current.boundary) {
       if (std::abs(now.r_k - old.r_k) > 1e-9 * old.r_k) continue;
-      const bool same = old.r_ftrunc_min.has_value() == now.r_ftrunc_min.has_value() &&
-                        (!old.r_ftrunc_min || std::abs(*old.r_ftrunc_min - *now.r_ftrunc_min) <=
-                                                  1e-9 * *old.r_ftrunc_min);
-      if (!same) {
-        problems.push_back(
-            fmt::format("criterion R_ftrunc_min at R_k = {:.4g}: baseline {}, now {}", old.r_k,
-                        Num(old.r_ftrunc_min), Num(now.r_ftrunc_min)));
+      // A baseline that did not record where its grid put the boundary is taken to share the
+      // study's grid.
+      const ResolvedBoundary was =
+          TruncationBoundary(old, StudiedBelow(points, old.r_k, old.r_ftrunc_min));
+      const ResolvedBoundary is = TruncationBoundary(now, 0.0);
+      const BoundaryComparison comparison = Compare(was, is);
+      if (comparison == BoundaryComparison::kAlike) continue;
+      const std::string line =
+          fmt::format("criterion R_ftrunc_min at R_k = {:.4g}: baseline {}, now {}", old.r_k,
+                      Num(old.r_ftrunc_min), Num(now.r_ftrunc_min));
+      if (comparison == BoundaryComparison::kDiffers) {
+        problems.push_back(line);
+      } else {
+        check.not_comparable.push_back(
+            fmt::format("{}: not comparable: grids differ at R_ftrunc (the baseline puts the "
+                        "boundary in {}, the study in {})",
+                        line, Span(was), Span(is)));
       }
     }
   }
@@ -413,7 +488,7 @@ std::vector<std::string> CheckAgainstBaseline(const ValidityCriteria& baseline,
     problems.push_back(fmt::format("point {} (R_k = {:.4g}, R_ftrunc = {:g}): {}", c.point.point_id,
                                    c.point.r_k, c.point.r_ftrunc, c.reason));
   }
-  return problems;
+  return check;
 }
 
 }  // namespace shockmap

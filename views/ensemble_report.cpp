@@ -164,7 +164,8 @@ std::optional<ReportSection> AdviceCheckSection(const ReportContext& ctx,
       "advice-check", "Does the advice hold?",
       "<p class=\"verdict\">" + HtmlEscaped(AdviceVerdict(check, options.quantile)) + "</p>\n" +
           SortableTable(AdviceCheckTable(check), "advice-check-table",
-                        "The advised and the converged rung per clearance state and zone family")};
+                        "Every rung's sizing quantile per clearance state and zone family, the "
+                        "advised and the converged rung named in their headers")};
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+
 namespace shockmap {
 namespace {
 
@@ -43,6 +45,42 @@ std::string CheckLines(const SceneAdvice& a, const AdviceCheckOutcome* check,
   return s;
 }
 
+// How each power law was made a stiffness for R_k: its tangent p k d_b^(p-1) at the bound
+// penetration d_b, one line per law, naming its first zone and how many share it.
+std::string PowerLawLines(const Scene& scene) {
+  struct Shared {
+    const SceneZone* first;
+    int zones;
+  };
+  std::vector<Shared> laws;
+  for (const SceneZone& z : scene.zones) {
+    if (!z.power_law) continue;
+    const auto same = std::ranges::find_if(laws, [&](const Shared& l) {
+      const ScenePowerLaw& a = *l.first->power_law;
+      return a.coefficient == z.power_law->coefficient && a.exponent == z.power_law->exponent &&
+             a.bound_penetration_m == z.power_law->bound_penetration_m;
+    });
+    if (same != laws.end()) {
+      ++same->zones;
+    } else {
+      laws.push_back({&z, 1});
+    }
+  }
+  std::string s;
+  for (const Shared& l : laws) {
+    const ScenePowerLaw& law = *l.first->power_law;
+    s += fmt::format(
+        "  power law    zone {}{}: F = k d^{:g} (k = {:.4g} N/m^{:g}) linearised as its tangent "
+        "stiffness p k d_b^(p-1) = {:.4g} N/m at the bound penetration d_b = {:.4g} m "
+        "(power_law.bound_penetration_m); R_k above is taken from it, and a zone pressed deeper "
+        "is stiffer\n",
+        l.first->name,
+        l.zones > 1 ? fmt::format(" and {} more with the same law", l.zones - 1) : "", law.exponent,
+        law.coefficient, law.exponent, l.first->stiffness_n_per_m, law.bound_penetration_m);
+  }
+  return s;
+}
+
 }  // namespace
 
 std::string SceneAdviceSummary(const Scene& scene, const SceneAdvice& a, bool every_zone,
@@ -58,6 +96,7 @@ std::string SceneAdviceSummary(const Scene& scene, const SceneAdvice& a, bool ev
       "  dt           {:.4g} s = {:.3g} x the sharp bound {:.4g} s at the advised truncations "
       "(the scene asks for {:.4g} s)\n",
       a.dt_s, a.dt_ratio, a.dt_sharp_s, a.scene_dt_s);
+  s += PowerLawLines(scene);
   s += CheckLines(a, check, checks_file);
   if (!every_zone) return s;
   s += fmt::format("  {:<32} {:>8} {:>10} {:>10} {:>10} {:>10} {:>10}\n", "zone", "height_m", "k_s",

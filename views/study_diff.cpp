@@ -1,11 +1,13 @@
 #include "views/study_diff.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/input_error.h"
 #include "core/scheme.h"
@@ -25,10 +27,6 @@ using Json = nlohmann::json;
 
 bool Close(double x, double y, double relative_tolerance) {
   return std::abs(x - y) <= relative_tolerance * std::max(std::abs(x), std::abs(y));
-}
-
-bool Same(const std::optional<double>& x, const std::optional<double>& y) {
-  return x.has_value() == y.has_value() && (!x || Close(*x, *y, 1e-9));
 }
 
 // The stored study file of a study of the paper's problem. Throws InputError for any other
@@ -134,6 +132,60 @@ std::vector<CriteriaRow> CriteriaRows(const ValidityCriteria& a, const ValidityC
   }
   std::ranges::sort(rows, {}, &CriteriaRow::r_k);
   return rows;
+}
+
+// The explicit modal points' values of `value` at `r_k` (R_ftrunc, dt / dt_sharp), ascending.
+template <typename Value>
+std::vector<double> StudiedAt(const DiffedStudy& s, double r_k, Value value) {
+  std::vector<double> values;
+  for (const DiffPoint& p : s.points) {
+    if (p.scheme != ToString(Scheme::kExplicitModal) || !Close(p.scored.r_k, r_k, 1e-9)) continue;
+    if (std::ranges::none_of(values, [&](double v) { return Close(v, value(p.scored), 1e-9); })) {
+      values.push_back(value(p.scored));
+    }
+  }
+  std::ranges::sort(values);
+  return values;
+}
+
+// "215.4 in A only, 316.2 in B only": the values of one study only within the spans the two
+// boundaries lie in (every such value when none lies there).
+std::string OneStudyOnly(const std::vector<double>& in_a, const std::vector<double>& in_b,
+                         const ResolvedBoundary& ba, const ResolvedBoundary& bb) {
+  const double low = std::min(ba.low, bb.low), high = std::max(ba.high, bb.high);
+  std::string text;
+  for (const auto& [role, mine, theirs] : {std::tuple{"A", &in_a, &in_b}, {"B", &in_b, &in_a}}) {
+    std::vector<std::string> only, within;
+    for (double v : *mine) {
+      if (std::ranges::any_of(*theirs, [&](double w) { return Close(v, w, 1e-9); })) continue;
+      only.push_back(fmt::format("{:.4g}", v));
+      if (v >= low * (1 - 1e-9) && v <= high * (1 + 1e-9)) within.push_back(only.back());
+    }
+    const auto& shown = within.empty() ? only : within;
+    if (shown.empty()) continue;
+    text += fmt::format("{}{} in {} only", text.empty() ? "" : ", ", fmt::join(shown, ", "), role);
+  }
+  return text;
+}
+
+// Why the boundaries of a row cannot be compared ("R_ftrunc 215.4 in A only, 316.2 in B only"),
+// or empty when they can.
+std::string GridsDiffer(const CriteriaRow& row, const DiffedStudy& a, const DiffedStudy& b) {
+  std::string why;
+  if (row.Truncation() == BoundaryComparison::kNotComparable) {
+    auto r_ftrunc = [](const ScoredPoint& p) { return p.r_ftrunc; };
+    why = "R_ftrunc " +
+          OneStudyOnly(StudiedAt(a, row.r_k, r_ftrunc), StudiedAt(b, row.r_k, r_ftrunc),
+                       TruncationBoundary(*row.a, 0.0), TruncationBoundary(*row.b, 0.0));
+  }
+  if (row.Dt() == BoundaryComparison::kNotComparable && row.a->dt_ratio_max &&
+      row.b->dt_ratio_max) {
+    auto ratio = [](const ScoredPoint& p) { return p.DtRatio(); };
+    why += (why.empty() ? "" : "; ") + std::string("dt/dt_sharp ") +
+           OneStudyOnly(StudiedAt(a, row.r_k, ratio), StudiedAt(b, row.r_k, ratio),
+                        DtBoundary(*row.a), DtBoundary(*row.b));
+  }
+  return why;
 }
 
 // A's points matched to B's: B sorted by R_k, each A point looks among the B points of its R_k
@@ -290,11 +342,17 @@ bool ScoresComparableAcross(const std::string& setting) {
   return setting != "window_s" && setting != "srf_definition" && setting != "rest_duration_t1";
 }
 
-bool CriteriaRow::TruncationDiffers() const {
-  return a && b && !Same(a->r_ftrunc_min, b->r_ftrunc_min);
+BoundaryComparison CriteriaRow::Truncation() const {
+  if (!a || !b) return BoundaryComparison::kAlike;
+  return Compare(TruncationBoundary(*a, 0.0), TruncationBoundary(*b, 0.0));
 }
 
-bool CriteriaRow::DtDiffers() const { return a && b && !Same(a->dt_ratio_max, b->dt_ratio_max); }
+BoundaryComparison CriteriaRow::Dt() const {
+  if (!a || !b) return BoundaryComparison::kAlike;
+  if (a->dt_ratio_max && b->dt_ratio_max) return Compare(DtBoundary(*a), DtBoundary(*b));
+  if (a->dt_ratio_max || b->dt_ratio_max) return Truncation();
+  return BoundaryComparison::kAlike;
+}
 
 StudyDiff DiffStudies(const DiffedStudy& a, const DiffedStudy& b, double relative_tolerance) {
   StudyDiff diff;
@@ -310,6 +368,7 @@ StudyDiff DiffStudies(const DiffedStudy& a, const DiffedStudy& b, double relativ
         s.setting == "window_s" ? "windows" : "settings"));
   }
   diff.criteria = CriteriaRows(a.criteria, b.criteria, relative_tolerance);
+  for (CriteriaRow& row : diff.criteria) row.grids_differ = GridsDiffer(row, a, b);
   MatchPoints(a, b, relative_tolerance, diff);
   return diff;
 }
@@ -349,8 +408,17 @@ std::string DiffText(const DiffedStudy& a, const DiffedStudy& b, const StudyDiff
                      DtText(b.criteria));
   const auto boundary_moves = std::ranges::count_if(
       diff.criteria, [](const CriteriaRow& r) { return r.TruncationDiffers() || r.DtDiffers(); });
-  out << fmt::format("  boundary     differs at {} of {} R_k\n", boundary_moves,
+  const auto not_comparable =
+      std::ranges::count_if(diff.criteria, [](const CriteriaRow& r) { return !r.Comparable(); });
+  out << fmt::format("  boundary     differs at {} of {} R_k", boundary_moves,
                      diff.criteria.size());
+  if (not_comparable > 0) {
+    out << fmt::format(
+        "; not comparable at {}: the grids differ where the boundary is decided (the table's "
+        "last column)",
+        not_comparable);
+  }
+  out << '\n';
 
   out << fmt::format(
       "\npoints: {} in A, {} in B, {} at the same parameters; {} changed outcome, {} in A only, "
@@ -408,6 +476,10 @@ Table DiffCriteriaTable(const StudyDiff& diff) {
     };
     std::string differs = r.TruncationDiffers() ? "R_ftrunc" : "";
     if (r.DtDiffers()) differs += differs.empty() ? "dt" : ", dt";
+    if (!r.Comparable()) {
+      differs +=
+          (differs.empty() ? "" : "; ") + ("not comparable: grids differ at " + r.grids_differ);
+    }
     t.rows.push_back({fmt::format("{:.6g}", r.r_k), side(r.a, true), side(r.b, true),
                       side(r.a, false), side(r.b, false), differs});
   }
@@ -425,11 +497,14 @@ Json DiffToJson(const DiffedStudy& a, const DiffedStudy& b, const StudyDiff& dif
   j["criteria"] = {{"a", FitJson(a.criteria)}, {"b", FitJson(b.criteria)}};
   j["criteria"]["by_r_k"] = Json::array();
   for (const CriteriaRow& r : diff.criteria) {
-    j["criteria"]["by_r_k"].push_back({{"r_k", r.r_k},
-                                       {"a", BoundaryJson(r.a)},
-                                       {"b", BoundaryJson(r.b)},
-                                       {"r_ftrunc_differs", r.TruncationDiffers()},
-                                       {"dt_differs", r.DtDiffers()}});
+    j["criteria"]["by_r_k"].push_back(
+        {{"r_k", r.r_k},
+         {"a", BoundaryJson(r.a)},
+         {"b", BoundaryJson(r.b)},
+         {"r_ftrunc_differs", r.TruncationDiffers()},
+         {"dt_differs", r.DtDiffers()},
+         {"comparable", r.Comparable()},
+         {"grids_differ", r.Comparable() ? Json() : Json(r.grids_differ)}});
   }
   Json& points = j["points"];
   points = {{"in_a", a.points.size()},  {"in_b", b.points.size()}, {"matched", diff.matched.size()},

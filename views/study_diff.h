@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "records/table.h"
+#include "validation/boundary_comparison.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
@@ -55,13 +56,24 @@ struct SettingDifference {
   nlohmann::json a, b;  // null when the study does not have the setting.
 };
 
-// The boundary of both studies at one R_k: nothing where a study has no point at it.
+// The boundary of both studies at one R_k: nothing where a study has no point at it. Two
+// boundaries found on different grids differ only where the points that decide them tell them
+// apart (validation/boundary_comparison.h); elsewhere they are not comparable.
 struct CriteriaRow {
   double r_k = 0.0;
   std::optional<RkBoundary> a, b;
+  // Where the boundaries are not comparable: the values studied in one study only that decide
+  // them, "R_ftrunc 215.4 in A only, 316.2 in B only"; empty when they compare.
+  std::string grids_differ;
 
-  bool TruncationDiffers() const;
-  bool DtDiffers() const;
+  // Alike where a study has no point at the R_k.
+  BoundaryComparison Truncation() const;
+  // The largest passing dt where both have one; the truncation's comparison where one alone
+  // has a passing truncation.
+  BoundaryComparison Dt() const;
+  bool TruncationDiffers() const { return Truncation() == BoundaryComparison::kDiffers; }
+  bool DtDiffers() const { return Dt() == BoundaryComparison::kDiffers; }
+  bool Comparable() const { return grids_differ.empty(); }
 };
 
 struct PointPair {

@@ -32,19 +32,29 @@ std::string Studied(const std::vector<ScoredPoint>& points) {
                      range([](const ScoredPoint& p) { return p.DtRatio(); }));
 }
 
-// The truncation rule and the R_k it was derived over.
+// The truncation rule over the studied R_k only: the fit from its knee to the largest studied
+// R_k, the smallest studied truncation at the studied R_k below the knee (when there are any),
+// and nothing of an R_k outside the studied range.
 std::string Rule(const ValidityCriteria& c) {
-  std::vector<double> bounded, unbounded;
-  for (const RkBoundary& b : c.boundary) (b.r_ftrunc_min ? bounded : unbounded).push_back(b.r_k);
+  std::vector<double> bounded, unbounded, below_knee;
+  for (const RkBoundary& b : c.boundary) {
+    (b.r_ftrunc_min ? bounded : unbounded).push_back(b.r_k);
+    if (c.fit && b.r_k < c.fit->knee_r_k) below_knee.push_back(b.r_k);
+  }
   std::string s;
   if (c.fit) {
     const PowerLawFit& f = *c.fit;
-    s = fmt::format(
-        "R_ftrunc >= {:.3g} R_k^{:.3f} above R_k = {:.4g} and R_ftrunc >= {:g} below it (the fit "
-        "over {} raised to cover the smallest passing truncation of every R_k; the exponent's "
-        "{:.0f} % interval [{:.3f}, {:.3f}] {} the paper's 0.5 of R_ftrunc > sqrt(R_k))",
-        f.c_envelope, f.p, f.knee_r_k, c.r_ftrunc_smallest_studied, Counted(f.n, "R_k", "R_k"),
-        100 * c.options.confidence, f.p_low, f.p_high,
+    s = fmt::format("R_ftrunc >= {:.3g} R_k^{:.3f} at R_k = {}", f.c_envelope, f.p,
+                    Range(f.knee_r_k, bounded.back()));
+    if (!below_knee.empty()) {
+      s += fmt::format(" and R_ftrunc >= {:g} at R_k = {}", c.r_ftrunc_smallest_studied,
+                       Range(below_knee.front(), below_knee.back()));
+    }
+    s += fmt::format(
+        " (the fit over {} raised to cover the smallest passing truncation of every R_k; the "
+        "exponent's {:.0f} % interval [{:.3f}, {:.3f}] {} the paper's 0.5 of R_ftrunc > "
+        "sqrt(R_k))",
+        Counted(f.n, "R_k", "R_k"), 100 * c.options.confidence, f.p_low, f.p_high,
         f.p_low <= 0.5 && 0.5 <= f.p_high ? "holds" : "excludes");
   } else {
     s = "no truncation rule could be fitted (fewer than two R_k pass above the smallest "
@@ -56,7 +66,7 @@ std::string Rule(const ValidityCriteria& c) {
     s += ", but no time step passes at every R_k";
   }
   if (!bounded.empty()) {
-    s += fmt::format(". It holds over the studied R_k = {} ({}); outside, it is extrapolated",
+    s += fmt::format(". It holds over the studied R_k = {} ({}) and says nothing outside them",
                      Range(bounded.front(), bounded.back()), Counted(bounded.size(), "value"));
   }
   if (!unbounded.empty()) {
@@ -105,8 +115,28 @@ std::string StatusReason(RunStatus s) {
   return "";
 }
 
-// The points that ran to the end, passing and failing (by which threshold), then each other
-// status with its reason, where in dt it happened, and a stored message.
+// "Err alone", "Err and SRf together": the thresholded scores a point that ran to the end fails,
+// in registry order, so that each failing point is counted under one name.
+std::string FailedScores(const CriteriaOptions& options, const ScoredPoint& p) {
+  std::vector<std::string> failed;
+  for (const ScoreDefinition& score : Scores()) {
+    const auto threshold = options.thresholds.find(score.name);
+    if (threshold == options.thresholds.end()) continue;
+    const std::optional<double> v = p.scores[score.name];
+    if (v ? !score.Meets(*v, threshold->second) : score.required) {
+      failed.emplace_back(score.label);
+    }
+  }
+  if (failed.size() == 1) return failed.front() + " alone";
+  std::string joined;
+  for (std::size_t i = 0; i < failed.size(); ++i) {
+    joined += (i == 0 ? "" : i + 1 == failed.size() ? " and " : ", ") + failed[i];
+  }
+  return joined + " together";
+}
+
+// The points that ran to the end, passing and failing (by which thresholds, each point once), then
+// each other status with its reason, where in dt it happened, and a stored message.
 std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& points,
                      const Table& results) {
   std::map<std::int64_t, std::string> messages;
@@ -119,7 +149,7 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
     }
   }
   int ok = 0, passing = 0, undecided = 0;
-  std::map<std::string, int> failing_by;  // By score label.
+  std::map<std::string, int> failing_by;  // By the scores failed together: each point once.
   struct Others {
     int n = 0;
     double dt_low = INFINITY, dt_high = 0.0;
@@ -137,12 +167,7 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
         ++undecided;
         continue;
       }
-      for (const auto& [name, threshold] : c.options.thresholds) {
-        const ScoreDefinition* score = FindScore(name);
-        const std::optional<double> v = p.scores[name];
-        if (v ? !score->Meets(*v, threshold) : score->required)
-          ++failing_by[std::string(score->label)];
-      }
+      ++failing_by[FailedScores(c.options, p)];
       continue;
     }
     Others& o = others[p.status];
@@ -156,8 +181,8 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
   std::string s = fmt::format("Of {}, {} ran to the end: {} pass and {} fail the thresholds",
                               Counted(points.size(), "point"), ok, passing, ok - passing);
   std::string by;
-  for (const auto& [label, n] : failing_by) {
-    by += fmt::format("{}{} by {}", by.empty() ? "" : ", ", n, label);
+  for (const auto& [scores, n] : failing_by) {
+    by += fmt::format("{}{} by {}", by.empty() ? "" : ", ", n, scores);
   }
   if (undecided > 0) {
     by += fmt::format("{}{} undecided: their scores over perturbed runs straddle a threshold",
