@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages shockmap needs (only those missing), then configures and
 # builds it in ./build. Sourced by run-main and run-tests, which may list extra packages in
-# SHOCKMAP_EXTRA_PACKAGES first; safe to run again.
+# SHOCKMAP_EXTRA_PACKAGES first, and the build targets in SHOCKMAP_BUILD_TARGETS (every target
+# when unset); safe to run again.
 set -euo pipefail
 
 SHOCKMAP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -35,7 +36,11 @@ install_missing_packages() {
 
 build_shockmap() {
   cmake -S "$SHOCKMAP_ROOT" -B "$SHOCKMAP_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$SHOCKMAP_BUILD" -j "$(nproc)"
+  local targets=()
+  for t in ${SHOCKMAP_BUILD_TARGETS[@]+"${SHOCKMAP_BUILD_TARGETS[@]}"}; do
+    targets+=(--target "$t")
+  done
+  cmake --build "$SHOCKMAP_BUILD" -j "$(nproc)" ${targets[@]+"${targets[@]}"}
 }
 
 install_missing_packages "${SHOCKMAP_PACKAGES[@]}" ${SHOCKMAP_EXTRA_PACKAGES[@]+"${SHOCKMAP_EXTRA_PACKAGES[@]}"}

@@ -19,7 +19,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "formats/scene_file.h"
+#include "formats/zone_family.h"
 #include "tests/run_command.h"
+#include "views/contact_force_map.h"
 #include "views/cost_front.h"
 #include "views/fig3_svg.h"
 #include "views/html_text.h"
@@ -549,7 +552,7 @@ TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
   EXPECT_NE(dom.find("data-images-loaded=\"1/1\""), std::string::npos) << dom.substr(0, 400);
   EXPECT_NE(dom.find("data-sortable-tables=\"3\""), std::string::npos);
   EXPECT_NE(dom.find("<th data-sort-method=\"real\" role=\"columnheader\" "
-                     "tabindex=\"0\">solver.r_ftrunc</th>"),
+                     "tabindex=\"0\">solver.r_<wbr>ftrunc</th>"),
             std::string::npos)
       << dom;
   const auto points_table = dom.find("id=\"points-table\"");
@@ -593,11 +596,11 @@ std::vector<std::string> TableColumns(const std::string& dom, const std::string&
   const auto start = dom.find("id=\"" + id + "\"");
   const auto head = dom.find("<thead>", start);
   const std::string header = dom.substr(head, dom.find("</thead>", head) - head);
-  const std::regex th("<th[^>]*>([^<]*)</th>");
+  const std::regex th("<th[^>]*>((?:[^<]|<wbr>)*)</th>");
   std::vector<std::string> columns;
   for (auto h = std::sregex_iterator(header.begin(), header.end(), th); h != std::sregex_iterator();
        ++h) {
-    columns.push_back((*h)[1]);
+    columns.push_back(std::regex_replace((*h)[1].str(), std::regex("<wbr>"), ""));
   }
   return columns;
 }
@@ -731,7 +734,100 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
         ReadBytes((at.dir / "report" / "sizing" / ("states_" + family + ".gp")).string());
     EXPECT_EQ(states.find("lines"), std::string::npos) << states;
   }
+  // Each histogram's count axis reaches above its tallest bar, whose top is not the frame.
+  int histograms = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(at.dir / "report" / "sizing")) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with("histogram_") || entry.path().extension() != ".gp") continue;
+    ++histograms;
+    const std::string script = ReadBytes(entry.path().string());
+    std::smatch top;
+    ASSERT_TRUE(std::regex_search(script, top, std::regex("set yrange \\[0:([0-9.]+)\\]")))
+        << script;
+    double tallest = 0.0;
+    for (const auto& bin :
+         DataBlock(std::filesystem::path(entry.path()).replace_extension(".dat").string(), 0)) {
+      tallest = std::max(tallest, bin[1]);
+    }
+    EXPECT_GT(std::stod(top[1]), tallest) << name;
+  }
+  EXPECT_EQ(histograms, 2 * 3);
   std::filesystem::remove_all(at.dir);
+}
+
+// An ensemble at one numerical setting (the scene's own): its tables name that setting once, in
+// their captions, and have no column repeating it on every row.
+TEST(EnsembleStudyReport, OneSettingIsNamedInTheCaptionNotOnEveryRow) {
+  Place at{
+      std::filesystem::temp_directory_path() / ("shockmap_one_setting_" + std::to_string(getpid())),
+      ""};
+  std::filesystem::remove_all(at.dir);
+  std::filesystem::create_directories(at.dir);
+  at.db = (at.dir / "e.db").string();
+  const nlohmann::json study = {
+      {"kind", "scene_ensemble"},
+      {"name", "one_setting"},
+      {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_row.json"},
+      {"members", 6},
+      {"seed", 3},
+      {"window_s", 0.03},
+      {"impact_statistics", {{"rest_duration_s", 0.002}}},
+      {"draws", {{"effects.base_motion.half_sine.amplitude_m_s2", {{"normal", {{"std", 9.81}}}}}}},
+      {"clearance_states", {{{"name", "new"}, {"pin_gap_m", {{"mean", 5e-5}, {"std", 5e-6}}}}}}};
+  WriteText((at.dir / "study.json").string(), study.dump());
+  const auto run = RunShockmap("study run --quiet --jobs 2 " + (at.dir / "study.json").string() +
+                               " --db " + at.db);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report =
+      RunShockmap("report --db " + at.db + " --out " + (at.dir / "report").string());
+  ASSERT_EQ(report.exit_code, 0) << report.output;
+  const std::string html = ReadBytes((at.dir / "report" / "index.html").string());
+  for (const std::string id : {"sizing-hottest-table", "sizing-zones-table", "impacts-table"}) {
+    const auto columns = TableColumns(html, id);
+    ASSERT_FALSE(columns.empty()) << id;
+    EXPECT_EQ(std::ranges::count(columns, "setting"), 0) << id;
+    const auto table = html.find("id=\"" + id + "\"");
+    const auto caption = html.find("<caption>", table);
+    EXPECT_NE(html.substr(caption, html.find("</caption>", caption) - caption)
+                  .find("at the one setting: the scene&#39;s own: R_ftrunc = "),
+              std::string::npos)
+        << id;
+  }
+  std::filesystem::remove_all(at.dir);
+}
+
+// A cross-section map of a bundle bending in both planes explains every mark in one legend:
+// the beam axes, the zones between two pins, those between a pin and the wrapper (a mark of
+// their own), the zones never in contact.
+TEST(ContactForceMap, CrossSectionsShareALegendThatNamesEveryMark) {
+  const Scene scene = LoadScene(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex_7.json");
+  ASSERT_EQ(scene.planes, BendingPlanes::kBoth);
+  std::vector<double> force;
+  int wrapper_zones = 0;
+  for (const SceneZone& z : scene.zones) {
+    const bool wrapper =
+        z.beam_b >= 0 && FamilyOfZone(scene.beams[z.beam_a].name, scene.beams[z.beam_b].name) ==
+                             ZoneFamily::kPinWrapper;
+    wrapper_zones += wrapper ? 1 : 0;
+    force.push_back(force.size() % 5 == 0 ? 0.0 : wrapper ? 200.0 : 100.0);
+  }
+  ASSERT_GT(wrapper_zones, 0);
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("shockmap_force_map_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  DrawContactForceMap(scene, force, dir / "map.png");
+  const std::string script = ReadBytes((dir / "map.gp").string());
+  EXPECT_EQ(Count(script, "set key "), 1u) << script;
+  for (const char* mark :
+       {"title 'beam axes'", "title 'between two pins (colour scale)'",
+        "title 'between a pin and the wrapper (colour scale)'", "title 'never in contact'"}) {
+    EXPECT_EQ(Count(script, mark), 1u) << mark;
+  }
+  const auto zones = DataBlock((dir / "map.zones.dat").string(), 0);
+  ASSERT_EQ(zones.size(), scene.zones.size());
+  EXPECT_EQ(std::ranges::count_if(zones, [](const auto& z) { return z.size() == 6 && z[5] == 1; }),
+            wrapper_zones);
+  std::filesystem::remove_all(dir);
 }
 
 // Min/max per column keeps every column's extremes in time order, at most two a column, and
@@ -926,6 +1022,77 @@ TEST_F(QuickStudyViews, DtMapMarksDivergedRunsAndKeepsCellsOnTheirSideOfTheBound
   EXPECT_EQ(below, 33);
 }
 
+// A score's map draws that score's boundary: the SRf map's triangles are the smallest R_ftrunc
+// passing SRf alone at each R_k (lower than Err and SRf together on quick, where every
+// truncation passes SRf somewhere), its legend says so; the PFr map, PFr having no threshold,
+// draws no boundary and says why, and its colours span the values it shows.
+TEST_F(QuickStudyViews, EachScoresMapDrawsItsOwnBoundaryOrSaysItHasNone) {
+  const auto draw = [&](const std::string& metric) {
+    const auto image = at_.dir / ("own_" + metric + ".png");
+    const auto map =
+        RunShockmap("map --db " + at_.db + " --metric " + metric + " --out " + image.string());
+    EXPECT_EQ(map.exit_code, 0) << map.output;
+    return ReadBytes((at_.dir / ("own_" + metric + ".gp")).string());
+  };
+  const std::string srf = draw("srf"), status = draw("status");
+  const auto triangles = ClausesWith(srf, "pt 9 ");
+  ASSERT_EQ(triangles.size(), 1u) << srf;
+  EXPECT_NE(triangles[0].find("passing SRf >= 0.8 at each R_k"), std::string::npos) << triangles[0];
+  EXPECT_EQ(triangles[0].find("Err"), std::string::npos) << triangles[0];
+  const auto srf_boundary = DataBlock((at_.dir / "own_srf.dat").string(), 1);
+  const auto both_boundary = DataBlock((at_.dir / "own_status.dat").string(), 1);
+  CriteriaOptions srf_only;
+  srf_only.thresholds = {{"srf", 0.8}};
+  const ValidityCriteria expected = DeriveCriteria(LoadCriteriaPoints(at_.db, "quick"), srf_only);
+  std::vector<std::vector<double>> expected_rows;
+  for (const RkBoundary& b : expected.boundary) {
+    if (b.r_ftrunc_min) expected_rows.push_back({b.r_k, *b.r_ftrunc_min});
+  }
+  ASSERT_EQ(srf_boundary.size(), expected_rows.size());
+  for (std::size_t i = 0; i < expected_rows.size(); ++i) {
+    EXPECT_NEAR(srf_boundary[i][0], expected_rows[i][0], 1e-9 * expected_rows[i][0]);
+    EXPECT_NEAR(srf_boundary[i][1], expected_rows[i][1], 1e-9 * expected_rows[i][1]);
+  }
+  EXPECT_NE(srf_boundary, both_boundary) << "the SRf map draws the boundary of Err and SRf";
+
+  const std::string pfr = draw("pfr");
+  EXPECT_TRUE(ClausesWith(pfr, "pt 9 ").empty()) << pfr;
+  EXPECT_TRUE(ClausesWith(pfr, "derived boundary").empty()) << pfr;
+  EXPECT_EQ(ClausesWith(pfr, "PFr has no threshold, so no boundary is drawn").size(), 1u) << pfr;
+  std::smatch range;
+  ASSERT_TRUE(std::regex_search(pfr, range, std::regex("set cbrange \\[([^:]+):([^\\]]+)\\]")));
+  double smallest = INFINITY;
+  for (const auto& cell : DataBlock((at_.dir / "own_pfr.dat").string(), 0)) {
+    if (std::isfinite(cell[6])) smallest = std::min(smallest, cell[6]);
+  }
+  ASSERT_TRUE(std::isfinite(smallest));
+  EXPECT_LE(std::stod(range[1]), smallest) << "PFr values below the colour range look alike";
+}
+
+// The dt map names the stability bound only where it draws it: a study whose steps all lie
+// below dt_sharp has no bound in its range, and none in its legend.
+TEST_F(QuickStudyViews, DtMapNamesTheStabilityBoundOnlyWhenItIsInRange) {
+  const auto file = at_.dir / "below_bound.json";
+  WriteText(file.string(), R"({"kind": "canonical", "name": "below_bound",
+    "scoring": {"window_s": 0.03},
+    "grids": [{"rk": [1000, 3000], "rftrunc": [10, 100],
+               "dt": {"rule": "sharp", "factor": [0.1, 0.5]}}]})");
+  const std::string db = (at_.dir / "below_bound.db").string();
+  const auto run = RunShockmap("study run " + file.string() + " --db " + db + " --quiet");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto map = RunShockmap("map --db " + db + " --metric status --y dt --out " +
+                               (at_.dir / "below_bound_dt.png").string());
+  ASSERT_EQ(map.exit_code, 0) << map.output;
+  const std::string below = ReadBytes((at_.dir / "below_bound_dt.gp").string());
+  EXPECT_EQ(below.find("stability bound"), std::string::npos) << below;
+  // quick reaches 1.5 dt_sharp: its dt map draws and names the bound.
+  const auto quick = RunShockmap("map --db " + at_.db + " --metric status --y dt --out " +
+                                 (at_.dir / "quick_dt.png").string());
+  ASSERT_EQ(quick.exit_code, 0) << quick.output;
+  const std::string above = ReadBytes((at_.dir / "quick_dt.gp").string());
+  EXPECT_EQ(ClausesWith(above, "sharp stability bound").size(), 1u) << above;
+}
+
 // The cost plot's Pareto line is its own data block, joined without breaks, in the order of
 // CPU time; its legend names the schemes present and every dt / dt_sharp shown.
 TEST_F(QuickStudyViews, CostPlotJoinsTheWholeFrontAndNamesOnlyWhatItDraws) {
@@ -945,6 +1112,10 @@ TEST_F(QuickStudyViews, CostPlotJoinsTheWholeFrontAndNamesOnlyWhatItDraws) {
     EXPECT_LT(front_rows[i][1], front_rows[i - 1][1]);
   }
   EXPECT_EQ(script.find("implicit"), std::string::npos) << "quick has no implicit point";
+  // The threshold the points are judged by is drawn; the colour bar is in R_ftrunc and says so.
+  EXPECT_EQ(ClausesWith(script, "title 'Err threshold 0.1'").size(), 1u) << script;
+  EXPECT_NE(script.find("set logscale cb"), std::string::npos) << script;
+  EXPECT_EQ(script.find("log10"), std::string::npos) << script;
   std::set<std::string> ratios;
   for (const auto& row : DataBlock((at_.dir / "cost.dat").string(), 0)) {
     ratios.insert(fmt::format("{:.3g}", row[6]));

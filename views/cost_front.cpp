@@ -36,6 +36,10 @@ std::vector<CostTable> BuildCostTables(const std::vector<ScoredPoint>& explicit_
       if (p.status != RunStatus::kOk || !p.scores["err"]) continue;
       CostTable& t = by_rk[p.r_k];
       t.r_k = p.r_k;
+      if (const auto err_max = thresholds.thresholds.find("err");
+          err_max != thresholds.thresholds.end()) {
+        t.err_max = err_max->second;
+      }
       const bool passes = thresholds.Passes(p);
       t.rows.push_back({p, scheme, passes, passes && FinerStepFails(p, points, thresholds), false});
     }
@@ -199,7 +203,7 @@ std::string PointClauses(const CostTable& table, const std::vector<std::string>&
           "{} index 0 using 1:($4 == {} && $8 == {} ? $2 : 1/0){} with points pt {} ps {} {} title "
           "{}, "
           "\\\n     ",
-          clauses.empty() ? data : "''", implicit ? 1 : 0, k, implicit ? "" : ":(log10($6))", type,
+          clauses.empty() ? data : "''", implicit ? 1 : 0, k, implicit ? "" : ":6", type,
           implicit ? 2 : 1.5, implicit ? "lw 2 lc rgb '#000000'" : "lc palette",
           GnuplotQuoted(fmt::format("{}, dt = {} dt_{{sharp}}",
                                     implicit ? "implicit full model" : "explicit modal",
@@ -232,8 +236,10 @@ set ylabel 'Err (paper eq. 8)'
 set grid
 set key below maxrows 4 font ',10'
 set palette defined (1 '#fee08b', 2 '#66bd63', 3 '#1a9850', 4 '#006837')
-set cblabel 'log_{{10}} R_{{ftrunc}} (colour of the explicit points)'
-plot {points}{front}{fragile}
+set logscale cb
+set format cb '%g'
+set cblabel 'R_{{ftrunc}} = f_{{trunc}} / f_1 (colour of the explicit points)'
+{threshold_line}plot {points}{front}{fragile}{threshold}
 )gp",
       fmt::arg("terminal", TerminalFor(file, 1000, 760)), fmt::arg("out", GnuplotOutputName(file)),
       fmt::arg("title", GnuplotQuoted(fmt::format("{}: what accuracy costs at R_k = {:.4g}", study,
@@ -248,7 +254,20 @@ plot {points}{front}{fragile}
               ? ", \\\n     '' index 0 using 1:($9 == 1 ? $2 : 1/0) with points pt 4 ps 2.4 lw 2 "
                 "lc rgb '#7b3294' title 'passes by error cancellation (a finer dt fails): off "
                 "the front'"
-              : ""));
+              : ""),
+      // Across the whole frame; its legend entry is the keyentry below.
+      fmt::arg("threshold_line",
+               table.err_max
+                   ? fmt::format("set arrow from graph 0, first {0} to graph 1, first {0} "
+                                 "nohead lw 2 dt 2 lc rgb '#000000' front\n",
+                                 *table.err_max)
+                   : ""),
+      fmt::arg("threshold",
+               table.err_max
+                   ? fmt::format(", \\\n     keyentry with lines lw 2 dt 2 lc rgb '#000000' "
+                                 "title 'Err threshold {:g}'",
+                                 *table.err_max)
+                   : ""));
   RunGnuplot(script, std::filesystem::path(file).replace_extension(".gp"), file);
 }
 

@@ -27,6 +27,7 @@ struct CostRow {
 struct CostTable {
   double r_k = 0.0;
   std::optional<double> asked_r_k;  // The R_k asked (cost --rk, the report) this one is nearest to.
+  std::optional<double> err_max;    // The Err threshold the rows were judged by, when one judges.
   std::vector<CostRow> rows;        // Scored points, fastest first.
   // Median over implicit points of cpu(implicit) / cpu(cheapest explicit point at least as
   // accurate); nullopt when no implicit point has an explicit match.
@@ -51,7 +52,8 @@ std::string CostHeadline(const CostTable& table);
 Table CostRowsTable(const CostTable& table);
 // Every table as terminal text: its headline, then its rows.
 std::string CostSummary(const std::vector<CostTable>& tables);
-// Err against CPU time of one table, the Pareto front joined. Throws InputError when empty.
+// Err against CPU time of one table, the Pareto front joined, the Err threshold drawn when one
+// judges; the explicit points coloured by their R_ftrunc. Throws InputError when empty.
 void DrawCost(const std::string& study, const CostTable& table, const std::filesystem::path& file);
 
 }  // namespace shockmap

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -22,6 +23,48 @@
 
 namespace shockmap {
 namespace {
+
+// `table` with the columns named in `moved` (those it has, in that order) just after its column
+// `after`, the others in their order.
+Table MovedAfter(const Table& table, const std::string& after,
+                 const std::vector<std::string>& moved) {
+  std::vector<std::size_t> order;
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    if (std::ranges::count(moved, table.columns[c]) == 0) order.push_back(c);
+  }
+  auto at = std::ranges::find(order, table.ColumnIndex(after).value_or(table.columns.size()));
+  if (at != order.end()) ++at;
+  for (const std::string& name : moved) {
+    if (const auto c = table.ColumnIndex(name)) at = std::next(order.insert(at, *c));
+  }
+  Table reordered;
+  for (std::size_t c : order) reordered.columns.push_back(table.columns[c]);
+  for (const auto& row : table.rows) {
+    auto& cells = reordered.rows.emplace_back();
+    for (std::size_t c : order) cells.push_back(row[c]);
+  }
+  return reordered;
+}
+
+// A force sizing table (HottestZoneTable, ZoneTable) with what a zone is sized by beside it, on
+// the first screen: the sizing quantile with its interval, Wilks' limit, the agreement with the
+// refined setting; the other quantiles and statistics after them.
+Table SizedByFirst(const Table& table, const EnsembleSizing& s) {
+  const std::string q = fmt::format("p{:g}", 100 * s.options.quantile);
+  return MovedAfter(table, "family",
+                    {q + "_n", q + "_lower_n", q + "_upper_n", "wilks_order", "wilks_limit_n",
+                     "wilks_members_needed", "agrees_with_refined"});
+}
+
+// A sizing table of the report, its settings named (views/setting_names.h); with one setting,
+// the caption names it once instead of a column repeating it on every row.
+std::string SettingTable(const Table& sizing_table, const EnsembleSizing& s, const Scene& scene,
+                         const std::string& id, const std::string& caption) {
+  Table table = WithSettingNames(sizing_table, s, scene);
+  const std::optional<std::string> setting = TakeSingleSetting(table);
+  return SortableTable(table, id,
+                       setting ? caption + ", at the one setting: " + *setting : caption);
+}
 
 // What the study is and what the tables count, from the stored study file.
 std::string About(const EnsembleSizing& s, const std::string& spec_json) {
@@ -93,19 +136,19 @@ Table ImpactTable(const EnsembleSizing& s) {
 }
 
 std::string Impacts(const EnsembleSizing& s, const Scene& scene) {
-  const Table table = WithSettingNames(ImpactTable(s), s, scene);
+  const Table table = ImpactTable(s);
   if (table.rows.empty()) {
     return "<p>No member streamed impact statistics (the study file has no "
            "<code>impact_statistics</code>).</p>\n";
   }
   return "<p>Each zone's impact statistics (docs/physics.md §6), averaged over the members; "
          "the wear work rate where the scene bends in both planes.</p>\n" +
-         SortableTable(table, "impacts-table",
-                       "Mean impact statistics per clearance state, setting and zone");
+         SettingTable(table, s, scene, "impacts-table",
+                      "Mean impact statistics per clearance state, setting and zone");
 }
 
 std::string Wear(const EnsembleSizing& s, const Scene& scene) {
-  const Table table = WithSettingNames(WearTable(s), s, scene);
+  const Table table = WearTable(s);
   if (table.rows.empty()) {
     return "<p>No member has a wear volume (the scene has no <code>wear</code> law, or its "
            "zones do not slide: it bends in one plane, or the study file has no "
@@ -117,7 +160,8 @@ std::string Wear(const EnsembleSizing& s, const Scene& scene) {
              "upper tolerance limit (the design value) and the mean, beside the P{0:g} of the "
              "largest force: the numbers of <code>shockmap sizing --wear</code>.</p>\n",
              100 * s.options.quantile, 100 * s.options.confidence) +
-         SortableTable(table, "wear-table", "Wear volume per clearance state, setting and zone");
+         SettingTable(table, s, scene, "wear-table",
+                      "Wear volume per clearance state, setting and zone");
 }
 
 std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
@@ -179,12 +223,12 @@ std::vector<ReportSection> EnsembleSections(const ReportContext& ctx, const Stor
   std::vector<ReportSection> sizing_sections = {
       {"sizing-hottest", "Sizing force of the hottest zone of each family",
        About(sizing, stored.spec_json) +
-           SortableTable(WithSettingNames(HottestZoneTable(sizing, false), sizing, scene),
-                         "sizing-hottest-table",
-                         "The hottest zone of each family per clearance state and setting")},
+           SettingTable(SizedByFirst(HottestZoneTable(sizing, false), sizing), sizing, scene,
+                        "sizing-hottest-table",
+                        "The hottest zone of each family per clearance state and setting")},
       {"sizing-zones", "Sizing statistics per zone",
-       SortableTable(WithSettingNames(ZoneTable(sizing), sizing, scene), "sizing-zones-table",
-                     "Every zone per clearance state and setting")},
+       SettingTable(SizedByFirst(ZoneTable(sizing), sizing), sizing, scene, "sizing-zones-table",
+                    "Every zone per clearance state and setting")},
       {"settings-agreement", "Settings against the refined one", Agreement(sizing, scene)},
       {"impacts", "Impact statistics", Impacts(sizing, scene)},
       {"wear-sizing", "Wear sizing", Wear(sizing, scene)},

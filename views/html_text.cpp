@@ -94,6 +94,14 @@ std::string Cell(const TableCell& cell) {
   return (text.size() > 40 ? "<td class=\"long\">" : "<td>") + HtmlEscaped(text) + "</td>";
 }
 
+// `html` with a line-break opportunity (<wbr>) after each underscore: a long column name
+// (wilks_members_needed) may wrap in its header instead of widening its column.
+std::string WithBreaksAfterUnderscores(const std::string& html) {
+  std::string out;
+  for (char c : html) out += c == '_' ? std::string("_<wbr>") : std::string(1, c);
+  return out;
+}
+
 }  // namespace
 
 std::string SortableTable(const Table& result, const std::string& id, const std::string& caption,
@@ -109,7 +117,7 @@ std::string SortableTable(const Table& result, const std::string& id, const std:
   for (std::size_t c = 0; c < result.columns.size(); ++c) {
     html +=
         fmt::format("<th{}>{}</th>", IsNumberColumn(result, c) ? " data-sort-method=\"real\"" : "",
-                    HtmlEscaped(result.columns[c]));
+                    WithBreaksAfterUnderscores(HtmlEscaped(result.columns[c])));
   }
   html += "</tr></thead>\n<tbody>\n";
   for (std::size_t r = 0; r < result.rows.size(); ++r) {

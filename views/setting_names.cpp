@@ -52,4 +52,19 @@ Table WithSettingNames(Table table, const EnsembleSizing& s, const Scene& scene)
   return table;
 }
 
+std::optional<std::string> TakeSingleSetting(Table& table) {
+  const auto column = std::ranges::find(table.columns, "setting") - table.columns.begin();
+  if (static_cast<std::size_t>(column) == table.columns.size() || table.rows.empty()) {
+    return std::nullopt;
+  }
+  const std::string setting = CellText(table.rows.front()[column]);
+  if (std::ranges::any_of(table.rows,
+                          [&](const auto& row) { return CellText(row[column]) != setting; })) {
+    return std::nullopt;
+  }
+  table.columns.erase(table.columns.begin() + column);
+  for (auto& row : table.rows) row.erase(row.begin() + column);
+  return setting;
+}
+
 }  // namespace shockmap

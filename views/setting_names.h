@@ -5,6 +5,7 @@
 // marked " (refined)". The terminal's tables, the CSV files of `sizing --out` and the report
 // name settings so; `sizing --format csv|json` keeps the stored setting JSON for scripts.
 
+#include <optional>
 #include <string>
 
 #include "core/scene.h"
@@ -20,5 +21,10 @@ std::string SettingName(const GroupSizing& g, const Scene& scene, bool several);
 // one, as the sizing tables write them, or without it on the terminal's table) replaced by
 // SettingName; a table without a "setting" column unchanged.
 Table WithSettingNames(Table table, const EnsembleSizing& sizing, const Scene& scene);
+
+// `table` without its "setting" column when every row holds the same setting, and that setting
+// (for a caption: a column would repeat it on every row); nullopt, and the table unchanged,
+// when the rows hold several settings or the table has no such column.
+std::optional<std::string> TakeSingleSetting(Table& table);
 
 }  // namespace shockmap

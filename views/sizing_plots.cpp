@@ -147,6 +147,9 @@ fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const FamilyHo
   for (double f : forces) counts[std::min(bins - 1, static_cast<int>((f - *lo) / width))]++;
   std::string text = "# bin_centre_n members\n";
   for (int i = 0; i < bins; ++i) text += fmt::format("{} {}\n", *lo + (i + 0.5) * width, counts[i]);
+  // Room above the tallest bar, so that its top is not the frame, nor under the labels.
+  const int tallest = *std::ranges::max_element(counts);
+  const int top = tallest + std::max(1, static_cast<int>(std::ceil(0.25 * tallest)));
   WriteFileAtomically(data, text);
   const std::string title =
       fmt::format("{} ({}): largest force at {}, the hottest {}, over {} members", s.study, g.state,
@@ -165,13 +168,14 @@ fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const FamilyHo
                          R"(set title {title} noenhanced
 set xlabel 'largest force in the zone (N)'
 set ylabel 'members'
-set yrange [0:*]
+set yrange [0:{top}]
 set style fill solid 0.6 border lc rgb '#525252'
 set boxwidth {width}
 {marks}plot {data} using 1:2 with boxes lc rgb '#9ecae1' notitle
 )",
-                         fmt::arg("title", GnuplotQuoted(title)), fmt::arg("width", width),
-                         fmt::arg("marks", marks), fmt::arg("data", GnuplotFileName(data))));
+                         fmt::arg("title", GnuplotQuoted(title)), fmt::arg("top", top),
+                         fmt::arg("width", width), fmt::arg("marks", marks),
+                         fmt::arg("data", GnuplotFileName(data))));
 }
 
 std::vector<const GroupSizing*> RefinedGroups(const EnsembleSizing& s) {

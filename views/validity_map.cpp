@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include "core/input_error.h"
 #include "formats/output_file.h"
@@ -58,34 +60,51 @@ struct MetricStyle {
   std::string palette, cb, title;
 };
 
-// A score's colours: from bad (red) to good (green) over its map range, split at its threshold
-// when it has one.
-MetricStyle ScoreStyle(const ScoreDefinition& score, const CriteriaOptions& th) {
+// The smallest and largest value the cells show for the metric (NaN when none has one).
+std::pair<double, double> ValueRange(const MapGrid& grid, const std::string& metric) {
+  double low = NAN, high = NAN;
+  for (const MapCell& c : grid.cells) {
+    const double v = CellValue(*c.point, metric);
+    if (!std::isfinite(v)) continue;
+    low = std::isfinite(low) ? std::min(low, v) : v;
+    high = std::isfinite(high) ? std::max(high, v) : v;
+  }
+  return {low, high};
+}
+
+// A score's colours: from bad (red) to good (green), split at its threshold when it has one
+// (over its map range: the threshold tells pass from fail). Without a threshold every value
+// counts, so the range widens to the values shown, in steps of 0.1.
+MetricStyle ScoreStyle(const ScoreDefinition& score, const CriteriaOptions& th,
+                       std::pair<double, double> values) {
   const bool smaller = score.better == Better::kSmaller;
   const char* low_colour = smaller ? "'#1a9850'" : "'#d73027'";
   const char* high_colour = smaller ? "'#d73027'" : "'#1a9850'";
   const auto threshold = th.thresholds.find(score.name);
-  const std::string range = fmt::format("set cbrange [{}:{}]\n", score.map_low, score.map_high);
   const std::string name = fmt::format("{} ({})", score.label, score.source);
   if (threshold == th.thresholds.end()) {
-    return {
-        fmt::format("set palette defined ({} {}, {} '#ffffbf', {} {})\n", score.map_low, low_colour,
-                    0.5 * (score.map_low + score.map_high), score.map_high, high_colour) +
-            range,
-        std::string(score.label), name};
+    const double low = std::isfinite(values.first)
+                           ? std::min(score.map_low, std::floor(values.first * 10.0) / 10.0)
+                           : score.map_low;
+    const double high = std::isfinite(values.second)
+                            ? std::max(score.map_high, std::ceil(values.second * 10.0) / 10.0)
+                            : score.map_high;
+    return {fmt::format("set palette defined ({} {}, {} '#ffffbf', {} {})\nset cbrange [{}:{}]\n",
+                        low, low_colour, 0.5 * (low + high), high, high_colour, low, high),
+            std::string(score.label), fmt::format("{}, no threshold: no boundary drawn", name)};
   }
-  return {fmt::format("set palette defined ({lo} {lc}, {t} {lt}, {t} {ht}, {hi} {hc})\n",
+  return {fmt::format("set palette defined ({lo} {lc}, {t} {lt}, {t} {ht}, {hi} {hc})\n"
+                      "set cbrange [{lo}:{hi}]\nset cbtics add ('{t:g}' {t})\n",
                       fmt::arg("lo", score.map_low), fmt::arg("lc", low_colour),
                       fmt::arg("t", threshold->second),
                       fmt::arg("lt", smaller ? "'#a6d96a'" : "'#fdae61'"),
                       fmt::arg("ht", smaller ? "'#fdae61'" : "'#a6d96a'"),
-                      fmt::arg("hi", score.map_high), fmt::arg("hc", high_colour)) +
-              range +
-              fmt::format("set cbtics add ('{t:g}' {t})\n", fmt::arg("t", threshold->second)),
+                      fmt::arg("hi", score.map_high), fmt::arg("hc", high_colour)),
           std::string(score.label), fmt::format("{}, threshold {:g}", name, threshold->second)};
 }
 
-MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th) {
+MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th,
+                    std::pair<double, double> values) {
   if (metric == "cost") {
     return {
         "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
@@ -93,7 +112,20 @@ MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th) {
         "CPU time (s)", "CPU time of the numerical run"};
   }
   if (metric == "status") return {"unset colorbox\n", "", "outcome"};
-  return ScoreStyle(*FindScore(metric), th);
+  return ScoreStyle(*FindScore(metric), th, values);
+}
+
+// The criteria a map draws: a score's map judges by that score's threshold alone (none when
+// the score has none: nothing to draw then); the status and cost maps by every threshold.
+std::optional<ValidityCriteria> MapCriteria(const std::vector<ScoredPoint>& points,
+                                            const ValidityCriteria& criteria,
+                                            const std::string& metric) {
+  if (!FindScore(metric)) return criteria;
+  const auto threshold = criteria.options.thresholds.find(metric);
+  if (threshold == criteria.options.thresholds.end()) return std::nullopt;
+  CriteriaOptions own = criteria.options;
+  own.thresholds = {*threshold};
+  return DeriveCriteria(points, own);
 }
 
 // gnuplot's point type of a marker: 2 a cross, 4 an open square, 6 an open circle, 12 an open
@@ -173,26 +205,46 @@ std::string CellClauses(const MapGrid& grid, const std::string& metric, const Cr
   return joined;
 }
 
-// The curves drawn over the cells: the derived boundary with the points it envelopes and the
-// paper's rules, or the stability bound on the dt map.
-std::string Overlays(const ValidityCriteria& criteria, MapAxis y) {
+// The curves drawn over the cells: the boundary of the map's criteria with the points it
+// envelopes and the paper's rules, or, on the dt map, the stability bound when it lies within
+// the range shown (`dt_ratio_max`, the top of the y range). Without criteria (a score without a
+// threshold) the legend says that no boundary is drawn.
+std::string Overlays(const std::optional<ValidityCriteria>& criteria, const std::string& metric,
+                     MapAxis y, double dt_ratio_max) {
   if (y == MapAxis::kDt) {
-    return ", 1 with lines lw 3 lc rgb '#000000' title 'sharp stability bound 2/ω_{max}'";
+    return dt_ratio_max >= 1.0 ? ", \\\n     1 with lines lw 3 lc rgb '#000000' title 'sharp "
+                                 "stability bound 2/ω_{max}'"
+                               : "";
   }
-  std::string overlays =
-      ", '' index 1 using 1:2 with points pt 9 ps 1.6 lc rgb '#000000' title 'smallest passing "
-      "R_{ftrunc} of each R_k'";
-  if (criteria.fit) {
-    overlays += fmt::format(
-        ", (x >= {k} ? {c} * x**{p} : 1/0) with lines lw 3 dt 1 lc rgb '#000000' "
-        "title 'derived boundary: R_{{ftrunc}} = {c:.3g} R_k^{{{p:.3f}}}, the fit above the "
-        "knee R_k = {k:.4g} raised to cover every point'",
-        fmt::arg("k", criteria.fit->knee_r_k), fmt::arg("c", criteria.fit->c_envelope),
-        fmt::arg("p", criteria.fit->p));
+  std::string overlays;
+  if (!criteria) {
+    const ScoreDefinition& score = *FindScore(metric);
+    std::string flag = score.ThresholdKey();
+    std::ranges::replace(flag, '_', '-');
+    overlays = ", \\\n     keyentry title " +
+               GnuplotQuoted(fmt::format("{} has no threshold, so no boundary is drawn (give one "
+                                         "with --{} or in the study file's thresholds)",
+                                         score.label, flag));
+  } else {
+    const std::string judged = ThresholdsText(criteria->options, false);
+    overlays = fmt::format(
+        ", \\\n     '' index 1 using 1:2 with points pt 9 ps 1.6 lc rgb '#000000' title 'smallest "
+        "R_{{ftrunc}} passing {} at each R_k'",
+        judged);
+    if (criteria->fit) {
+      overlays += fmt::format(
+          ", \\\n     (x >= {k} ? {c} * x**{p} : 1/0) with lines lw 3 dt 1 lc rgb '#000000' "
+          "title 'derived boundary ({j}): R_{{ftrunc}} = {c:.3g} R_k^{{{p:.3f}}}, the fit above "
+          "the knee R_k = {k:.4g} raised to cover every point'",
+          fmt::arg("j", judged), fmt::arg("k", criteria->fit->knee_r_k),
+          fmt::arg("c", criteria->fit->c_envelope), fmt::arg("p", criteria->fit->p));
+    }
   }
   return overlays +
-         ", sqrt(x) with lines lw 2 dt 2 lc rgb '#5e3c99' title 'paper eq. 10: R_{ftrunc} = "
-         "sqrt(R_k)', (x > 100 ? 300 : 1/0) with lines lw 2 dt 4 lc rgb '#0571b0' title 'paper "
+         ", \\\n     sqrt(x) with lines lw 2 dt 2 lc rgb '#5e3c99' title 'paper eq. 10: R_{ftrunc} "
+         "= "
+         "sqrt(R_k)', \\\n     (x > 100 ? 300 : 1/0) with lines lw 2 dt 4 lc rgb '#0571b0' title "
+         "'paper "
          "eq. 11: R_{ftrunc} = 300 for R_k > 10^2'";
 }
 
@@ -237,22 +289,27 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
   TerminalFor(file, 1100, 850);  // Throws for a bad extension before any file is written.
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
-  WriteMapData(grid, criteria, options.metric, data_file);
-  const MetricStyle style = StyleOf(options.metric, criteria.options);
+  const std::optional<ValidityCriteria> drawn = MapCriteria(points, criteria, options.metric);
+  // Without a threshold no cell fails: the cells' categories are their runs' statuses alone.
+  const ValidityCriteria judged = drawn.value_or(ValidityCriteria{.options = {.thresholds = {}}});
+  WriteMapData(grid, judged, options.metric, data_file);
+  const MetricStyle style =
+      StyleOf(options.metric, judged.options, ValueRange(grid, options.metric));
   const bool by_dt = options.y == MapAxis::kDt;
   const std::string shown =
       by_dt ? fmt::format("at R_ftrunc = {:g}", grid.fixed_r_ftrunc) : "at " + DtShown(grid);
+  const double ymax = std::ranges::max(grid.cells, {}, &MapCell::y_high).y_high;
   const MapFrame frame{
       study + ": " + style.title + ", " + shown,
       by_dt ? "dt / dt_{sharp}" : "R_{ftrunc} = f_{trunc} / f_1",
       GnuplotTics("x", grid.r_k_values) + GnuplotTics("y", grid.y_values),
-      CellClauses(grid, options.metric, criteria.options, GnuplotFileName(data_file)),
-      Overlays(criteria, options.y),
+      CellClauses(grid, options.metric, judged.options, GnuplotFileName(data_file)),
+      Overlays(drawn, options.metric, options.y, ymax),
       file,
       grid.cells.front().x_low,
       grid.cells.back().x_high,
       std::ranges::min(grid.cells, {}, &MapCell::y_low).y_low,
-      std::ranges::max(grid.cells, {}, &MapCell::y_high).y_high};
+      ymax};
   RunGnuplot(MapScript(frame, style), std::filesystem::path(file).replace_extension(".gp"), file);
 }
 

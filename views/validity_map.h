@@ -30,8 +30,11 @@ struct MapOptions {
 // Draws the map into `file` (.png or .svg, from the extension), with its gnuplot script and
 // data beside it; the script names its data relative to its own folder, so it runs from there.
 // The axes tick the studied values, the title states the dt shown, the status map has one
-// legend entry per outcome category present (views/map_grid.h). Throws InputError when there is
-// nothing to draw or the file cannot be written.
+// legend entry per outcome category present (views/map_grid.h). The boundary drawn is the
+// metric's own: a score's map judges by that score's threshold alone (the title and legend say
+// when it has none, and its colours then span the values shown); the status and cost maps by
+// all of `criteria`. The dt map draws the stability bound when it lies within its range. Throws
+// InputError when there is nothing to draw or the file cannot be written.
 void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& points,
                      const ValidityCriteria& criteria, const MapOptions& options,
                      const std::filesystem::path& file);
