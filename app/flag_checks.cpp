@@ -17,6 +17,10 @@ namespace {
 // "" when `path` may name a database file; else why not, for a message naming its source.
 std::string DatabasePathProblem(const std::string& path) {
   if (path.empty()) return "is empty; it must name a database file";
+  if (path == kInMemoryDatabaseName) {
+    return "\":memory:\" names SQLite's database in memory, which keeps nothing once the "
+           "command ends; it must name a database file (./:memory: for a file of that name)";
+  }
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     return "names \"" + path + "\", a directory; it must name a database file";

@@ -24,10 +24,14 @@ struct NormalLaw {
   double damping_n_s_per_m = 0.0;  // c: viscous, acts only in contact.
   double exponent = 1.0;           // p >= 1.
   // For p > 1, whose tangent stiffness vanishes at d = 0: the penetration at which the
-  // explicit scheme's stability bound takes it (BoundStiffness).
+  // explicit scheme's stability bound takes it (BoundStiffness). Given with every power law, of
+  // exponent 1 too; 0 for the linear penalty.
   double bound_penetration_m = 0.0;
 
   bool IsLinear() const { return exponent == 1.0; }
+  // A power law of any exponent (a scene's `power_law`), whose reached penetrations a run
+  // checks against its bound penetration (core/reached_bound.h).
+  bool HasBoundPenetration() const { return bound_penetration_m > 0.0; }
 
   // k d^p for d > 0, else 0 (N).
   double ElasticForce(double d) const {

@@ -81,7 +81,7 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
     damping_.push_back(z.law.normal.damping_n_s_per_m);
     laws_.push_back(z.law);
     if (z.law.normal.damping_n_s_per_m != 0.0) damped_.push_back(static_cast<int>(i));
-    if (!z.law.normal.IsLinear()) power_.push_back(static_cast<int>(i));
+    if (z.law.normal.HasBoundPenetration()) power_.push_back(static_cast<int>(i));
     friction_of_.push_back(z.law.friction ? static_cast<int>(frictions_.size()) : -1);
     if (z.law.friction) frictions_.push_back({*z.law.friction, {}, 0});
   }
@@ -168,7 +168,8 @@ void ContactStations::ApplyPowerLaws() {
   for (std::size_t j = 0; j < power_.size(); ++j) {
     const int i = power_[j];
     const double penetration = Normal(i, displacement_) - gap_[i];
-    force_[i] = laws_[i].normal.ElasticForce(penetration);
+    // Of exponent 1, the law is the linear penalty, whose force is already set.
+    if (!laws_[i].normal.IsLinear()) force_[i] = laws_[i].normal.ElasticForce(penetration);
     largest_penetration_[j] = std::max(largest_penetration_[j], penetration);
   }
 }

@@ -140,7 +140,7 @@ class ContactStations {
   std::vector<double> normal_y_, normal_z_, gap_, stiffness_, damping_;
   std::vector<int> damped_;  // The zones with contact damping.
   std::vector<ContactLaw> laws_;
-  std::vector<int> power_;                   // The zones whose normal law is not linear.
+  std::vector<int> power_;                   // The zones whose normal law is a power law.
   std::vector<double> largest_penetration_;  // Per power_ entry.
   std::vector<int> friction_of_;             // Per zone, its index in frictions_ (-1: none).
   std::vector<Rubbing> frictions_;

@@ -168,7 +168,8 @@ bool Qualifies(const SceneModalSystem& system, std::span<const Eigen::VectorXd> 
   const auto& zones = system.Zones();
   if (zones.empty() || zones.size() > kMaxZones || observed.size() > kMaxZones) return false;
   return std::ranges::all_of(zones, [](const ZoneTerm& z) {
-    return z.law.normal.IsLinear() && z.law.normal.stiffness > 0.0 && !z.law.friction;
+    return z.law.normal.IsLinear() && !z.law.normal.HasBoundPenetration() &&
+           z.law.normal.stiffness > 0.0 && !z.law.friction;
   });
 }
 

@@ -19,7 +19,9 @@ struct ReachedBound {
   // 2 / omega_max with each power-law zone at the larger of its bound penetration and the one
   // it reached (s).
   double dt_sharp_reached_s = 0.0;
-  bool exceeded = false;  // Some zone went deeper than its bound penetration.
+  // Some zone of exponent p > 1 went deeper than its bound penetration (of p = 1, whose tangent
+  // stiffness is constant, the bound holds at any depth).
+  bool exceeded = false;
 };
 
 // After a run of `system`; without a power-law zone, not exceeded and dt_sharp_reached_s 0.

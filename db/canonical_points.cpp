@@ -19,7 +19,8 @@ void WriteScore(Connection& c, std::int64_t point_id, const std::optional<ScoreR
 }
 
 std::optional<ReferenceRow> FindReference(StudyDatabase& db, const std::string& reference_key) {
-  auto row = FindReferenceRow<ReferenceRow>(db, "reference_runs", reference_key, kReferenceColumns);
+  auto row = FindReferenceRow<ReferenceRow>(db, "reference_runs", "reference", reference_key,
+                                            kReferenceColumns);
   if (row) CheckReference(db.Raw().Path(), *row);
   return row;
 }

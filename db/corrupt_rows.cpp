@@ -1,5 +1,6 @@
 #include "db/corrupt_rows.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -34,6 +35,96 @@ std::int64_t StoredCount(const TableCell& cell, const std::string& database_path
                  fmt::format("{} holds {} (a count from 0 to {})", column, held, max));
   }
   return *count;
+}
+
+namespace {
+
+// At most 40 bytes of a stored text, quoted, control and non-ASCII bytes escaped.
+std::string QuotedText(const std::string& text) {
+  constexpr std::size_t kShown = 40;
+  std::string out = "\"";
+  for (std::size_t i = 0; i < std::min(text.size(), kShown); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c >= 0x7f) {
+      out += fmt::format("\\x{:02x}", c);
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + (text.size() > kShown ? "\"..." : "\"");
+}
+
+std::string_view TypeWord(SqlType type) {
+  switch (type) {
+    case SqlType::kInteger:
+      return "an integer";
+    case SqlType::kReal:
+      return "a number";
+    case SqlType::kText:
+      return "text";
+    case SqlType::kBlob:
+      return "a blob of doubles";
+  }
+  return "";
+}
+
+// "(it must be a number, finite and > 0)" for a value of another type, "(it must be finite and
+// > 0)" for a number out of the range.
+std::string MustBe(const StoredColumn& column, bool typed) {
+  if (typed) return "(it must be " + std::string(Allowed(column.range)) + ")";
+  std::string must = "(it must be " + std::string(TypeWord(column.type));
+  if (column.range != ValueRange::kAny) must += ", " + std::string(Allowed(column.range));
+  return must + (column.nullable ? " or NULL)" : ")");
+}
+
+std::string Problem(const StoredColumn& column, const std::string& held, bool typed = false) {
+  return std::string(column.name) + " is " + held + " " + MustBe(column, typed);
+}
+
+}  // namespace
+
+std::optional<std::string> StoredValueProblem(const TableCell& cell, const StoredColumn& column) {
+  if (std::holds_alternative<std::monostate>(cell)) {
+    if (column.nullable) return std::nullopt;
+    return Problem(column, "NULL");
+  }
+  if (const auto* text = std::get_if<std::string>(&cell)) {
+    if (column.type == SqlType::kText) return std::nullopt;
+    return Problem(column, "the text " + QuotedText(*text));
+  }
+  const auto* integer = std::get_if<std::int64_t>(&cell);
+  const double value = integer != nullptr ? static_cast<double>(*integer) : std::get<double>(cell);
+  const std::string held = integer != nullptr ? std::to_string(*integer) : fmt::format("{}", value);
+  const bool typed =
+      column.type == SqlType::kReal || (column.type == SqlType::kInteger && integer != nullptr);
+  if (!typed) return Problem(column, held);
+  if (!Contains(column.range, value)) return Problem(column, held, true);
+  return std::nullopt;
+}
+
+std::optional<std::string> StoredValueProblem(const Statement& s, int i,
+                                              const StoredColumn& column) {
+  const int type = s.ColumnType(i);
+  if (column.type == SqlType::kBlob) {
+    if (type == SQLITE_BLOB || (type == SQLITE_NULL && column.nullable)) return std::nullopt;
+    return Problem(column, type == SQLITE_NULL ? "NULL" : "not a blob");
+  }
+  switch (type) {
+    case SQLITE_NULL:
+      return StoredValueProblem(TableCell(), column);
+    case SQLITE_INTEGER:
+      return StoredValueProblem(TableCell(s.GetInt(i)), column);
+    case SQLITE_FLOAT:
+      return StoredValueProblem(TableCell(s.GetDouble(i)), column);
+    case SQLITE_BLOB:
+      return Problem(column, "a blob");
+    default:
+      if (column.type == SqlType::kText) return std::nullopt;  // Not copied to be checked.
+      return StoredValueProblem(TableCell(s.GetText(i)), column);
+  }
 }
 
 void CheckFinite(const std::string& database_path, const std::string& row,

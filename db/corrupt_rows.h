@@ -5,12 +5,14 @@
 // a point against another history.
 
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "db/sqlite_handle.h"
 #include "records/canonical_records.h"
+#include "records/columns.h"
 #include "records/scene_records.h"
 #include "records/table.h"
 
@@ -30,6 +32,41 @@ const std::string& StoredText(const TableCell& cell, const std::string& database
 // <value> (a count from 0 to <max>)" otherwise.
 std::int64_t StoredCount(const TableCell& cell, const std::string& database_path,
                          const std::string& row, const std::string& column, std::int64_t max);
+
+// What the check of one stored value knows of its column (records/columns.h).
+struct StoredColumn {
+  std::string_view name;
+  SqlType type;
+  bool nullable;
+  ValueRange range;
+};
+template <typename Row>
+StoredColumn StoredColumnOf(const Column<Row>& c) {
+  return {c.name, c.Type(), c.Nullable(), c.range};
+}
+
+// Why `cell` cannot be a value of `column`, or nothing when it can: NULL in a column that may
+// not hold it, a value of another type (a REAL column holds integers and reals), a number out
+// of the column's range. "r_k is -5 (it must be finite and > 0)", "err is the text \"abc\" (it
+// must be a number, in [0, 1] or NULL)".
+std::optional<std::string> StoredValueProblem(const TableCell& cell, const StoredColumn& column);
+// The same of column i of the statement's current row; a signal's column must hold a blob.
+std::optional<std::string> StoredValueProblem(const Statement& s, int i,
+                                              const StoredColumn& column);
+
+// Throws DbError "<database_path>: database corrupt: <row>: <problem>" unless each non-blob
+// column of `columns` that `table` holds (a query's result, a view's columns by name) holds a
+// value of its type and range in row `i`.
+void CheckStoredCells(const std::string& database_path, const std::string& row, const Table& table,
+                      std::size_t i, const auto& columns) {
+  for (const auto& c : columns) {
+    const std::optional<std::size_t> at = table.ColumnIndex(c.name);
+    if (!at || c.Type() == SqlType::kBlob) continue;
+    if (auto problem = StoredValueProblem(table.rows[i][*at], StoredColumnOf(c))) {
+      ThrowCorrupt(database_path, row, *problem);
+    }
+  }
+}
 
 // One stored signal, named by its column.
 struct StoredSamples {

@@ -56,7 +56,8 @@ std::vector<EnsembleReferenceRow> ReadReferences(Connection& c, std::int64_t stu
   while (s.Step()) {
     EnsembleReferenceRow r;
     s.ReadColumn(0, r.reference_id);
-    ReadRecord(s, 1, r, kEnsembleReferenceColumns);
+    ReadRecord(s, 1, r, kEnsembleReferenceColumns, c.Path(),
+               [&] { return "ensemble reference " + std::to_string(r.reference_id); });
     CheckEnsembleReference(c.Path(), r);
     rows.push_back(std::move(r));
   }
@@ -82,7 +83,9 @@ std::vector<StoredMember> ReadMembers(Connection& c, std::int64_t study_id) {
     }
     if (s.IsNull(6)) continue;  // A member without zone rows (CheckEnsemble refuses it).
     members.back().zone_indices.push_back(s.GetInt(6));
-    ReadRecord(s, 7, members.back().zones.emplace_back(), kEnsembleZoneColumns);
+    ReadRecord(s, 7, members.back().zones.emplace_back(), kEnsembleZoneColumns, c.Path(), [&] {
+      return "member " + std::to_string(id) + ", zone " + std::to_string(s.GetInt(6));
+    });
   }
   return members;
 }
@@ -119,8 +122,8 @@ void WriteScore(Connection& c, std::int64_t point_id,
 
 std::optional<EnsembleReferenceRow> FindEnsembleReference(StudyDatabase& db,
                                                           const std::string& key) {
-  auto row = FindReferenceRow<EnsembleReferenceRow>(db, "ensemble_references", key,
-                                                    kEnsembleReferenceColumns);
+  auto row = FindReferenceRow<EnsembleReferenceRow>(db, "ensemble_references", "ensemble reference",
+                                                    key, kEnsembleReferenceColumns);
   if (row) CheckEnsembleReference(db.Raw().Path(), *row);
   return row;
 }

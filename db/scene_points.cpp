@@ -16,8 +16,8 @@ void WriteScore(Connection& c, std::int64_t point_id, const std::optional<SceneS
 }
 
 std::optional<SceneReferenceRow> FindSceneReference(StudyDatabase& db, const std::string& key) {
-  auto row =
-      FindReferenceRow<SceneReferenceRow>(db, "scene_references", key, kSceneReferenceColumns);
+  auto row = FindReferenceRow<SceneReferenceRow>(db, "scene_references", "scene reference", key,
+                                                 kSceneReferenceColumns);
   if (row) CheckSceneReference(db.Raw().Path(), *row);
   return row;
 }

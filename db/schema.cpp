@@ -50,7 +50,7 @@ struct FreshSchema {
 
 const FreshSchema& Fresh() {
   static const FreshSchema fresh = [] {
-    Connection scratch(":memory:", Connection::Mode::kReadWriteCreate);
+    Connection scratch(std::string(kInMemoryDatabaseName), Connection::Mode::kInMemory);
     FreshSchema f{{ObjectsOf(scratch)}, {}};
     for (const char* migration : kMigrations) {
       scratch.Execute(migration);

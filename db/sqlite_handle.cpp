@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cassert>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -65,9 +66,19 @@ void CheckRegularOrAbsent(const std::string& path, const std::string& file, bool
 
 // Throws unless `path` names a regular file (or nothing yet, when a writer may create it) and
 // each file SQLite keeps beside it is a regular file or absent: SQLite would block for ever
-// opening a FIFO, and write a -journal beside a device. ":memory:" names no file.
+// opening a FIFO, and write a -journal beside a device. The database in memory is a file only
+// in kInMemory, and only it.
 void CheckIsDatabaseFile(const std::string& path, Connection::Mode mode) {
-  if (path == ":memory:") return;
+  if (mode == Connection::Mode::kInMemory) {
+    assert(path == kInMemoryDatabaseName);
+    return;
+  }
+  if (path == kInMemoryDatabaseName) {
+    throw DbError("cannot open database " + path +
+                  ": it names SQLite's database in memory, which keeps nothing once closed; a "
+                  "study database is a file (./:memory: for a file of that name); nothing was "
+                  "opened");
+  }
   CheckRegularOrAbsent(path, path, mode == Connection::Mode::kReadOnly);
   for (const char* beside : {"-journal", "-wal", "-shm"}) {
     CheckRegularOrAbsent(path, path + beside, false);

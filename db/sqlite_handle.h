@@ -34,12 +34,18 @@ using SqlValue = TableCell;
 // (the mark of a writer in WAL mode) lies beside it.
 bool OpensImmutable(const std::string& path);
 
+// The name SQLite gives a database in memory, which no file holds and closing loses.
+inline constexpr std::string_view kInMemoryDatabaseName = ":memory:";
+
 class Connection {
  public:
-  enum class Mode { kReadWriteCreate, kReadOnly };
+  // kInMemory: a scratch database of this process (path kInMemoryDatabaseName), never a
+  // study's.
+  enum class Mode { kReadWriteCreate, kReadOnly, kInMemory };
   // Opens `path`. Throws DbError naming the path when it cannot be opened: before SQLite
-  // touches anything when the path is not a regular file (a FIFO, a device, a folder) or, for
-  // a read-only connection, names nothing. A read-only connection never creates the file and
+  // touches anything when the path is not a regular file (a FIFO, a device, a folder), names
+  // the database in memory outside kInMemory (a study stored there would be lost) or, for a
+  // read-only connection, names nothing. A read-only connection never creates the file and
   // sets PRAGMA query_only; where nothing can write the file (see OpensImmutable) it opens it
   // immutable, so that SQLite neither locks it nor creates -wal or -shm files beside it.
   Connection(const std::string& path, Mode mode);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "db/corrupt_rows.h"
 #include "db/sqlite_handle.h"
 #include "records/columns.h"
 
@@ -49,11 +50,17 @@ int BindNulls(Statement& s, int first, const auto& columns) {
 }
 
 // Reads the current result row's columns first, first + 1, ... into the row's members in column
-// order; returns the next column. A point's parameter values to bind later are its cells
-// (CellsOf in records/columns.h).
-template <typename Row>
-int ReadRecord(const Statement& s, int first, Row& row, const auto& columns) {
+// order; returns the next column. Each value is checked against its column's type and range
+// first: DbError "<database_path>: database corrupt: <row_name()>: <problem>" (db/corrupt_rows.h)
+// names the row of a file edited or damaged. A point's parameter values to bind later are its
+// cells (CellsOf in records/columns.h).
+template <typename Row, typename RowName>
+int ReadRecord(const Statement& s, int first, Row& row, const auto& columns,
+               const std::string& database_path, const RowName& row_name) {
   for (const Column<Row>& c : columns) {
+    if (auto problem = StoredValueProblem(s, first, StoredColumnOf(c))) {
+      ThrowCorrupt(database_path, row_name(), *problem);
+    }
     VisitColumn(c, row, [&](auto& v) { s.ReadColumn(first, v); });
     ++first;
   }

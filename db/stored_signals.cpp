@@ -23,9 +23,10 @@ std::unique_ptr<Connection> OpenReadOnly(const std::string& database_path) {
 }
 
 // The reference `reference_id` of `table`, read on a read-only connection.
+// `what` names its rows in a refusal ("reference", "scene reference").
 template <typename Row>
 std::optional<Row> ReadById(const std::string& database_path, std::string_view table,
-                            std::int64_t reference_id, const auto& columns) {
+                            std::string_view what, std::int64_t reference_id, const auto& columns) {
   const auto db = OpenReadOnly(database_path);
   Statement s = db->Prepare("SELECT " + ColumnList(columns) + " FROM " + std::string(table) +
                             " WHERE reference_id = ?");
@@ -33,7 +34,8 @@ std::optional<Row> ReadById(const std::string& database_path, std::string_view t
   if (!s.Step()) return std::nullopt;
   Row row;
   row.reference_id = reference_id;
-  ReadRecord(s, 0, row, columns);
+  ReadRecord(s, 0, row, columns, database_path,
+             [&] { return std::string(what) + " " + std::to_string(reference_id); });
   return row;
 }
 
@@ -72,8 +74,8 @@ std::vector<double> ScoredRks(const std::string& database_path, const std::strin
 
 std::optional<ReferenceRow> ReadReference(const std::string& database_path,
                                           std::int64_t reference_id) {
-  const auto r =
-      ReadById<ReferenceRow>(database_path, "reference_runs", reference_id, kReferenceColumns);
+  const auto r = ReadById<ReferenceRow>(database_path, "reference_runs", "reference", reference_id,
+                                        kReferenceColumns);
   if (r) CheckReference(database_path, *r);
   return r;
 }
@@ -98,8 +100,8 @@ std::optional<std::int64_t> ReferenceOfPoint(const std::string& database_path,
 
 std::optional<StoredSignals> ReadSceneReferenceSignals(const std::string& database_path,
                                                        std::int64_t reference_id) {
-  auto r = ReadById<SceneReferenceRow>(database_path, "scene_references", reference_id,
-                                       kSceneReferenceColumns);
+  auto r = ReadById<SceneReferenceRow>(database_path, "scene_references", "scene reference",
+                                       reference_id, kSceneReferenceColumns);
   if (!r) return std::nullopt;
   CheckSceneReference(database_path, *r);
   return StoredSignals{reference_id,

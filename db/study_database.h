@@ -158,17 +158,19 @@ std::int64_t InsertReference(StudyDatabase& db, std::string_view table, const Ro
 }
 
 // The reference of `table` whose reference_key is `key`, with its id; nothing when none is
-// stored.
+// stored. `what` names it in a refusal of a corrupt row ("reference 7").
 template <typename Row>
 std::optional<Row> FindReferenceRow(StudyDatabase& db, std::string_view table,
-                                    const std::string& key, const auto& columns) {
+                                    std::string_view what, const std::string& key,
+                                    const auto& columns) {
   Statement s = db.Raw().Prepare("SELECT reference_id, " + ColumnList(columns) + " FROM " +
                                  std::string(table) + " WHERE reference_key = ?");
   s.Bind(1, key);
   if (!s.Step()) return std::nullopt;
   Row row;
   s.ReadColumn(0, row.reference_id);
-  ReadRecord(s, 1, row, columns);
+  ReadRecord(s, 1, row, columns, db.Raw().Path(),
+             [&] { return std::string(what) + " " + std::to_string(row.reference_id); });
   return row;
 }
 

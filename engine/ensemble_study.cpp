@@ -112,12 +112,18 @@ EnsembleStudy::Outcome EnsembleStudy::Score(const Point& point, const Reference&
     row.wall_s = s.wall_s;
     row.cpu_s = s.cpu_s;
     row.max_energy_ratio = s.max_energy_ratio;
-    if (s.status == RunStatus::kOk) {
+    out.status = s.status;
+    out.message = s.message;
+    if (s.status == RunStatus::kOk && spec_.window_s < s.dt_requested_s) {
+      // Its draws made the step longer than the window the study file was checked for.
+      out.status = RunStatus::kFailed;
+      out.message =
+          fmt::format("the window {:g} s is shorter than one time step ({:g} s): nothing to size",
+                      spec_.window_s, s.dt_requested_s);
+    } else if (s.status == RunStatus::kOk) {
       row.zones = MemberZoneRows(scene, run);
       row.impacts = MemberImpactRows(scene, run);
     }
-    out.status = s.status;
-    out.message = s.message;
     out.score = std::move(row);
   } catch (const std::exception& e) {
     out.message = e.what();

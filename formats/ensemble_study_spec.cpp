@@ -1,5 +1,7 @@
 #include "formats/ensemble_study_spec.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -354,8 +356,9 @@ std::string Where(const EnsembleStudySpec& spec, int state, int setting) {
 
 // Throws InputError "<file>: <where>: <reason>" when the model of `scene` cannot be built (a
 // preload's static equilibrium not found), and "<file>: window_s: <value> s in <where>: <reason>"
-// unless its run takes at most TransientOptions::max_steps steps and records histories of an
-// affordable size (compare/scene_run.h).
+// unless its run takes at least one time step (a shorter window has nothing to size), at most
+// TransientOptions::max_steps steps and records histories of an affordable size
+// (compare/scene_run.h).
 void CheckModelAndWindow(const EnsembleStudySpec& spec, const Scene& scene,
                          const std::string& where) {
   SceneModel model;
@@ -364,11 +367,18 @@ void CheckModelAndWindow(const EnsembleStudySpec& spec, const Scene& scene,
   } catch (const InputError& e) {
     throw InputError(spec.file + ": " + where + ": " + e.what());
   }
+  const std::string window =
+      spec.file + ": window_s: " + Shown(Json(spec.window_s)) + " s in " + where + ": ";
+  const double dt_s = scene.solver.dt.Resolve(model.bounds);
+  if (spec.window_s < dt_s) {
+    throw InputError(window + fmt::format("shorter than one time step ({:g} s): a member would "
+                                          "have nothing to size; it must hold at least one step",
+                                          dt_s));
+  }
   try {
     CheckSceneAffordable(scene, std::move(model));
   } catch (const InputError& e) {
-    throw InputError(spec.file + ": window_s: " + Shown(Json(spec.window_s)) + " s in " + where +
-                     ": " + e.what());
+    throw InputError(window + e.what());
   }
 }
 

@@ -62,6 +62,19 @@ template <typename Row, typename T>
 T MemberType(T Row::*);
 }  // namespace detail
 
+// What a stored number may be beyond its column's type, checked whenever a stored row is read
+// (db/corrupt_rows.h: a file edited or damaged is refused naming the row, never used).
+enum class ValueRange {
+  kAny,          // Any number of the column's type.
+  kFinite,       // Finite.
+  kNonNegative,  // Finite and >= 0: counts, times measured, bounds where a run may have none.
+  kPositive,     // Finite and > 0: ratios of the model, time steps and windows asked.
+  kFraction,     // In [0, 1]: the scores (min/max ratios and Err).
+};
+bool Contains(ValueRange range, double value);
+// "finite and > 0", "in [0, 1]", ...: what the range allows, for a message.
+std::string_view Allowed(ValueRange range);
+
 template <typename Row>
 struct Column {
   using Record = Row;
@@ -69,6 +82,7 @@ struct Column {
   ColumnMember<Row> member;
   std::string_view unit;     // SI ("s", "m", "N", "N s", "W"); "" for counts, ratios, text.
   std::string_view meaning;  // One line, as docs/database.md shows it.
+  ValueRange range = ValueRange::kAny;  // Of a numeric column: what a stored value may be.
 
   SqlType Type() const {
     return std::visit([](auto m) { return detail::SqlTypeOf<decltype(detail::MemberType(m))>(); },

@@ -232,7 +232,7 @@ TEST_F(RecordsTest, ARecordComesBackFromItsSqlColumnForColumn) {
   Statement select = db.Prepare("SELECT " + ColumnList(kScoreColumns) + " FROM scores");
   ASSERT_TRUE(select.Step());
   ScoreRow got;
-  ReadRecord(select, 0, got, kScoreColumns);
+  ReadRecord(select, 0, got, kScoreColumns, db.Path(), [] { return std::string("score 1"); });
   ExpectSameCells(got, sent);
   EXPECT_FALSE(got.srf.has_value());
   EXPECT_EQ(got.first_shock_rebounds, 3);

@@ -357,6 +357,74 @@ TEST_F(DatabaseCorruption, StoredCountsOutOfRangeAreADatabaseError) {
                 "9223372036854775807)");
 }
 
+// A stored number of the wrong type, not finite or out of its column's range (records/
+// columns.h) is refused where the row is read, naming the row, the column and the value: text
+// in a score judged the point failing, a negative R_k made the criteria print -nan.
+TEST_F(DatabaseCorruption, StoredNumbersOfTheWrongTypeOrOutOfRangeAreRefusedNamingTheRow) {
+  Canonical();
+  const std::string pristine = ReadBytes(db());
+  struct Case {
+    std::string sql;
+    std::vector<std::string> readers;
+    std::string message;
+  };
+  const std::vector<std::string> point_readers = {"criteria derive", "map --out " + Path("m.png"),
+                                                  "cost", "report --out " + Path("report")};
+  for (const Case& c : std::vector<Case>{
+           {"UPDATE scores SET err = 'abc' WHERE point_id = 2", point_readers,
+            "database corrupt: point 2: err is the text \"abc\" (it must be a number, in [0, 1] "
+            "or NULL)"},
+           {"UPDATE points SET r_k = -5 WHERE point_id = 3", point_readers,
+            "database corrupt: point 3: r_k is -5 (it must be finite and > 0)"},
+           {"UPDATE scores SET srf = 1.5 WHERE point_id = 1", point_readers,
+            "database corrupt: point 1: srf is 1.5 (it must be in [0, 1])"},
+           {"UPDATE scores SET dt_sharp_s = -9e999 WHERE point_id = 4", point_readers,
+            "database corrupt: point 4: dt_sharp_s is -inf (it must be finite and >= 0)"},
+           {"UPDATE reference_runs SET output_dt_s = 'abc' WHERE reference_id = 1",
+            {"export point --id 1 --out " + Path("point"),
+             "export reference --rk 10 --out " + Path("ref.csv")},
+            "database corrupt: reference 1: output_dt_s is the text \"abc\" (it must be a "
+            "number, finite and > 0)"},
+           {"UPDATE reference_runs SET r_fref = 'x' WHERE reference_id = 1",
+            {"export point --id 1 --out " + Path("point")},
+            "database corrupt: reference 1: r_fref is the text \"x\" (it must be a number, "
+            "finite and > 0)"}}) {
+    WriteText(db(), pristine);
+    Edit(c.sql);
+    for (const std::string& reader : c.readers) ExpectRefused(reader, c.message);
+  }
+  std::filesystem::remove(db());
+  Ensemble();
+  ExpectEachRefusedBySizingAndReport(
+      {{"UPDATE ensemble_member_zones SET max_force_n = 'big' WHERE rowid = (SELECT min(rowid) "
+        "FROM ensemble_member_zones)",
+        ", zone 0: max_force_n is the text \"big\" (it must be a number, finite and >= 0)"},
+       {"UPDATE ensemble_member_zones SET contact_time_fraction = 2 WHERE rowid = (SELECT "
+        "min(rowid) FROM ensemble_member_zones)",
+        ", zone 0: contact_time_fraction is 2 (it must be in [0, 1])"}});
+}
+
+// SQLite's database in memory keeps nothing once the command ends: every command taking --db
+// refuses it, as it does SHOCKMAP_DB set to it, before anything runs.
+TEST_F(DatabaseCorruption, TheDatabaseInMemoryIsRefused) {
+  WriteText(Path("study.json"), kCanonicalStudy);
+  const std::string allowed =
+      "\":memory:\" names SQLite's database in memory, which keeps nothing once the command "
+      "ends; it must name a database file (./:memory: for a file of that name)";
+  for (const std::string& command :
+       {"study run " + Path("study.json") + " --quiet", std::string("study status"),
+        std::string("query 'SELECT 1'"), std::string("criteria derive"), std::string("sizing")}) {
+    const auto r = RunShockmap(command + " --db :memory:");
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find("--db: the value " + allowed), std::string::npos) << r.output;
+  }
+  const auto from_env =
+      testing::RunShell("SHOCKMAP_DB=:memory: " + std::string(SHOCKMAP_BIN) + " study status");
+  EXPECT_EQ(from_env.exit_code, 2) << from_env.output;
+  EXPECT_NE(from_env.output.find("environment variable SHOCKMAP_DB " + allowed), std::string::npos)
+      << from_env.output;
+}
+
 TEST_F(DatabaseCorruption, ReportSkipsTheFigureOfACorruptReferenceAndWritesTheRest) {
   Canonical();
   Edit("UPDATE reference_runs SET shocks_json = '{bad' WHERE reference_id = 1");

@@ -195,6 +195,64 @@ TEST_F(SecurityResults, WindowShorterThanOneStepFails) {
   EXPECT_TRUE(Has(s, "failed,,the window 1e-08 s is shorter than one time step")) << s.output;
 }
 
+// An ensemble's window inside one step would size nothing: refused before anything runs, with
+// the window, the state and setting and the step, as canonical and scene studies end such a
+// point failed.
+TEST_F(SecurityResults, EnsembleWindowShorterThanOneStepIsRefused) {
+  json spec = SmallEnsemble(3);
+  spec["window_s"] = 1e-9;
+  ExpectRefused(spec, {"study.json: window_s: 1e-09 s in state \"new\", setting "
+                       "{\"solver.r_ftrunc\":30}: shorter than one time step (",
+                       " s): a member would have nothing to size; it must hold at least one "
+                       "step"});
+}
+
+// Criteria of a study where no truncation passes say so: no agreement with the paper's rule is
+// claimed, and no empty value is printed as a number.
+TEST_F(SecurityResults, CriteriaWhereNoTruncationPassesSayNoneDoes) {
+  const json study = {
+      {"name", "none"},
+      {"scoring",
+       {{"window_s", 0.02}, {"reference", {{"r_fref_min", 300}, {"r_fref_per_sqrt_rk", 3}}}}},
+      {"grids", {{{"rk", {10, 1000}}, {"rftrunc", {10}}}}}};
+  ASSERT_EQ(RunStudy(study, "none.db").exit_code, 0);
+  const Outcome o = RunShockmap("criteria derive --db " + Path("none.db") + " --err-max 1e-9");
+  EXPECT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_TRUE(Has(o,
+                  "paper eq. 11  R_ftrunc > 300 for R_k > 1e2: no studied truncation passes at "
+                  "R_k = 1e+03, so the data cannot confirm it."))
+      << o.output;
+  EXPECT_TRUE(Has(o, "time step   no studied time step passes at every R_k with a boundary"))
+      << o.output;
+  EXPECT_FALSE(Has(o, "agrees")) << o.output;
+  EXPECT_FALSE(Has(o, "- dt_sharp")) << o.output;
+}
+
+// A power law of exponent 1 is the linear law: its tangent stiffness is constant, so the bound
+// taken at the given penetration holds at any depth, and the run reports that bound and the
+// sharp bound it used.
+TEST_F(SecurityResults, PowerLawOfExponentOneReportsItsBound) {
+  json scene = json::parse(
+      testing::ReadBytes(std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"));
+  json& zone = scene["zones"][0];
+  zone["power_law"] = {{"coefficient_n_per_m_exponent", zone["stiffness_n_per_m"]},
+                       {"exponent", 1.0},
+                       {"bound_penetration_m", 1e-4}};
+  zone.erase("stiffness_n_per_m");
+  scene["solver"]["end_time_s"] = 0.02;
+  const Outcome o = RunShockmap("simulate " + Write(scene, "scene.json") + " --json --quiet");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  const json summary = json::parse(o.output);
+  const json& bound = summary["power_law_bound"];
+  EXPECT_EQ(bound["bound_penetration_m"], 1e-4) << bound;
+  EXPECT_EQ(bound["deepest_zone"], "tip_spring") << bound;
+  EXPECT_GT(bound["largest_penetration_m"].get<double>(), 0.0) << bound;
+  EXPECT_FALSE(bound["exceeded"].get<bool>()) << bound;
+  const double dt_sharp = summary["dt_sharp_s"].get<double>();
+  EXPECT_NEAR(bound["dt_sharp_at_reached_penetrations_s"].get<double>(), dt_sharp, 1e-12 * dt_sharp)
+      << bound;
+}
+
 // A criteria file's numbers are checked as every input file's are.
 TEST_F(SecurityResults, CriteriaFileValuesAreChecked) {
   const json baseline = json::parse(

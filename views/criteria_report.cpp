@@ -1,6 +1,7 @@
 #include "views/criteria_report.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -275,13 +276,43 @@ std::string PaperStepLine(const std::vector<ScoredPoint>& points) {
       beyond.size(), cells.size(), first);
 }
 
+// Paper eq. 11's truncation rule against the boundary above R_k = 1e2. The rule is confirmed
+// only where a studied truncation passes at every such R_k: an R_k where none passes is named,
+// never counted as agreeing.
+std::string PaperTruncationLine(const ValidityCriteria& c) {
+  const std::string rule = "  paper eq. 11  R_ftrunc > 300 for R_k > 1e2: ";
+  double needed = 0.0;
+  std::vector<std::string> none_passes;
+  for (const auto& b : c.boundary) {
+    if (b.r_k <= 100) continue;
+    if (b.r_ftrunc_min) {
+      needed = std::max(needed, *b.r_ftrunc_min);
+    } else {
+      none_passes.push_back(fmt::format("{:.3g}", b.r_k));
+    }
+  }
+  if (!none_passes.empty()) {
+    return rule + fmt::format(
+                      "no studied truncation passes at R_k = {}, so the data cannot confirm "
+                      "it.\n",
+                      fmt::join(none_passes, ", "));
+  }
+  if (needed == 0.0) return rule + "no R_k above 1e2 was studied.\n";
+  return rule + fmt::format("the data needs at most R_ftrunc = {:g} there ({}).\n", needed,
+                            needed <= 300 ? "agrees" : "300 is not enough");
+}
+
 // Where stability was kept and where it was lost: the two ratios never overlap
 // (validation/validity_criteria.h), and the points at the first lost ratio are counted.
 std::string StabilityLine(const ValidityCriteria& c, const std::vector<ScoredPoint>& points) {
-  std::string s = fmt::format(
-      "  time step   every point at dt <= {} dt_sharp above the boundary passes; every run "
-      "stayed stable up to {} dt_sharp",
-      Num(c.dt_ratio_max), Num(c.largest_stable_dt_ratio));
+  std::string s =
+      c.dt_ratio_max
+          ? fmt::format("  time step   every point at dt <= {} dt_sharp above the boundary passes",
+                        Num(c.dt_ratio_max))
+          : std::string("  time step   no studied time step passes at every R_k with a boundary");
+  s += c.largest_stable_dt_ratio ? fmt::format("; every run stayed stable up to {} dt_sharp",
+                                               Num(c.largest_stable_dt_ratio))
+                                 : std::string("; no studied time step kept every R_k stable");
   if (!c.smallest_diverged_dt_ratio) return s + "; none lost stability (predicted bound: 1)\n";
   const double first = *c.smallest_diverged_dt_ratio;
   int at = 0, diverged = 0, unstable = 0;
@@ -325,15 +356,7 @@ std::string RuleLines(const ValidityCriteria& c, const std::vector<ScoredPoint>&
   } else {
     s += "  truncation  no fit: fewer than two R_k have a boundary above the smallest truncation\n";
   }
-  double needed_above_100 = 0.0;
-  for (const auto& b : c.boundary) {
-    if (b.r_k > 100 && b.r_ftrunc_min)
-      needed_above_100 = std::max(needed_above_100, *b.r_ftrunc_min);
-  }
-  s += fmt::format(
-      "  paper eq. 11  R_ftrunc > 300 for R_k > 1e2: the data needs at most R_ftrunc = {:g} "
-      "there ({}).\n",
-      needed_above_100, needed_above_100 <= 300 ? "agrees" : "300 is not enough");
+  s += PaperTruncationLine(c);
   s += PaperStepLine(points);
   s += StabilityLine(c, points);
   if (const auto unscored = UnscoredWarning(c)) s += "  not scored  " + *unscored + "\n";

@@ -84,9 +84,9 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
     const NamedRow row(r, i);
     ScoredPoint p;
     p.point_id = std::get<std::int64_t>(row["point_id"]);
+    const std::string what = "point " + std::to_string(p.point_id);
     p.r_k = NumberIn(row["r_k"]).value_or(0.0);
     p.r_ftrunc = NumberIn(row["r_ftrunc"]).value_or(0.0);
-    const std::string what = "point " + std::to_string(p.point_id);
     const std::string& status = StoredText(row["status"], database_path, what, "status");
     const auto parsed = RunStatusFromString(status);
     if (!parsed) {
@@ -114,6 +114,9 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                           std::numeric_limits<std::int64_t>::max());
     p.cpu_s = NumberIn(row["cpu_s"]).value_or(0.0);
     if (const auto* message = std::get_if<std::string>(&row["message"])) p.message = *message;
+    // Every stored value of its type and range, before the point is used.
+    CheckStoredCells(database_path, what, r, i, kPointParameterColumns);
+    CheckStoredCells(database_path, what, r, i, kScoreColumns);
     points.push_back(p);
   }
   return points;

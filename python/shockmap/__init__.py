@@ -49,6 +49,17 @@ def _integer(name, value, low, high):
     return number
 
 
+def _database(db):
+    """`db` as the path of a study database; InputError for SQLite's database in memory, where a
+    study would be lost as soon as the call returns."""
+    path = _text("db", db)
+    if path == ":memory:":
+        raise InputError("db: \":memory:\" names SQLite's database in memory, which keeps nothing "
+                         "once the call returns; it must name a database file (./:memory: for a "
+                         "file of that name)")
+    return path
+
+
 def compare(rk, rftrunc, *, dt=None, dt_factor=0.1, dt_rule="sharp", window_s=0.06,
             scheme="explicit-modal", rfref=None, elements=0):
     """One run of the paper's problem scored against its reference, as `shockmap compare`."""
@@ -179,7 +190,7 @@ class Study:
         computed are stored, the others stay pending, and KeyboardInterrupt is raised."""
         if jobs is not None:
             jobs = _integer("jobs", jobs, 1, 1024)
-        return self._handle.run(_text("db", db), jobs, bool(retry_failed), progress)
+        return self._handle.run(_database(db), jobs, bool(retry_failed), progress)
 
     def __repr__(self):
         return f"<shockmap.Study {self.name!r} ({self.kind}) from {self.path}>"
@@ -202,7 +213,7 @@ def _frame(table):
 def query(db, sql, *parameters):
     """One read-only SQL statement, as `shockmap query`; ?1, ?2 ... bound to `parameters`
     (None, int, float or str)."""
-    return _frame(_shockmap.query(_text("db", db), _text("sql", sql), list(parameters)))
+    return _frame(_shockmap.query(_database(db), _text("sql", sql), list(parameters)))
 
 
 _RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",
@@ -212,7 +223,7 @@ _RESULTS_VIEW = {"canonical": "results", "scene_sweep": "scene_results",
 def results(db=DEFAULT_DATABASE, study=None):
     """The study's rows of its results view (`results`, `scene_results` or `ensemble_results`),
     ordered by point; frame.attrs["units"] gives each declared column's unit."""
-    name, kind = _shockmap.study_and_kind(_text("db", db), _text("study", study or ""))
+    name, kind = _shockmap.study_and_kind(_database(db), _text("study", study or ""))
     view = _RESULTS_VIEW[kind]
     order = "point_id" if kind != "scene_ensemble" else "1"
     return query(db, f"SELECT * FROM {view} WHERE study = ?1 ORDER BY {order}", name)
@@ -229,7 +240,7 @@ def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
                 break
         else:
             raise InputError(f"{key}: not a threshold; give NAME_max or NAME_min (err_max, srf_min)")
-    data = _json.loads(_shockmap.criteria_json(_text("db", db), _text("study", study or ""), given))
+    data = _json.loads(_shockmap.criteria_json(_database(db), _text("study", study or ""), given))
     frame = _pd.DataFrame(data["boundary"])
     frame.attrs["criteria"] = data
     return frame
@@ -237,18 +248,18 @@ def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
 
 def sizing(db=DEFAULT_DATABASE, study=None, wear=False, quantile=0.95, confidence=0.95):
     """The sizing table of an ensemble study, as `sizing --format csv` (`--wear` with wear)."""
-    return _frame(_shockmap.sizing(_text("db", db), _text("study", study or ""), bool(wear),
+    return _frame(_shockmap.sizing(_database(db), _text("study", study or ""), bool(wear),
                                    float(quantile), float(confidence)))
 
 
 def reference(db, reference_id, scene=False):
     """A stored reference's signals as arrays ("t_s" first), by its id in reference_runs, or in
     scene_references with scene=True."""
-    return _shockmap.reference(_text("db", db), _integer("reference_id", reference_id, 1, _ID_MAX),
+    return _shockmap.reference(_database(db), _integer("reference_id", reference_id, 1, _ID_MAX),
                                bool(scene))
 
 
 def point(db, study, point_id):
     """A stored point of the paper's problem computed again against its stored reference."""
-    return _shockmap.point(_text("db", db), _text("study", study),
+    return _shockmap.point(_database(db), _text("study", study),
                            _integer("point_id", point_id, 1, _ID_MAX))

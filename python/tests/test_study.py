@@ -190,6 +190,23 @@ def test_missing_database_raises_and_creates_nothing(tmp_path):
     assert not absent.exists()
 
 
+def test_the_database_in_memory_is_refused_by_every_call_taking_db(tmp_path):
+    path = write_json(tmp_path / "s.json", CANONICAL)
+    calls = [
+        lambda: shockmap.Study.load(path).run(db=":memory:"),
+        lambda: shockmap.results(":memory:"),
+        lambda: shockmap.query(":memory:", "SELECT 1"),
+        lambda: shockmap.criteria(":memory:"),
+        lambda: shockmap.sizing(":memory:"),
+        lambda: shockmap.reference(":memory:", 1),
+        lambda: shockmap.point(":memory:", "s", 1),
+    ]
+    for call in calls:
+        with pytest.raises(shockmap.InputError, match='db: ":memory:" names SQLite\'s database in '
+                           "memory, which keeps nothing once the call returns"):
+            call()
+
+
 def test_criteria_has_one_row_per_rk_as_criteria_derive(canonical, tmp_path, cli):
     _, db, _ = canonical
     frame = shockmap.criteria(db, "small_grid")
