@@ -220,6 +220,7 @@ void Check(const CheckAdviceFlags& f, const std::string& criteria_file) {
     ParseAdviceCheckOutcomes(ReadJsonFile(f.record), f.record);
   const AdviceCheckOutcome outcome = NamedOutcome(
       ensemble, scene_file.string(), SceneDigest(scene_json, scene), criteria_file, criteria_json);
+  CheckLowestRung(advice, LadderFactors(kFirstRungs).front(), criteria_file, criteria_json);
   fmt::print("advice for scene {} from {}: dt = {:g} dt_sharp, R_ftrunc {}\n", scene.name,
              criteria_file, advice.dt_ratio, AdvisedTruncations(advice));
   for (const std::string& w : advice.warnings) fmt::print("  warning  {}\n", w);
@@ -283,7 +284,7 @@ void AddCheckAdviceCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
       ->capture_default_str()
-      ->check(FiniteIn(0.0, true, 1.0 - 1e-12));
+      ->check(StrictlyBetween(0.0, 1.0));
   cmd->add_option("--tolerance", flags->options.tolerance,
                   "two rungs agree where their intervals of the sizing quantile, widened by this "
                   "fraction of the finer estimate, overlap")

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "app/flag_checks.h"
@@ -152,7 +153,7 @@ void AddCompareCommand(CLI::App& app) {
                   "finite elements of the beam (0: enough for every retained mode; at most " +
                       std::to_string(kEigenBudgetElements) + ")")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(WholeNumberIn(0, std::numeric_limits<int>::max()));
   cmd->add_option("--out", flags->out_dir, "directory for the CSV histories (and the plot)");
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "app/flag_checks.h"
@@ -92,13 +93,13 @@ void ExportReference(const ExportFlags& f) {
              nearest, signals->values.front().size(), signals->output_dt_s, f.out);
 }
 
-// The folder is created once the point is computed again, so that a refusal leaves none.
+// The folder is created once the point is computed again, so that a refusal leaves none, and
+// removed again when the histories cannot be written (a full disk).
 void ExportPoint(const ExportFlags& f) {
   CheckPathLength(std::filesystem::path(f.out) / "reference.csv", "--out");
   const std::string study = ResolveStudyName(f.database_path, f.study);
   const ReplayedPoint replay = ReplayCanonicalPoint(f.database_path, study, f.point_id);
-  PrepareOutputDirectory(f.out, "--out");
-  WriteComparisonCsv(replay.result, f.out);
+  WriteIntoDirectory(f.out, "--out", [&] { WriteComparisonCsv(replay.result, f.out); });
   const auto score = [](const std::optional<double>& v) {
     return v ? fmt::format("{}", *v) : std::string("not scored");
   };
@@ -157,7 +158,7 @@ void AddExportCommand(CLI::App& app) {
           ->check(Positive());
   CLI::Option* point =
       reference->add_option("--point", flags->point_id, "id of a point scored against it")
-          ->check(CLI::PositiveNumber);
+          ->check(WholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   rk->excludes(point);
   reference->add_option("--out", flags->out, "CSV file to write")->required();
   reference->callback([flags, rk, point] {
@@ -175,7 +176,7 @@ void AddExportCommand(CLI::App& app) {
   AddStudyArgument(one_point, *flags);
   one_point->add_option("--id", flags->point_id, "point id (column point_id of `results`)")
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(WholeNumberIn(1, std::numeric_limits<std::int64_t>::max()));
   one_point->add_option("--out", flags->out, "directory to write into")->required();
   one_point->callback([flags] { ExportPoint(*flags); });
 

@@ -1,10 +1,13 @@
 #include "app/flag_checks.h"
 
+#include <array>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "db/study_database.h"
@@ -26,6 +29,21 @@ std::string DatabasePathProblem(const std::string& path) {
     return "names \"" + path + "\", a directory; it must name a database file";
   }
   return "";
+}
+
+// `text` as a double when it is one in full (a finite or infinite value, never NaN).
+std::optional<double> ParsedDouble(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || std::isnan(value)) return std::nullopt;
+  return value;
+}
+
+// `value` in the shortest digits that read back as it.
+std::string Shortest(double value) {
+  std::array<char, 32> digits{};
+  const auto end = std::to_chars(digits.data(), digits.data() + digits.size(), value).ptr;
+  return std::string(digits.data(), end);
 }
 
 }  // namespace
@@ -85,6 +103,41 @@ CLI::Validator FiniteIn(double lo, bool strict, double hi) {
                  " is out of range: a double holds magnitudes from 2.2e-308 to 1.8e+308";
         }
         if (!std::isfinite(value) || value < lo || (strict && value == lo) || value > hi) {
+          return "value " + text + " must be " + description;
+        }
+        return "";
+      },
+      description);
+}
+
+CLI::Validator StrictlyBetween(double lo, double hi) {
+  const std::string description = "in (" + Shortest(lo) + ", " + Shortest(hi) + ")";
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const std::optional<double> value = ParsedDouble(text);
+        if (!value) return "value '" + text + "' is not a number";
+        if (!(*value > lo && *value < hi)) {
+          return "value " + text + " must be greater than " + Shortest(lo) + " and less than " +
+                 Shortest(hi);
+        }
+        return "";
+      },
+      description);
+}
+
+CLI::Validator WholeNumberIn(long long lo, long long hi) {
+  const std::string description =
+      "a whole number from " + std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        const std::size_t digits = text.starts_with('-') ? 1 : 0;
+        if (text.size() == digits ||
+            text.find_first_not_of("0123456789", digits) != std::string::npos) {
+          return "value '" + text + "' must be " + description;
+        }
+        long long value = 0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error != std::errc() || value < lo || value > hi) {
           return "value " + text + " must be " + description;
         }
         return "";

@@ -23,5 +23,11 @@ CLI::Validator FiniteIn(double lo, bool strict, double hi);
 // A finite number > lo (strict) or >= lo.
 CLI::Validator FiniteAbove(double lo, bool strict);
 inline CLI::Validator Positive() { return FiniteAbove(0.0, true); }
+// A finite number strictly between lo and hi, described as "in (lo, hi)".
+CLI::Validator StrictlyBetween(double lo, double hi);
+// A whole number written in decimal digits (an optional leading '-'), from lo to hi: checked
+// on the text, so that a value out of the option's type is named instead of clamped or
+// refused as unconvertible, and "010" or "0x10" are not read as octal or hexadecimal.
+CLI::Validator WholeNumberIn(long long lo, long long hi);
 
 }  // namespace shockmap

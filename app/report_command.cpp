@@ -181,17 +181,11 @@ void Run(const ReportFlags& f) {
   const StudyFileKind kind = StudyKindOf(
       ParseJsonText(*json, ctx.database_path + ": stored study " + ctx.study), ctx.database_path);
   ctx.kind = ToString(kind);
-  // A report refused half-way (a corrupt stored row, say) leaves no folder it created.
-  const bool existed = std::filesystem::exists(ctx.dir);
-  CreateOutputDirectory(ctx.dir);
-  try {
+  // A report refused half-way (a corrupt stored row, a full disk) leaves no folder it created.
+  WriteIntoDirectory(ctx.dir, "--out", [&] {
     const auto page = WriteReportIndex(ctx, StudySections(ctx, kind, *json));
     std::cout << "report written to " << page.string() << '\n';
-  } catch (...) {
-    std::error_code ignored;
-    if (!existed) std::filesystem::remove_all(ctx.dir, ignored);
-    throw;
-  }
+  });
 }
 
 }  // namespace

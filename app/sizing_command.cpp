@@ -189,12 +189,12 @@ void AddSizingCommand(CLI::App& app) {
   AddDatabaseFlag(sizing, flags->database_path);
   sizing->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(StrictlyBetween(0.0, 1.0));
   sizing
       ->add_option("--confidence", flags->options.confidence,
                    "confidence of the intervals and of Wilks' limit, in (0, 1)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(StrictlyBetween(0.0, 1.0));
   sizing
       ->add_option("--tolerance", flags->options.tolerance,
                    "a setting agrees with the refined one where their intervals, widened by "

@@ -27,8 +27,9 @@ void CheckReferenceCost(const CantileverImpact& problem, const ComparisonOptions
                                o.window_s, names.window, excess));
 }
 
-// The step, given or resolved on the model's bounds as the run will resolve it; after the mesh
-// check, since resolving a factor builds the model.
+// The step, given or resolved on the model's bounds as the run will resolve it, against the
+// window: at least one step (a shorter window holds nothing to compare) and at most max_steps;
+// after the mesh check, since resolving a factor builds the model.
 void CheckStepCount(const CantileverImpact& problem, const ComparisonOptions& o,
                     const ComparisonParameterNames& names) {
   const bool given = o.dt.dt_s.has_value();
@@ -36,11 +37,20 @@ void CheckStepCount(const CantileverImpact& problem, const ComparisonOptions& o,
       given ? *o.dt.dt_s
             : o.dt.Resolve(BuildImpactModel(problem, o.scheme, o.r_ftrunc, o.n_elements).bounds);
   const auto max_steps = TransientOptions{}.max_steps;
-  if (o.window_s / dt_s <= max_steps) return;
+  if (o.window_s >= dt_s && o.window_s / dt_s <= max_steps) return;
   const std::string step = given
                                ? fmt::format("{}: {:g} s", names.dt, dt_s)
                                : fmt::format("{}: {:g} of the {} bound, {:.4g} s,", names.dt_factor,
                                              o.dt.factor, ToString(o.dt.rule), dt_s);
+  if (o.window_s < dt_s) {
+    const std::string origin = given ? names.dt
+                                     : fmt::format("{} {:g} of the {} bound", names.dt_factor,
+                                                   o.dt.factor, ToString(o.dt.rule));
+    throw InputError(
+        fmt::format("{}: the {:g} s window is shorter than one time step, {} s ({}): nothing to "
+                    "compare; give a window of at least {} s",
+                    names.window, o.window_s, dt_s, origin, dt_s));
+  }
   throw InputError(fmt::format("{} over the {:g} s window is {:.3g} steps; at most {} are allowed",
                                step, o.window_s, o.window_s / dt_s, max_steps));
 }

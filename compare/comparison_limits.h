@@ -23,7 +23,8 @@ struct ComparisonParameterNames {
 // Throws InputError, naming the parameter, its value and the budget, when the mesh (given, or
 // the default for r_ftrunc) has an eigenproblem beyond the budget (core/modal_basis.h), the
 // reference is estimated beyond its own (reference/reference_cost.h), or the step over the
-// window takes more steps than a run may (TransientOptions::max_steps). Preconditions:
+// window takes more steps than a run may (TransientOptions::max_steps) or none (a window
+// shorter than one step). Preconditions:
 // problem.IsValid(), options.IsValid().
 void CheckComparisonAffordable(const CantileverImpact& problem, const ComparisonOptions& options,
                                const ComparisonParameterNames& names);

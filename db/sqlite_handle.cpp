@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -15,9 +16,17 @@ namespace {
 // How long a writer waits for another writer's lock before giving up.
 constexpr int kBusyTimeout_ms = 10000;
 
-// SQLite's message, with what "busy" and a journal left by a killed writer mean for the user.
+// SQLite's message, with the system's reason behind a failed read or write of the file ("File
+// too large" past the file-size limit, "Read-only file system") and what "busy" and a journal
+// left by a killed writer mean for the user.
 std::string Describe(sqlite3* db) {
   std::string message = sqlite3_errmsg(db);
+  const int primary = sqlite3_extended_errcode(db) & 0xff;
+  const int system_error = sqlite3_system_errno(db);
+  if (system_error != 0 && (primary == SQLITE_IOERR || primary == SQLITE_FULL ||
+                            primary == SQLITE_CANTOPEN || primary == SQLITE_READONLY)) {
+    message += " (" + std::string(std::strerror(system_error)) + ")";
+  }
   if ((sqlite3_extended_errcode(db) & 0xff) == SQLITE_BUSY) {
     message += " by another writer (waited " + std::to_string(kBusyTimeout_ms / 1000) +
                " s); nothing was written, run again once it is done";
@@ -85,14 +94,39 @@ void CheckIsDatabaseFile(const std::string& path, Connection::Mode mode) {
   }
 }
 
+// The folder holding `path`, where SQLite also keeps its journal.
+std::string FolderOf(const std::string& path) {
+  return path.find('/') == std::string::npos
+             ? std::string(".")
+             : path.substr(0, std::max<std::size_t>(path.rfind('/'), 1));
+}
+
+// Throws, naming the place, unless a writer may write `path` (when it exists) and its folder (its
+// journal goes there): a read-only file system or a missing permission would otherwise end in
+// SQLite's "unable to open database file". A missing folder is left to the open, which names it.
+void CheckWritable(const std::string& path) {
+  if (path == ":memory:") return;
+  const std::string folder = FolderOf(path);
+  for (const std::string& place : {path, folder}) {
+    if (::access(place.c_str(), W_OK) == 0 || errno == ENOENT) continue;
+    const int error = errno;
+    throw DbError(
+        "cannot write database " + path + ": " +
+        (place == path ? "the file" : "its folder " + folder) +
+        (error == EROFS ? " is on a read-only file system"
+                        : " is not writable (" + std::string(std::strerror(error)) + ")") +
+        "; nothing was opened. Running a study writes the database and, beside it, its "
+        "journal: run it on a database in a writable folder (commands that only read, such as "
+        "query, criteria, map and report, read it where it is)");
+  }
+}
+
 }  // namespace
 
 bool OpensImmutable(const std::string& path) {
   struct statvfs fs {};
   if (::statvfs(path.c_str(), &fs) == 0 && (fs.f_flag & ST_RDONLY) != 0) return true;
-  const std::string folder = path.find('/') == std::string::npos
-                                 ? std::string(".")
-                                 : path.substr(0, std::max<std::size_t>(path.rfind('/'), 1));
+  const std::string folder = FolderOf(path);
   const bool writable = ::access(path.c_str(), W_OK) == 0 && ::access(folder.c_str(), W_OK) == 0;
   return !writable && ::access((path + "-wal").c_str(), F_OK) != 0;
 }
@@ -100,12 +134,13 @@ bool OpensImmutable(const std::string& path) {
 Connection::Connection(const std::string& path, Mode mode) : path_(path) {
   CheckIsDatabaseFile(path, mode);
   const bool read_only = mode == Mode::kReadOnly;
+  if (!read_only) CheckWritable(path);
   const std::string name = read_only ? ReadOnlyUri(path) : path;
   const int flags = read_only ? SQLITE_OPEN_READONLY | SQLITE_OPEN_URI
                               : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
   const int rc = sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr);
   if (rc != SQLITE_OK) {
-    const std::string msg = db_ != nullptr ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+    const std::string msg = db_ != nullptr ? Describe(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);
     db_ = nullptr;
     throw DbError("cannot open database " + path + ": " + msg);

@@ -45,9 +45,11 @@ class Connection {
   // Opens `path`. Throws DbError naming the path when it cannot be opened: before SQLite
   // touches anything when the path is not a regular file (a FIFO, a device, a folder), names
   // the database in memory outside kInMemory (a study stored there would be lost) or, for a
-  // read-only connection, names nothing. A read-only connection never creates the file and
-  // sets PRAGMA query_only; where nothing can write the file (see OpensImmutable) it opens it
-  // immutable, so that SQLite neither locks it nor creates -wal or -shm files beside it.
+  // read-only connection, names nothing; for a writer, when the file or its folder is on a
+  // read-only file system or not writable, naming which. A read-only connection never creates
+  // the file and sets PRAGMA query_only; where nothing can write the file (see OpensImmutable)
+  // it opens it immutable, so that SQLite neither locks it nor creates -wal or -shm files
+  // beside it.
   Connection(const std::string& path, Mode mode);
   ~Connection();
   Connection(const Connection&) = delete;

@@ -17,7 +17,8 @@ namespace {
 
 using Json = nlohmann::json;
 
-// The largest truncation a scene file takes (formats/scene_file.cpp).
+// The least and the largest truncation a scene file takes (formats/scene_file.cpp).
+constexpr double kMinRFtrunc = 1.0;
 constexpr double kMaxRFtrunc = 1e5;
 
 bool IsPin(const std::string& name) { return name.starts_with("pin_"); }
@@ -37,6 +38,14 @@ const SceneBeam& BeamNamed(const Scene& scene, const std::string& name) {
   return *std::ranges::find(scene.beams, name, &SceneBeam::name);
 }
 
+// The criteria file's truncation criterion, for messages: its fit's c and p when it has one.
+std::string TruncationCriterion(const Json& criteria_json) {
+  const auto fit = criteria_json.find("fit");
+  if (fit == criteria_json.end() || !fit->is_object()) return "boundary";
+  return "fit.c = " + Shown(fit->value("c", Json())) +
+         ", fit.p = " + Shown(fit->value("p", Json()));
+}
+
 }  // namespace
 
 std::vector<double> LadderFactors(int rungs) {
@@ -49,6 +58,20 @@ std::vector<double> LadderFactors(int rungs) {
 bool RungFits(const SceneAdvice& advice, double factor) {
   return std::ranges::all_of(
       advice.beams, [&](const BeamAdvice& b) { return b.r_ftrunc * factor <= kMaxRFtrunc; });
+}
+
+void CheckLowestRung(const SceneAdvice& advice, double factor, const std::string& criteria_file,
+                     const Json& criteria_json) {
+  for (const BeamAdvice& b : advice.beams) {
+    if (b.r_ftrunc * factor >= kMinRFtrunc) continue;
+    throw InputError(fmt::format(
+        "{}: {}: the criteria advise R_ftrunc {:.4g} for beam {}, so the "
+        "ladder's lowest rung (x {:.4g}) would be {:.4g}, below {:g}, the least truncation a "
+        "scene takes; check-advice needs every advised truncation to be at least {:.4g} "
+        "(`shockmap advise` gives the advice unchecked)",
+        criteria_file, TruncationCriterion(criteria_json), b.r_ftrunc, b.name, factor,
+        b.r_ftrunc * factor, kMinRFtrunc, kMinRFtrunc / factor));
+  }
 }
 
 Json RungSetting(const Json& scene_json, const Scene& scene, const SceneAdvice& advice,

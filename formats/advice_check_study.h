@@ -22,6 +22,12 @@ std::vector<double> LadderFactors(int rungs);
 // file takes.
 bool RungFits(const SceneAdvice& advice, double factor);
 
+// Throws InputError naming `criteria_file` and the fit it holds (`criteria_json`'s fit.c and
+// fit.p) when a beam's advised truncation times `factor`, the ladder's lowest rung, falls below
+// 1, the least a scene file takes: the advice cannot be checked below itself.
+void CheckLowestRung(const SceneAdvice& advice, double factor, const std::string& criteria_file,
+                     const nlohmann::json& criteria_json);
+
 // The setting of one rung, by path: each beam's advised truncation times `factor` (a bundle's
 // pins share the largest of theirs: "bundle.pin.r_ftrunc"; the wrapper "bundle.wrapper.
 // r_ftrunc"; a listed beam "beams[i].r_ftrunc"), its mesh at least the scene's and fine enough

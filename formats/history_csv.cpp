@@ -29,7 +29,6 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
           << h.energy.dissipated_j.values[i] << '\n';
     }
   }
-  num_out.Commit();
 
   const auto ref_file = dir / "reference.csv";
   AtomicFile ref_out(ref_file);
@@ -39,6 +38,8 @@ void WriteComparisonCsv(const ComparisonResult& result, const std::filesystem::p
   for (std::size_t i = 0; i < u.values.size(); ++i) {
     ref << u.TimeAt(i) << ',' << u.values[i] << ',' << result.reference->force_n.values[i] << '\n';
   }
+  // Both written in full before either replaces a file: a write that fails changes neither.
+  num_out.Commit();
   ref_out.Commit();
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <unordered_set>
 
@@ -40,6 +41,9 @@ class JsonPathTracker {
     return true;
   }
 
+  // The path of the value the parser reads next: the one it failed on, when it threw.
+  std::string PathOfNextValue() const { return Path(1); }
+
  private:
   struct Frame {
     bool object = false;
@@ -69,11 +73,14 @@ class JsonPathTracker {
       FailAt(file_, Path(), "key given twice in one object; each key may appear once");
   }
 
-  // The path of the current position, e.g. zones[3].name, shortened for messages.
-  std::string Path() const {
+  // The path of the current position, e.g. zones[3].name, shortened for messages; the
+  // innermost array's index advanced by `ahead` items.
+  std::string Path(int ahead = 0) const {
     std::string path;
-    for (const Frame& f : frames_) {
-      if (!f.object && f.index >= 0) path += "[" + std::to_string(f.index) + "]";
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      const long long index = f.index + (i + 1 == frames_.size() ? ahead : 0);
+      if (!f.object && index >= 0) path += "[" + std::to_string(index) + "]";
       if (f.object && !f.key.empty()) path += (path.empty() ? "" : ".") + Excerpt(f.key);
     }
     return path.size() > 80 ? path.substr(0, 77) + "..." : path;
@@ -88,11 +95,56 @@ bool IsControl(char c) {
   return u < 0x20 || u == 0x7f;
 }
 
-// The library's message without its tag and without the text it quotes ("last read: '...'",
-// "number overflow parsing '...'").
+// The library's message without its tag and without the text it quotes ("last read: '...'").
 std::string SyntaxReason(const std::string& what) {
   const std::string reason = what.substr(what.find(']') + 2);
   return reason.substr(0, std::min(reason.find("; last read"), reason.find(" '")));
+}
+
+// Finds where the parser fails: a SAX pass that keeps nothing but the byte and the token of
+// the first error.
+class FailureLocator : public nlohmann::json_sax<Json> {
+ public:
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t byte, const std::string& token,
+                   const nlohmann::detail::exception&) override {
+    byte_ = byte;
+    token_ = token;
+    return false;
+  }
+
+  std::size_t byte_ = 0;  // Bytes read up to the end of the failing token.
+  std::string token_;
+};
+
+// "line L" of the byte at `offset` in `text`, counted from 1.
+std::string LineOf(const std::string& text, std::size_t offset) {
+  const auto end = text.begin() + static_cast<std::ptrdiff_t>(std::min(offset, text.size()));
+  return "line " + std::to_string(1 + std::count(text.begin(), end, '\n'));
+}
+
+// A number beyond a double's range (1e400, -1e400), named by its line, key path and digits.
+[[noreturn]] void FailOnHugeNumber(const std::string& text, const std::string& file,
+                                   const std::string& path) {
+  FailureLocator locator;
+  Json::sax_parse(text, &locator);
+  const std::string line =
+      LineOf(text, locator.byte_ - std::min(locator.byte_, locator.token_.size()));
+  FailAt(file, path.empty() ? line : path + " (" + line + ")",
+         "the number " + Excerpt(locator.token_) +
+             " is beyond a double's range; numbers must be finite, at most about 1.8e308 in "
+             "magnitude");
 }
 
 }  // namespace
@@ -115,14 +167,15 @@ std::string Excerpt(const std::string& text, std::size_t offset) {
 }
 
 nlohmann::json ParseJsonText(const std::string& text, const std::string& file) {
+  JsonPathTracker tracker(file);
   try {
-    return Json::parse(text, JsonPathTracker(file));
+    return Json::parse(text, std::ref(tracker));
+  } catch (const Json::out_of_range&) {  // A number beyond a double's range.
+    FailOnHugeNumber(text, file, tracker.PathOfNextValue());
   } catch (const Json::parse_error& e) {
     const std::size_t at = e.byte > 0 ? std::min<std::size_t>(e.byte - 1, text.size()) : 0;
     throw InputError(file + ": not valid JSON (" + SyntaxReason(e.what()) + ", at byte " +
                      std::to_string(e.byte) + ": \"" + Excerpt(text, at) + "\")");
-  } catch (const Json::exception& e) {  // Out-of-range numbers.
-    throw InputError(file + ": not valid JSON (" + SyntaxReason(e.what()) + ")");
   }
 }
 

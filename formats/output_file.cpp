@@ -72,6 +72,34 @@ void PrepareOutputDirectory(const std::filesystem::path& dir, std::string_view f
   CreateOutputDirectory(dir);
 }
 
+namespace {
+
+// The outermost of `dir` and its parents that does not exist yet; empty when `dir` exists.
+std::filesystem::path OutermostMissing(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::path missing;
+  for (auto p = dir; !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
+    missing = p;
+    if (p == p.parent_path()) break;
+  }
+  return missing;
+}
+
+}  // namespace
+
+void WriteIntoDirectory(const std::filesystem::path& dir, std::string_view flag,
+                        const std::function<void()>& write) {
+  const std::filesystem::path created = OutermostMissing(dir);
+  PrepareOutputDirectory(dir, flag);
+  try {
+    write();
+  } catch (...) {
+    std::error_code ignored;
+    if (!created.empty()) std::filesystem::remove_all(created, ignored);
+    throw;
+  }
+}
+
 // A stream buffer over a file descriptor that keeps the first write error's errno.
 class AtomicFile::Buffer : public std::streambuf {
  public:

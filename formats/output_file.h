@@ -3,6 +3,7 @@
 // every failure reported with the system's reason.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -23,6 +24,12 @@ void CheckPathLength(const std::filesystem::path& path, std::string_view flag);
 // Throws InputError naming `flag` when `dir` exists as something other than a directory, or
 // cannot be created; creates it otherwise. Meant to run before a long computation.
 void PrepareOutputDirectory(const std::filesystem::path& dir, std::string_view flag);
+
+// Prepares `dir` as PrepareOutputDirectory does, then calls `write`. When `write` throws, the
+// folders this call created (the outermost, with all it holds) are removed before the exception
+// goes on: an output refused or failed half-way leaves no folder behind.
+void WriteIntoDirectory(const std::filesystem::path& dir, std::string_view flag,
+                        const std::function<void()>& write);
 
 // One output file, written in full or not at all: the bytes go to a temporary file in the same
 // folder, which Commit() renames over `path`. Destroyed without Commit() (an exception on the

@@ -272,6 +272,23 @@ FrictionLaw ParseFriction(JsonObjectReader& f) {
   return law;
 }
 
+// The softest tangential spring a zone may have, as a fraction of its normal stiffness. Softer,
+// the spring takes a slip of mu_s N / k_t, over a million times mu_s times the penetration,
+// before the zone slides: a run would never see it slide (nor wear), whatever its step.
+constexpr double kMinTangentialToNormalStiffness = 1e-6;
+
+void CheckTangentialStiffness(JsonObjectReader& f, double tangential, double normal) {
+  const double least = kMinTangentialToNormalStiffness * normal;
+  if (tangential < least) {
+    f.Fail("tangential_stiffness_n_per_m",
+           "value " + Shown(Json(tangential)) + " is below " + Shown(Json(least)) +
+               ", 1e-06 times the zone's normal stiffness " + Shown(Json(normal)) +
+               " N/m: so soft a spring needs a slip of over a million times the penetration "
+               "before the zone slides, so it would never slide; give at least " +
+               Shown(Json(least)));
+  }
+}
+
 // The laws of the zones `r` describes. Friction needs the tangential motion of a scene bending
 // in both planes.
 ZoneLaws ParseZoneLaws(JsonObjectReader& r, BendingPlanes planes) {
@@ -299,6 +316,8 @@ ZoneLaws ParseZoneLaws(JsonObjectReader& r, BendingPlanes planes) {
     }
     JsonObjectReader f(*friction, r.File(), r.PathOf("friction"));
     laws.friction = ParseFriction(f);
+    CheckTangentialStiffness(f, laws.friction->tangential_stiffness_n_per_m,
+                             laws.stiffness_n_per_m);
     f.Finish();
   }
   return laws;

@@ -75,6 +75,7 @@ void HandleUnlessIgnored(int signal, void (*handler)(int)) {
 
 void InstallSignalCleanup() {
   for (int s : {SIGINT, SIGTERM, SIGHUP}) HandleUnlessIgnored(s, CleanUpAndDie);
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 RemovedOnSignal::RemovedOnSignal(const std::filesystem::path& path) : slot_(ClaimFileSlot(path)) {}

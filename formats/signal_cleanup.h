@@ -14,8 +14,11 @@ namespace shockmap {
 // ignored (SIGHUP under nohup) stays ignored, as its parent asked.
 void HandleUnlessIgnored(int signal, void (*handler)(int));
 
-// Installs the handlers of SIGINT, SIGTERM and SIGHUP, each unless it is ignored. The CLI calls
-// it before any command; a study run replaces them with its own (engine/stop_request.h), which
+// Installs the handlers of SIGINT, SIGTERM and SIGHUP, each unless it is ignored, and ignores
+// SIGXFSZ: a write past the file-size limit (ulimit -f) then fails with EFBIG ("File too
+// large"), which the writer reports with its path and cleans up after, instead of the signal
+// ending the process silently with its temporary files left. The CLI calls it before any
+// command; a study run replaces them with its own (engine/stop_request.h), which
 // let the run stop cleanly.
 void InstallSignalCleanup();
 

@@ -4,15 +4,23 @@
 // quote at most a short escaped excerpt of any file. Each class: exit code 2, a message naming
 // the file and key path (or flag), and nothing written.
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "core/input_error.h"
 #include "formats/json_reader.h"
@@ -283,6 +291,153 @@ TEST_F(Security, FuzzSeedsHitTheLimits) {
           << m;
     }
   }
+}
+
+// 6. Messages that name what was given: numbers beyond a double, values on the edge of an open
+// interval, whole numbers beyond their type, a window inside one step, advice blamed on the
+// file it came from, a tangential spring too soft to slide, a database on a read-only mount.
+
+TEST_F(Security, JsonNumberBeyondADoubleIsNamedWithItsFileLineAndKey) {
+  std::string text = CanonicalScene().dump(2);
+  const std::size_t key = text.find("\"gap_m\": ");
+  ASSERT_NE(key, std::string::npos);
+  const std::size_t value = key + std::string("\"gap_m\": ").size();
+  text.replace(value, text.find_first_of(",\n}", value) - value, "1e400");
+  const std::string line =
+      "line " + std::to_string(1 + std::count(text.begin(), text.begin() + value, '\n'));
+  WriteText(Path("huge.json"), text);
+  Refused("simulate DIR/huge.json", {"huge.json", "gap_m", line, "the number 1e400",
+                                     "beyond a double's range", "at most about 1.8e308"});
+  try {
+    ParseJsonText("{\"a\": [1,\n  -1e400]}", "f.json");
+    ADD_FAILURE() << "parsed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("f.json: a[1] (line 2): the number -1e400"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST_F(Security, QuantileOfOneIsRefusedAsOutsideTheOpenInterval) {
+  const std::string study = kSource + "/studies/bundle_hex_ensemble.json";
+  const std::string criteria = kSource + "/studies/baselines/paper_fig4.json";
+  for (const std::string& args :
+       {"check-advice " + study + " --criteria " + criteria + " --db DIR/s.db --quantile 1",
+        "sizing --db DIR/s.db --quantile 1", "sizing --db DIR/s.db --confidence 1"}) {
+    const std::string out = Refused(args, {"value 1 must be greater than 0 and less than 1"});
+    EXPECT_EQ(out.find("<= 1"), std::string::npos) << out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+TEST_F(Security, WholeNumberFlagsNameTheValueAsGiven) {
+  const std::string id_range = "must be a whole number from 1 to 9223372036854775807";
+  std::string out = Refused("export reference --point -1 --out DIR/r.csv --db DIR/s.db",
+                            {"--point", "value -1 " + id_range});
+  EXPECT_LT(out.size(), 200u) << out;
+  Refused("export point --id 99999999999999999999 --out DIR/p --db DIR/s.db",
+          {"--id", "value 99999999999999999999 " + id_range});
+  Refused("export point --id 0x10 --out DIR/p --db DIR/s.db", {"--id", "value '0x10' " + id_range});
+  out = Refused("compare --rk 100 --rftrunc 10 --elements 99999999999",
+                {"--elements", "value 99999999999 must be a whole number from 0 to 2147483647"});
+  EXPECT_EQ(out.find("Could not convert"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(Path("p")));
+}
+
+TEST_F(Security, CompareWindowInsideOneStepIsRefusedWithTheStep) {
+  const std::string out = Refused("compare --rk 100 --rftrunc 10 --window 1e-7 --out DIR/c",
+                                  {"--window", "1e-07 s window is shorter than one time step",
+                                   "--dt-factor 0.1 of the sharp bound", "at least 0.0001125"});
+  EXPECT_EQ(out.find("dt used"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(Path("c")));
+}
+
+TEST_F(Security, AdviceTooSmallToCheckBelowItBlamesTheCriteriaFile) {
+  Json criteria = Json::parse(testing::ReadBytes(kSource + "/studies/baselines/modes_fig4.json"));
+  criteria["fit"]["p"] = -10;
+  WriteText(Path("steep.json"), criteria.dump(2));
+  const std::string out = Refused(
+      "check-advice " + kSource +
+          "/studies/bundle_hex_ensemble.json --criteria "
+          "DIR/steep.json --db DIR/s.db --write-study DIR/ladder.json",
+      {"steep.json: fit.c = ", "fit.p = -10", "R_ftrunc 1.001", "lowest rung", "at least 3"});
+  EXPECT_EQ(out.find("bundle_hex_7.json:"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(Path("ladder.json")));
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
+TEST_F(Security, TangentialSpringTooSoftToSlideIsRefused) {
+  const std::string path = kSource + "/scenes/bundle_hex_7_friction.json";
+  Json scene = Json::parse(testing::ReadBytes(path));
+  scene["bundle"]["wire"]["friction"]["tangential_stiffness_n_per_m"] = 1e-300;
+  try {
+    ParseScene(scene, path);
+    ADD_FAILURE() << "a tangential stiffness of 1e-300 N/m was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    for (const char* part : {"bundle.wire.friction.tangential_stiffness_n_per_m", "1e-300",
+                             "normal stiffness 1000000.0", "never slide", "at least 1.0"}) {
+      EXPECT_NE(m.find(part), std::string::npos) << part << "\n" << m;
+    }
+  }
+  // The shipped law, k_t equal to the normal stiffness, is kept.
+  EXPECT_NO_THROW(ParseScene(Json::parse(testing::ReadBytes(path)), path));
+}
+
+// Runs shockmap with `args` in a child whose own mount namespace has `folder` bind-mounted
+// read-only onto itself, its output in `output`; nullopt where the system allows no mount
+// namespace (no CAP_SYS_ADMIN).
+std::optional<Outcome> RunWithReadOnlyFolder(const std::filesystem::path& folder,
+                                             const std::filesystem::path& output,
+                                             std::vector<std::string> args) {
+  constexpr int kNoNamespace = 77;
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const char* dir = folder.c_str();
+    if (unshare(CLONE_NEWNS) != 0 || mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) ||
+        mount(dir, dir, nullptr, MS_BIND, nullptr) != 0 ||
+        mount(nullptr, dir, nullptr, MS_REMOUNT | MS_BIND | MS_RDONLY, nullptr) != 0) {
+      _exit(kNoNamespace);
+    }
+    const int fd = open(output.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    std::vector<char*> argv = {const_cast<char*>(SHOCKMAP_BIN)};
+    for (std::string& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(SHOCKMAP_BIN, argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kNoNamespace) return std::nullopt;
+  return Outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1, testing::ReadBytes(output)};
+}
+
+TEST_F(Security, StudyRunOnAReadOnlyMountSaysSoAndWhere) {
+  const std::string study = Path("small.json");
+  WriteText(study, R"({"name": "small", "scoring": {"window_s": 0.02},
+                       "grids": [{"rk": [10], "rftrunc": [10]}]})");
+  const std::filesystem::path ro = dir_ / "ro";
+  std::filesystem::create_directories(ro);
+  const auto fresh = RunWithReadOnlyFolder(
+      ro, dir_ / "out.txt", {"study", "run", study, "--db", (ro / "s.db").string(), "--quiet"});
+  if (!fresh) GTEST_SKIP() << "no mount namespace here: a read-only mount cannot be made";
+  EXPECT_EQ(fresh->exit_code, 2) << fresh->output;
+  for (const std::string part : {"cannot write database " + (ro / "s.db").string(),
+                                 "its folder " + ro.string(), "read-only file system"}) {
+    EXPECT_NE(fresh->output.find(part), std::string::npos) << part << "\n" << fresh->output;
+  }
+  // A database already there: the same words, and its bytes as they were.
+  const std::string db = (ro / "s.db").string();
+  ASSERT_EQ(testing::RunShockmap("study run " + study + " --db " + db + " --quiet").exit_code, 0);
+  const std::string before = testing::ReadBytes(db);
+  const auto stored =
+      RunWithReadOnlyFolder(ro, dir_ / "out.txt", {"study", "run", study, "--db", db, "--quiet"});
+  ASSERT_TRUE(stored);
+  EXPECT_EQ(stored->exit_code, 2) << stored->output;
+  EXPECT_NE(stored->output.find("read-only file system"), std::string::npos) << stored->output;
+  EXPECT_EQ(testing::ReadBytes(db), before);
 }
 
 }  // namespace

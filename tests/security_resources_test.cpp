@@ -9,7 +9,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <thread>
@@ -399,6 +401,74 @@ TEST_F(Resources, TwoReportsIntoOneFolderBothSucceed) {
   }
   EXPECT_TRUE(std::filesystem::exists(report + "/index.html"));
   EXPECT_EQ(Temporaries(report), std::vector<std::string>{});
+}
+
+// `shockmap ARGS` with its files (and its children's) limited to `bytes` (RLIMIT_FSIZE, as
+// `ulimit -f`), ended by SIGKILL after 60 s.
+Outcome RunWithFileSizeLimit(std::size_t bytes, const std::string& args) {
+  return RunShell("prlimit --fsize=" + std::to_string(bytes) + " timeout -s KILL 60 " +
+                  SHOCKMAP_BIN + " " + args);
+}
+
+// The entries of `dir`, by name.
+std::vector<std::string> Entries(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  std::ranges::sort(names);
+  return names;
+}
+
+TEST_F(Resources, ReportPastTheFileSizeLimitSaysSoAndLeavesNothing) {
+  const std::string db = SmallDatabase();
+  const auto before = Entries(dir_);
+  // 8 KiB: the first history CSV is cut short; 256 KiB: a picture is.
+  for (const std::size_t limit : {8u << 10, 256u << 10}) {
+    const Outcome r =
+        RunWithFileSizeLimit(limit, "report small --db " + db + " --out " + Path("report"));
+    EXPECT_EQ(r.exit_code, 2) << limit << "\n" << r.output;
+    EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(Path("report")), std::string::npos) << r.output;
+    EXPECT_FALSE(std::filesystem::exists(Path("report"))) << limit;
+    EXPECT_EQ(Temporaries(dir_), std::vector<std::string>{});
+    EXPECT_EQ(Entries(dir_), before);
+    std::printf("[resources] %s\n", r.output.substr(0, r.output.find('\n')).c_str());
+  }
+}
+
+TEST_F(Resources, ExportPointPastTheFileSizeLimitLeavesNoFolder) {
+  const std::string db = SmallDatabase();
+  const Outcome r =
+      RunWithFileSizeLimit(4u << 10, "export point --id 1 --db " + db + " --out " + Path("p/q"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("cannot write " + Path("p/q/numerical.csv") + ": File too large"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(std::filesystem::exists(Path("p")));
+  EXPECT_EQ(Temporaries(dir_), std::vector<std::string>{});
+  std::printf("[resources] %s\n", r.output.c_str());
+}
+
+TEST_F(Resources, StudyRunPastTheFileSizeLimitNamesTheDatabase) {
+  const std::string spec = Path("study.json");
+  WriteText(spec, kSmallStudy);
+  const Outcome r =
+      RunWithFileSizeLimit(32u << 10, "study run " + spec + " --db " + Path("s.db") + " --quiet");
+  EXPECT_NE(r.exit_code, 0) << r.output;
+  EXPECT_LT(r.exit_code, 128) << "ended by a signal: " << r.output;
+  EXPECT_NE(r.output.find(Path("s.db")), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("File too large"), std::string::npos) << r.output;
+  std::printf("[resources] %s\n", r.output.c_str());
+}
+
+TEST_F(Resources, PlotNameWithALineBreakLeavesNoFile) {
+  const std::string db = SmallDatabase();
+  const auto before = Entries(dir_);
+  const Outcome r = RunShell(std::string(SHOCKMAP_BIN) + " map small --db " + db +
+                             " --out \"$(printf '" + Path("maps/m\\nap.png") + "')\"");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("\"m\\x0aap.png\" holds a line break"), std::string::npos) << r.output;
+  EXPECT_EQ(Entries(dir_), before);
 }
 
 }  // namespace

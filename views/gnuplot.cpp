@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -16,6 +17,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/signal_cleanup.h"
 
@@ -132,6 +134,16 @@ bool IsCompleteImage(const std::filesystem::path& drawing, const std::filesystem
   return end.ends_with(std::string("IEND\xae\x42\x60\x82", 8));
 }
 
+// The file-size limit of this process and its children (ulimit -f), in bytes.
+rlim_t FileSizeLimit() {
+  struct rlimit limit {};
+  return ::getrlimit(RLIMIT_FSIZE, &limit) == 0 ? limit.rlim_cur : RLIM_INFINITY;
+}
+
+bool ReachesFileSizeLimit(std::uintmax_t bytes) {
+  return FileSizeLimit() != RLIM_INFINITY && bytes >= FileSizeLimit();
+}
+
 // Why the run failed, or "" when it drew `image` into `drawing`; `partial` tells the image was
 // cut short.
 std::string Failure(bool& partial, const ChildOutcome& child,
@@ -157,10 +169,12 @@ std::string Failure(bool& partial, const ChildOutcome& child,
     const std::uintmax_t bytes = std::filesystem::file_size(drawing, ec);
     const auto space =
         std::filesystem::space(image.parent_path().empty() ? "." : image.parent_path(), ec);
-    const std::string room = ec ? "its disk's free space unknown"
-                             : space.available == 0
-                                 ? "its disk full"
-                                 : fmt::format("{:.3g} MB free on its disk", space.available / 1e6);
+    const std::string room =
+        ReachesFileSizeLimit(bytes)
+            ? fmt::format("the file-size limit (ulimit -f) of {} bytes", FileSizeLimit())
+        : ec                   ? "its disk's free space unknown"
+        : space.available == 0 ? "its disk full"
+                               : fmt::format("{:.3g} MB free on its disk", space.available / 1e6);
     return fmt::format("gnuplot wrote only part of {} ({} bytes, {}), script {}; {}",
                        image.string(), bytes, room, script_file.string(), Excerpt(child.output));
   }
@@ -170,6 +184,7 @@ std::string Failure(bool& partial, const ChildOutcome& child,
 }  // namespace
 
 std::string TerminalFor(const std::filesystem::path& file, int width, int height) {
+  GnuplotFileName(file);  // Its data and script files share its name but for the extension.
   if (file.extension() == ".svg") {
     return fmt::format("svg size {},{} dynamic font 'DejaVu Sans,12' background '#ffffff'", width,
                        height);
@@ -198,8 +213,9 @@ std::string GnuplotFileName(const std::filesystem::path& file) {
   const std::string name = file.filename().string();
   for (char c : name) {
     if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      throw InputError(file.string() +
-                       ": a plot file name may not hold line breaks or other control characters");
+      throw InputError("the plot file name \"" + Excerpt(name, 0) +
+                       "\" holds a line break or another control character (U+0000 to U+001F "
+                       "or U+007F), which gnuplot cannot be given; name the file without one");
     }
   }
   // "./" keeps gnuplot from reading a leading '|' (output) or '<' (data) as a command to run.

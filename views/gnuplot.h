@@ -17,7 +17,8 @@ class PlotError : public std::runtime_error {
 };
 
 // "pngcairo size W,H ..." or "svg size W,H ...": the gnuplot terminal for a file's extension.
-// Throws InputError for any other extension.
+// Throws InputError for any other extension, and for a name GnuplotFileName refuses: called
+// first, it refuses an image before any of its files or folders is made.
 std::string TerminalFor(const std::filesystem::path& file, int width, int height);
 
 // `text` as a gnuplot string literal that stays data: single-quoted (where gnuplot expands
