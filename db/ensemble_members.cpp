@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "db/corrupt_rows.h"
 #include "db/read_only_query.h"
@@ -135,14 +137,33 @@ std::int64_t StoreEnsembleReference(StudyDatabase& db, const EnsembleReferenceRo
 
 namespace {
 
-// The zones of a nominal run, by name, from its zones_json: [{"name": ..., ...}, ...].
+// The indices of the zones named `name` when more than one zone is, else empty.
+std::vector<std::size_t> ZonesNamedTwice(const std::vector<std::string>& names) {
+  std::map<std::string, std::vector<std::size_t>> indices;
+  for (std::size_t i = 0; i < names.size(); ++i) indices[names[i]].push_back(i);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (indices[names[i]].size() > 1) return indices[names[i]];
+  }
+  return {};
+}
+
+// The zones of a nominal run, by name, from its zones_json: [{"name": ..., ...}, ...]; every
+// name once (the views label rows and columns by them).
 std::size_t ZoneCount(const std::string& database_path, const EnsembleReferenceRow& r) {
   const StoredCell cell{database_path, "ensemble reference " + std::to_string(r.reference_id),
                         "zones_json"};
-  const std::size_t zones = ReadStoredJson(cell, r.zones_json, [](const nlohmann::json& zones) {
-    for (const auto& z : zones.get<std::vector<nlohmann::json>>()) z.at("name").get<std::string>();
-    return zones.size();
+  const auto names = ReadStoredJson(cell, r.zones_json, [](const nlohmann::json& zones) {
+    std::vector<std::string> names;
+    for (const auto& z : zones.get<std::vector<nlohmann::json>>())
+      names.push_back(z.at("name").get<std::string>());
+    return names;
   });
+  if (const auto twice = ZonesNamedTwice(names); !twice.empty()) {
+    ThrowCorruptCell(cell, fmt::format("zones {} are all named \"{}\"; zone names must be unique "
+                                       "(run the study again into a new database)",
+                                       fmt::join(twice, ", "), names[twice.front()]));
+  }
+  const std::size_t zones = names.size();
   if (!r.max_force_n.empty() && r.max_force_n.size() != zones) {
     ThrowCorruptCell(cell, fmt::format("{} zones, but max_force_n holds {} forces", zones,
                                        r.max_force_n.size()));

@@ -552,6 +552,77 @@ UPDATE scene_points SET reference_key = json_extract(reference_key, '$.parameter
 WHERE CASE WHEN json_valid(reference_key)
            THEN json_type(reference_key, '$.parameters') = 'object' ELSE 0 END;
 )sql",
+    // 13 -> 14: a pin that meets the wrapper on several faces (every outer pin of a hexagonal
+    // bundle, the single pin of a row) names each face by the direction of its normal
+    // (formats/scene_file.cpp, BundleZoneName): "pin_0-wrapper@0.9144", which earlier versions
+    // gave to every face, becomes "pin_0-wrapper_60deg@0.9144". A nominal run's zones_json is
+    // renamed where the face is derivable: the pin's centre is the mean of the positions of the
+    // generated zones it takes part in at that height (6 on a hexagonal lattice, 2 for a row's
+    // single pin), and the face is the direction from it to the zone, one of 0, 60, ..., 300
+    // degrees (180 or 0 in a row). Other names are left as they were (the readers refuse names
+    // given twice). Zone rows are stored by index and are untouched.
+    R"sql(
+CREATE TEMP TABLE migrating_zones AS
+SELECT r.reference_id, CAST(j.key AS INTEGER) AS i, json_extract(j.value, '$.name') AS name,
+       json_extract(j.value, '$.beam_a') AS beam_a, json_extract(j.value, '$.beam_b') AS beam_b,
+       json_extract(j.value, '$.height_m') AS height_m, json_extract(j.value, '$.y_m') AS y_m,
+       json_extract(j.value, '$.z_m') AS z_m
+FROM ensemble_references r,
+     json_each(CASE WHEN json_valid(r.zones_json) AND json_type(r.zones_json) = 'array'
+                    THEN r.zones_json ELSE '[]' END) j
+WHERE j.type = 'object';
+DELETE FROM migrating_zones
+WHERE typeof(name) != 'text' OR typeof(beam_a) != 'text' OR typeof(beam_b) != 'text'
+   OR typeof(height_m) NOT IN ('real', 'integer') OR typeof(y_m) NOT IN ('real', 'integer')
+   OR typeof(z_m) NOT IN ('real', 'integer')
+   OR substr(name, 1, length(beam_a) + length(beam_b) + 2) != beam_a || '-' || beam_b || '@';
+CREATE INDEX temp.migrating_zones_by_name ON migrating_zones(reference_id, name);
+CREATE INDEX temp.migrating_zones_by_height ON migrating_zones(reference_id, height_m);
+CREATE TEMP TABLE zone_faces AS
+WITH pins AS (
+  SELECT w.reference_id, w.beam_a AS pin, w.height_m, avg(o.y_m) AS y_m, avg(o.z_m) AS z_m,
+         count(*) AS zones
+  FROM (SELECT DISTINCT reference_id, beam_a, height_m FROM migrating_zones
+        WHERE beam_b = 'wrapper') w
+  JOIN migrating_zones o ON o.reference_id = w.reference_id AND o.height_m = w.height_m
+                        AND w.beam_a IN (o.beam_a, o.beam_b)
+  GROUP BY w.reference_id, w.beam_a, w.height_m
+), faces AS (
+  SELECT f.reference_id, f.i, f.name, f.beam_a, f.y_m - p.y_m AS dy, f.z_m - p.z_m AS dz
+  FROM migrating_zones f
+  JOIN pins p ON p.reference_id = f.reference_id AND p.pin = f.beam_a AND p.height_m = f.height_m
+  WHERE f.beam_b = 'wrapper' AND f.beam_a LIKE 'pin\_%' ESCAPE '\' AND p.zones IN (2, 6)
+    AND EXISTS (SELECT 1 FROM migrating_zones d
+                WHERE d.reference_id = f.reference_id AND d.name = f.name AND d.i != f.i)
+)
+SELECT reference_id, i,
+       beam_a || '-wrapper_' ||
+         CASE WHEN abs(dz) < 0.5 * abs(dy) THEN CASE WHEN dy > 0 THEN 0 ELSE 180 END
+              WHEN dz > 0 THEN CASE WHEN dy > 0 THEN 60 ELSE 120 END
+              ELSE CASE WHEN dy > 0 THEN 300 ELSE 240 END END ||
+         'deg' || substr(name, length(beam_a) + length('-wrapper') + 1) AS name
+FROM faces;
+CREATE INDEX temp.zone_faces_by_zone ON zone_faces(reference_id, i);
+CREATE TEMP TABLE renamed_zones AS
+SELECT reference_id, zones_json FROM (
+  SELECT r.reference_id, CAST(j.key AS INTEGER) AS i,
+         json_group_array(CASE WHEN f.name IS NULL THEN json(j.value)
+                               ELSE json_set(j.value, '$.name', f.name) END)
+           OVER (PARTITION BY r.reference_id ORDER BY CAST(j.key AS INTEGER)
+                 ROWS BETWEEN UNBOUNDED PRECEDING AND UNBOUNDED FOLLOWING) AS zones_json
+  FROM ensemble_references r, json_each(r.zones_json) j
+  LEFT JOIN zone_faces f ON f.reference_id = r.reference_id AND f.i = CAST(j.key AS INTEGER)
+  WHERE r.reference_id IN (SELECT reference_id FROM zone_faces)
+    AND NOT EXISTS (SELECT 1 FROM json_each(r.zones_json) x WHERE x.type != 'object'))
+WHERE i = 0;
+UPDATE ensemble_references
+SET zones_json = (SELECT n.zones_json FROM renamed_zones n
+                  WHERE n.reference_id = ensemble_references.reference_id)
+WHERE reference_id IN (SELECT reference_id FROM renamed_zones);
+DROP TABLE migrating_zones;
+DROP TABLE zone_faces;
+DROP TABLE renamed_zones;
+)sql",
 };
 
 inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));

@@ -1,6 +1,7 @@
 #include "formats/scene_file.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -9,10 +10,12 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <random>
 #include <set>
 #include <sstream>
 #include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "core/modal_basis.h"
@@ -477,6 +480,21 @@ struct BundleZones {
   std::vector<SceneZone> pairs, walls;
 };
 
+// The wrapper face a zone's normal points to: degrees from +y towards +z, in [0, 360).
+long FaceDegrees(double normal_y, double normal_z) {
+  const long degrees = std::lround(std::atan2(normal_z, normal_y) * 180.0 / std::numbers::pi);
+  return (degrees + 360) % 360;
+}
+
+// "pin_3-pin_4@0.9144", "pin_0-wrapper@0.9144"; a pin that meets the wrapper on several faces
+// (every outer pin of a hexagonal bundle, the single pin of a row) names each face by the
+// direction of its normal: "pin_0-wrapper_60deg@0.9144". Zone names are unique.
+std::string BundleZoneName(const Scene& scene, const SceneZone& z, bool several_faces) {
+  std::string beams = scene.beams[z.beam_a].name + "-" + scene.beams[z.beam_b].name;
+  if (several_faces) beams += "_" + std::to_string(FaceDegrees(z.normal_y, z.normal_z)) + "deg";
+  return beams + "@" + HeightLabel(z.height_m);
+}
+
 // Zones at every wire height between neighbouring pins (each pair once) and, where a neighbour
 // is missing, between the pin and the wrapper (beam `wrapper`); gaps are drawn afterwards.
 BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
@@ -487,6 +505,9 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
             : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
   BundleZones zones;
   for (const auto& [cell, a] : index) {
+    const auto missing = std::ranges::count_if(steps, [&](const auto& s) {
+      return !index.contains({cell[0] + s[0], cell[1] + s[1]});
+    });
     for (const auto& s : steps) {
       const double ny = l.row ? s[0] : s[0] + s[1] / 2.0;
       const double nz = l.row ? 0.0 : s[1] * std::sqrt(3.0) / 2.0;
@@ -501,7 +522,7 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
         z.y_m = l.positions[a - wrapper - 1].first + 0.5 * l.pitch_m * ny;
         z.z_m = l.positions[a - wrapper - 1].second + 0.5 * l.pitch_m * nz;
         z.beam_b = it != index.end() ? it->second : wrapper;
-        z.name = scene.beams[a].name + "-" + scene.beams[z.beam_b].name + "@" + HeightLabel(h);
+        z.name = BundleZoneName(scene, z, it == index.end() && missing > 1);
         (it != index.end() ? zones.pairs : zones.walls).push_back(z);
       }
     }
@@ -610,12 +631,20 @@ void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
   }
 }
 
-// A name read at `key`, refused when `names` already holds it (names label CSV columns).
+// The names given so far, each with where it was given ("given at zones[0].name", "of a zone
+// the bundle generates").
+using NamesGiven = std::unordered_map<std::string, std::string>;
+
+// A name read at `key`, refused when `names` already holds it (names label CSV columns and
+// database rows).
 std::string UniqueName(JsonObjectReader& r, const std::string& key, const char* what,
-                       std::unordered_set<std::string>& names) {
+                       NamesGiven& names) {
   std::string name = r.RequiredName(key);
-  if (!names.insert(name).second)
-    r.Fail(key, std::string(what) + " \"" + name + "\" is defined twice; names must be unique");
+  const auto [given, fresh] = names.try_emplace(name, "given at " + r.PathOf(key));
+  if (!fresh) {
+    r.Fail(key, std::string(what) + " \"" + name + "\" is already the name " + given->second +
+                    "; " + what + " names must be unique");
+  }
   return name;
 }
 
@@ -630,7 +659,7 @@ void ParseHeader(JsonObjectReader& r, Scene& scene) {
 
 // beams[], then the bundle's beams and zones: every beam name once.
 void ParseBeams(JsonObjectReader& r, Scene& scene) {
-  std::unordered_set<std::string> names;
+  NamesGiven names;
   EachItem(r, "beams", [&](JsonObjectReader& b) {
     SceneBeam beam = ParseBeamProperties(b);
     beam.name = UniqueName(b, "name", "beam", names);
@@ -653,8 +682,7 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
     r.Fail("beams", "the scene's distinct beams: " + excess);
 }
 
-SceneZone ParseZone(JsonObjectReader& z, const Scene& scene,
-                    std::unordered_set<std::string>& names) {
+SceneZone ParseZone(JsonObjectReader& z, const Scene& scene, NamesGiven& names) {
   SceneZone zone;
   zone.name = UniqueName(z, "name", "zone", names);
   zone.beam_a = BeamIndex(scene, z, "beam");
@@ -685,8 +713,8 @@ SceneZone ParseZone(JsonObjectReader& z, const Scene& scene,
 
 // zones[], after the bundle's: every zone name once.
 void ParseZones(JsonObjectReader& r, Scene& scene) {
-  std::unordered_set<std::string> names;
-  for (const SceneZone& z : scene.zones) names.insert(z.name);
+  NamesGiven names;
+  for (const SceneZone& z : scene.zones) names.emplace(z.name, "of a zone the bundle generates");
   EachItem(r, "zones",
            [&](JsonObjectReader& z) { scene.zones.push_back(ParseZone(z, scene, names)); });
   if (scene.zones.size() > static_cast<std::size_t>(kMaxZones))
@@ -808,8 +836,7 @@ void ParseSolver(JsonObjectReader& r, Scene& scene) {
   s.Finish();
 }
 
-ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene,
-                                std::unordered_set<std::string>& names) {
+ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene, NamesGiven& names) {
   ObservedPoint p;
   p.name = UniqueName(d, "name", "output", names);
   p.beam = BeamIndex(scene, d, "beam");
@@ -818,6 +845,27 @@ ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene,
   if (p.direction == 1 && scene.planes == BendingPlanes::kPlanar)
     d.Fail("direction", "a planar scene bends in y only");
   return p;
+}
+
+// "no zone named ...", and for a name of a pin and the wrapper that the bundle gives per face
+// ("pin_0-wrapper@0.9144", as versions before named every face), the faces' names.
+std::string NoZoneNamed(const std::string& name, const Scene& scene) {
+  std::string message = "no zone named \"" + name + "\"";
+  const auto at = name.rfind('@');
+  if (at == std::string::npos) return message;
+  const std::string beams = name.substr(0, at) + "_", height = name.substr(at);
+  std::vector<std::string> faces;
+  for (const SceneZone& z : scene.zones) {
+    if (z.name.size() <= beams.size() + height.size() || !z.name.starts_with(beams) ||
+        !z.name.ends_with(height))
+      continue;
+    const std::string face =
+        z.name.substr(beams.size(), z.name.size() - beams.size() - height.size());
+    if (face.ends_with("deg")) faces.push_back("\"" + z.name + "\"");
+  }
+  if (faces.empty()) return message;
+  return message + ": the pin meets the wrapper on several faces, each named by its direction: " +
+         fmt::format("{}", fmt::join(faces, ", "));
 }
 
 // A list of zone names at `path` (each zone once) as zone indices.
@@ -832,7 +880,7 @@ std::vector<int> ZoneIndices(const Json& list, const std::string& file, const st
     const std::string name = list[i].get<std::string>();
     const auto zone = std::find_if(scene.zones.begin(), scene.zones.end(),
                                    [&](const SceneZone& z) { return z.name == name; });
-    if (zone == scene.zones.end()) FailAt(file, at, "no zone named \"" + name + "\"");
+    if (zone == scene.zones.end()) FailAt(file, at, NoZoneNamed(name, scene));
     if (!listed.insert(name).second)
       FailAt(file, at, "zone \"" + name + "\" is listed twice; list each zone once");
     zones.push_back(static_cast<int>(zone - scene.zones.begin()));
@@ -854,7 +902,7 @@ void ParseImpactStatistics(JsonObjectReader& im, Scene& scene) {
 
 void ParseOutputs(const Json& outputs, const std::string& path, Scene& scene) {
   JsonObjectReader o(outputs, path, "outputs");
-  std::unordered_set<std::string> names;
+  NamesGiven names;
   EachItem(o, "displacements", [&](JsonObjectReader& d) {
     scene.outputs.displacements.push_back(ParseDisplacement(d, scene, names));
   });

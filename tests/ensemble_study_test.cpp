@@ -12,10 +12,12 @@
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <set>
 #include <sstream>
 #include <thread>
 
+#include "db/migrations.h"
 #include "db/sqlite_handle.h"
 #include "engine/ensemble_study.h"
 #include "formats/study_file.h"
@@ -286,6 +288,95 @@ TEST_F(EnsembleStudyTest, EachFamilysHottestZoneIsTheHighestOfItsZones) {
             std::string::npos)
       << table.output;
   EXPECT_EQ(table.output.find("{}"), std::string::npos) << table.output;
+}
+
+// The shipped 7-pin hexagonal ensemble, two members per state over a short window.
+json SmallHexEnsemble() {
+  json spec = json::parse(
+      std::ifstream(std::string(SHOCKMAP_SOURCE_DIR) + "/studies/bundle_hex_ensemble.json"));
+  spec["scene"] = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/bundle_hex_7.json";
+  spec["window_s"] = 0.01;
+  spec["members"] = 2;
+  return spec;
+}
+
+// reference_id -> the nominal run's zones_json.
+std::map<std::string, std::string> ZonesJson(const std::string& db) {
+  std::map<std::string, std::string> zones;
+  for (const std::string& row :
+       testing::Rows(db, "SELECT reference_id, zones_json FROM ensemble_references")) {
+    const auto bar = row.find('|');
+    zones[row.substr(0, bar)] = row.substr(bar + 1);
+  }
+  return zones;
+}
+
+// The sizing table's rows name each zone once per clearance state and setting.
+TEST_F(EnsembleStudyTest, SizingRowsNameEachZoneOfAHexagonalBundleOnce) {
+  const std::string db = Path("hex.db");
+  ASSERT_EQ(Run(Write(SmallHexEnsemble()), db).exit_code, 0);
+  std::map<std::string, int> rows;  // state and zone -> rows
+  for (const json& row : SizingOf(db))
+    ++rows[row["state"].get<std::string>() + " " + row["zone"].get<std::string>()];
+  EXPECT_EQ(rows.size(), 2u * 211u);  // Two states by the 211 zones of the 7-pin bundle.
+  for (const auto& [zone, count] : rows) EXPECT_EQ(count, 1) << zone;
+}
+
+// A database written before the wrapper faces of a hexagonal bundle were named by direction
+// gave three faces of a pin one name ("pin_0-wrapper@0.3048"): the migration names each face as
+// the scene reader now does, so that the file reads as one written now, and every zone row is
+// kept.
+TEST_F(EnsembleStudyTest, AnOlderDatabasesWrapperFacesAreNamedByTheMigration) {
+  const std::string spec = Write(SmallHexEnsemble());
+  const std::string db = Path("hex.db"), older = Path("older.db");
+  ASSERT_EQ(Run(spec, db).exit_code, 0);
+  const auto now = ZonesJson(db);
+  ASSERT_EQ(now.size(), 2u);
+  std::filesystem::copy_file(db, older);
+  {
+    Connection c(older, Connection::Mode::kReadWriteCreate);
+    Statement set =
+        c.Prepare("UPDATE ensemble_references SET zones_json = ? WHERE reference_id = ?");
+    const std::regex face("_[0-9]+deg@");
+    for (const auto& [id, zones] : now) {
+      const std::string as_before = std::regex_replace(zones, face, "@");
+      ASSERT_NE(as_before, zones);
+      set.Bind(1, as_before).Bind(2, static_cast<std::int64_t>(std::stoll(id))).Run();
+    }
+    c.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion - 1));
+  }
+  ASSERT_EQ(testing::Rows(older,
+                          "SELECT count(DISTINCT json_extract(j.value, '$.name')) FROM "
+                          "ensemble_references r, json_each(r.zones_json) j "
+                          "WHERE r.reference_id = 1"),
+            std::vector<std::string>{"127"});  // 84 wires, 42 names of 126 faces, the duct pad.
+  const auto rerun = Run(spec, older);
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.output;
+  EXPECT_EQ(ZonesJson(older), now);
+  EXPECT_EQ(ZoneMaxima(older), ZoneMaxima(db));
+  EXPECT_EQ(SizingOf(older), SizingOf(db));
+}
+
+// A stored nominal run that names two zones alike (a file edited by hand, or one the migration
+// could not name) is refused by the readers, which label rows by zone name.
+TEST_F(EnsembleStudyTest, ZoneNamesGivenTwiceInADatabaseAreRefusedByItsReaders) {
+  const std::string db = Path("hex.db");
+  ASSERT_EQ(Run(Write(SmallHexEnsemble()), db).exit_code, 0);
+  Connection(db, Connection::Mode::kReadWriteCreate)
+      .Execute(
+          "UPDATE ensemble_references SET zones_json = json_set(zones_json, '$[1].name', "
+          "json_extract(zones_json, '$[0].name'))");
+  const std::string name = testing::Rows(
+      db, "SELECT json_extract(zones_json, '$[0].name') FROM ensemble_references LIMIT 1")[0];
+  for (const std::string& command :
+       {"sizing --db " + db, "report --db " + db + " --out " + Path("report")}) {
+    const auto out = RunShockmap(command);
+    EXPECT_EQ(out.exit_code, 2) << command << ": " << out.output;
+    EXPECT_NE(out.output.find("zones_json: zones 0, 1 are all named \"" + name +
+                              "\"; zone names must be unique"),
+              std::string::npos)
+        << command << ": " << out.output;
+  }
 }
 
 TEST_F(EnsembleStudyTest, BadStudyFilesAreRefusedWithExitCode2) {

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <set>
 #include <sstream>
 
@@ -307,6 +308,106 @@ TEST_F(SceneFiles, BundleZonesNameTheirWireHeightWithoutFloatNoise) {
     s["bundle"]["wire"]["heights_m"] = {0.5, 0.5000000001};
   }));
   EXPECT_NE(refused.find("given twice (to the micrometre, 0.5 m)"), std::string::npos) << refused;
+}
+
+// The direction of a zone's normal in the cross-section, in whole degrees from +y towards +z.
+long DegreesOf(const SceneZone& z) {
+  const long degrees = std::lround(std::atan2(z.normal_z, z.normal_y) * 180.0 / std::numbers::pi);
+  return (degrees + 360) % 360;
+}
+
+std::string HeightOf(const SceneZone& z) { return z.name.substr(z.name.find('@')); }
+
+// Zone names label CSV columns, Python's histories and the sizing tables' rows: every zone of
+// a generated bundle has its own. A pin that meets the wrapper on several faces (every outer pin
+// of a hexagonal bundle, a row's single pin) names each by its direction; the pins at the ends
+// of a row meet it on one face and keep the name without one.
+TEST_F(SceneFiles, EveryBundleZoneHasItsOwnNameAndEachWrapperFaceItsDirection) {
+  const std::string single_pin_row = Variant([](Json& s) {
+    std::ifstream in(kScenes + "bundle_row.json");
+    s = Json::parse(in);
+    s["bundle"]["pins"] = 1;
+    s.erase("zones");
+    s["outputs"] = {{"max_contact_force", true}};
+  });
+  for (const std::string& file : {kScenes + "bundle_hex.json", kScenes + "bundle_hex_7.json",
+                                  kScenes + "bundle_row.json", single_pin_row}) {
+    const Scene scene = LoadScene(file);
+    std::set<std::string> names;
+    std::map<int, int> faces_of_pin;  // At the first wire height.
+    for (const SceneZone& z : scene.zones) {
+      EXPECT_TRUE(names.insert(z.name).second) << file << ": " << z.name << " twice";
+      if (z.beam_b == 0 && HeightOf(z) == HeightOf(scene.zones.front())) ++faces_of_pin[z.beam_a];
+    }
+    int named_by_face = 0;
+    for (const SceneZone& z : scene.zones) {
+      if (z.beam_b != 0) continue;
+      const std::string beams = scene.beams[z.beam_a].name + "-wrapper";
+      const bool several = faces_of_pin.at(z.beam_a) > 1;
+      EXPECT_EQ(z.name,
+                beams + (several ? "_" + std::to_string(DegreesOf(z)) + "deg" : "") + HeightOf(z))
+          << file;
+      named_by_face += several;
+    }
+    const bool row_of_several = file == kScenes + "bundle_row.json";
+    EXPECT_EQ(named_by_face > 0, !row_of_several) << file;
+  }
+  // The 217-pin bundle's first pin, a corner of the hexagon, meets the wrapper on three faces.
+  const Scene hex = LoadScene(kScenes + "bundle_hex.json");
+  std::set<std::string> pin_0;
+  for (const SceneZone& z : hex.zones) {
+    if (z.name.starts_with("pin_0-wrapper") && HeightOf(z) == "@1.2192") pin_0.insert(z.name);
+  }
+  EXPECT_EQ(pin_0,
+            (std::set<std::string>{"pin_0-wrapper_120deg@1.2192", "pin_0-wrapper_180deg@1.2192",
+                                   "pin_0-wrapper_240deg@1.2192"}));
+}
+
+// A hand-written zone may not take a name another zone has, listed or generated: refused with
+// the file, the key, the name and where it was given first, exit code 2.
+TEST_F(SceneFiles, AZoneNameGivenTwiceIsRefusedWithWhereItWasGiven) {
+  Json scene = Json::parse(std::ifstream(kScenes + "cantilever_spring.json"));
+  const std::string name = scene["zones"][0]["name"];
+  scene["zones"].push_back(scene["zones"][0]);
+  const std::string listed = Path("listed.json");
+  WriteText(listed, scene.dump());
+  const std::string hex_file = kScenes + "bundle_hex_7.json";
+  const std::string generated_name = LoadScene(hex_file).zones.front().name;
+  scene = Json::parse(std::ifstream(hex_file));
+  scene["zones"][0]["name"] = generated_name;
+  const std::string generated = Path("generated.json");
+  WriteText(generated, scene.dump());
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {listed,
+       {"listed.json", "zones[1].name", "zone \"" + name + "\"", "given at zones[0].name",
+        "zone names must be unique"}},
+      {generated,
+       {"generated.json", "zones[0].name", "zone \"" + generated_name + "\"",
+        "of a zone the bundle generates", "zone names must be unique"}},
+  };
+  for (const auto& [file, parts] : cases) {
+    const std::string message = Refusal(file);
+    for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
+    const auto run = RunShockmap("simulate " + file);
+    EXPECT_EQ(run.exit_code, 2) << run.output;
+    EXPECT_NE(run.output.find("zone names must be unique"), std::string::npos) << run.output;
+  }
+}
+
+// A scene that lists a pin's wrapper zone by the name every face had before each was named by
+// its direction is told the faces' names.
+TEST_F(SceneFiles, AnUnnamedWrapperFaceIsAnsweredWithTheFacesNames) {
+  const std::string file = Variant([](Json& s) {
+    s = Json::parse(std::ifstream(kScenes + "bundle_hex_7.json"));
+    s["outputs"]["contact_forces"] = {"pin_0-wrapper@0.3048"};
+  });
+  const std::string message = Refusal(file);
+  EXPECT_NE(message.find("outputs.contact_forces[0]: no zone named \"pin_0-wrapper@0.3048\": the "
+                         "pin meets the wrapper on several faces, each named by its direction: "
+                         "\"pin_0-wrapper_120deg@0.3048\", \"pin_0-wrapper_180deg@0.3048\", "
+                         "\"pin_0-wrapper_240deg@0.3048\""),
+            std::string::npos)
+      << message;
 }
 
 TEST_F(SceneFiles, SeededGapsAreReproducibleAndFollowTheirLaw) {

@@ -97,6 +97,17 @@ def test_histories_are_arrays_that_outlive_the_run(source_dir):
     assert clutter
 
 
+def test_every_zone_of_a_hexagonal_bundle_keeps_its_own_force_history(source_dir):
+    scene = scene_dict(source_dir, "bundle_hex_7")
+    scene["solver"]["end_time_s"] = 0.002
+    scene["outputs"] = {"contact_forces": True, "max_contact_force": True}
+    run = shockmap.simulate(shockmap.Scene.from_dict(scene))
+    zones = list(run.zones["zone"])
+    assert len(zones) == 211  # 84 wires, 126 wrapper faces, the duct pad.
+    forces = sorted(k for k in run.histories if k.endswith("_n"))
+    assert forces == sorted(f"{zone}_n" for zone in zones)
+
+
 def test_set_changes_the_value_and_the_run(source_dir):
     scene = shockmap.Scene.load(source_dir / "scenes" / "cantilever_spring.json")
     scene.set("zones[0].stiffness_n_per_m", 4.5e8)  # R_k = 1000 instead of 3000.
