@@ -209,6 +209,43 @@ TEST_F(StudyProcess, BadStudyFilesLeaveTheDatabaseByteForByteUnchanged) {
   EXPECT_EQ(RunShockmap("study run " + Path("missing.json") + " --db " + fresh).exit_code, 2);
 }
 
+// A study file's misspelt key is named with the allowed key it most likely misspells, also
+// when it hides a required one; so are a misspelt subcommand and option of `study`.
+TEST_F(StudyProcess, MisspeltKeysSubcommandsAndOptionsAreNamedWithTheOneMeant) {
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {R"({"name": "g", "grids": [{"rk": 100, "rftrunk": 10}]})",
+       "grids[0].rftrunk: unknown key; did you mean \"rftrunc\"? (rftrunc: required axis is "
+       "missing)"},
+      {R"({"name": "g", "scoring": {"windw_s": 0.03}, "grids": [{"rk": 100, "rftrunc": 10}]})",
+       "scoring.windw_s: unknown key; did you mean \"window_s\"? (allowed here: "},
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string file = Path("typo" + std::to_string(i) + ".json");
+    WriteText(file, files[i].first);
+    const auto o = RunShockmap("study run " + file + " --db " + Path("s.db") + " --quiet");
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_EQ(o.output.rfind("shockmap: error: " + file + ": " + files[i].second, 0), 0u)
+        << o.output;
+  }
+  const std::vector<std::pair<std::string, std::string>> commands = {
+      {"study runn " + Path("typo0.json"),
+       "study: unknown command \"runn\" (did you mean \"run\"?); use one of run, status "
+       "(`shockmap study --help` says what each does)\n"},
+      {"study",
+       "study: a command is required, one of run, status; `shockmap study --help` says "
+       "what each does\n"},
+      {"study run " + Path("typo0.json") + " --quite",
+       "study run: unknown option --quite (did you mean --quiet?); `shockmap study run --help` "
+       "lists the options\n"},
+  };
+  for (const auto& [args, message] : commands) {
+    const auto o = RunShockmap(args);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.output;
+    EXPECT_EQ(o.output, "shockmap: error: " + message) << args;
+  }
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
 TEST_F(StudyProcess, QueryAnswersInCsvAndJsonAndRefusesWrites) {
   const std::string db = Path("study.db");
   const std::string spec = Path("q.json");
