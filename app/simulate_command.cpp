@@ -30,8 +30,8 @@ struct SimulateFlags {
 // otherwise.
 std::string ModesKept(const std::vector<int>& modes_per_beam) {
   const auto [fewest, most] = std::minmax_element(modes_per_beam.begin(), modes_per_beam.end());
-  if (*fewest == *most) return fmt::format("{} modes per plane", *most);
-  return fmt::format("{} to {} modes per beam and plane", *fewest, *most);
+  if (*fewest == *most) return Counted(*most, "mode") + " per plane";
+  return fmt::format("{} to {} per beam and plane", *fewest, Counted(*most, "mode"));
 }
 
 void PrintHuman(const Scene& scene, const SceneRun& run) {

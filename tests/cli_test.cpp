@@ -107,6 +107,14 @@ TEST(CompareCommand, JsonCarriesEveryDocumentedKey) {
   EXPECT_LT(j["err"].get<double>(), 0.10);
 }
 
+// Counts agree with their nouns: at R_k = 100 the first shock has one rebound.
+TEST(CompareCommand, OneReboundIsSingular) {
+  const Outcome o = RunShockmap("compare --rk 100 --rftrunc 10 --window 0.03");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find(" ms, 1 rebound\n"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("1 rebounds"), std::string::npos) << o.output;
+}
+
 // The full FE scheme has no modal basis: its model line says so instead of "modes kept".
 TEST(CompareCommand, FullFeSchemePrintsItsModelNotModes) {
   const Outcome modal = RunShockmap("compare --rk 3000 --rftrunc 30 --window 0.02");
