@@ -125,8 +125,8 @@ void AddSimulateCommand(CLI::App& app) {
       "Run a scene file (beams, contact zones, effects) with the explicit modal solver and write "
       "the outputs it requests");
   cmd->add_option("scene", flags->scene_file, "scene file (JSON), e.g. scenes/bundle_row.json")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->type_name("FILE")
+      ->required();
   cmd->add_option("--out", flags->out_dir,
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");
