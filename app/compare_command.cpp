@@ -12,6 +12,7 @@
 #include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/comparison_json.h"
+#include "formats/counted.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
 #include "formats/study_spec.h"
@@ -42,9 +43,9 @@ void PrintShock(const char* label, const std::vector<Shock>& shocks) {
   }
   const Shock& s = shocks.front();
   fmt::print(
-      "  first shock, {:<9} t = {:.5f} s, impulse {:.4g} N s, peak {:.4g} N, {:.3g} ms, {} "
-      "rebounds\n",
-      label, s.start_s, s.impulse_n_s, s.peak_force_n, 1e3 * s.Duration(), s.Rebounds());
+      "  first shock, {:<9} t = {:.5f} s, impulse {:.4g} N s, peak {:.4g} N, {:.3g} ms, {}\n",
+      label, s.start_s, s.impulse_n_s, s.peak_force_n, 1e3 * s.Duration(),
+      Counted(s.Rebounds(), "rebound"));
 }
 
 void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
@@ -70,11 +71,12 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              r.bounds.dt_paper_s, r.bounds.dt_sharp_s);
   const ReferenceConvergence& c = ref.convergence;
   fmt::print(
-      "  reference         R_fref = {:g} ({} free / {} contact modes, {} transitions), "
+      "  reference         R_fref = {:g} ({} free / {} contact modes, {}), "
       "estimated error {:.2e} (tip {:.2e} of the amplitude, first-shock impulse {:.2e}, induced "
       "Err {:.2e}; checked up to R_fref = {:g})\n",
-      c.r_fref, ref.summary.n_modes_free, ref.summary.n_modes_contact, ref.summary.n_transitions,
-      c.difference, c.tip.error, c.impulse.error, c.induced_err.error, c.r_fref_check);
+      c.r_fref, ref.summary.n_modes_free, ref.summary.n_modes_contact,
+      Counted(ref.summary.n_transitions, "transition"), c.difference, c.tip.error, c.impulse.error,
+      c.induced_err.error, c.r_fref_check);
   PrintShock("numerical", r.shocks_numerical);
   PrintShock("reference", ref.shocks);
   fmt::print("  wall time         reference {:.4f} s, numerical {:.6f} s (CPU {:.6f} s)\n",

@@ -53,14 +53,16 @@ void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
   CLI::Option* db =
       command
           ->add_option("--db", database_path,
-                       std::string("study database (SQLite); default: $") +
+                       std::string("study database (SQLite), created by `study run` when "
+                                   "missing; default: $") +
                            kDatabaseEnvironmentVariable + " when set, else " + kDefaultDatabasePath)
+          ->type_name("FILE")
           ->check(CLI::Validator(
               [](std::string& path) {
                 const std::string problem = DatabasePathProblem(path);
                 return problem.empty() ? problem : "the value " + problem;
               },
-              "FILE"));
+              ""));
   command->parse_complete_callback([db, &database_path] {
     const char* variable = std::getenv(kDatabaseEnvironmentVariable);
     if (db->count() > 0 || variable == nullptr) return;
@@ -79,7 +81,14 @@ void AddAllowPathFlag(CLI::App* command, SceneFileAccess& access) {
       ->add_option("--allow-path", access.allowed_folders,
                    "folder a scene's data files (base-motion CSV) may also be read from; by "
                    "default only the scene's own folder and below (repeatable)")
-      ->check(CLI::ExistingDirectory);
+      ->check(CLI::Validator(
+          [](std::string& path) -> std::string {
+            std::error_code ec;
+            if (std::filesystem::is_directory(path, ec)) return "";
+            return path +
+                   (std::filesystem::exists(path, ec) ? ": not a folder" : ": no such folder");
+          },
+          "DIR"));
 }
 
 CLI::Validator FiniteAbove(double lo, bool strict) {

@@ -44,32 +44,13 @@ int main(int argc, char** argv) {
   shockmap::AddReportCommand(app);
   shockmap::AddExportCommand(app);
   shockmap::AddCompletionCommand(app);
-  // CLI11 would only say that a subcommand is required.
-  std::string known;
-  bool found = false;
-  for (const CLI::App* sub : app.get_subcommands({})) {
-    known += (known.empty() ? "" : ", ") + sub->get_name();
-    found = found || (argc > 1 && sub->get_name() == argv[1]);
-  }
-  if (argc == 1) {
-    std::cerr << "shockmap: error: a command is required, one of " << known
-              << "; `shockmap --help` says what each does\n";
-    return shockmap::kExitBadInput;
-  }
-  if (argv[1][0] != '-' && !found) {
-    std::cerr << "shockmap: error: unknown command \"" << argv[1] << "\"; use one of " << known
-              << " (`shockmap --help` says what each does)\n";
-    return shockmap::kExitBadInput;
-  }
   try {
     app.parse(argc, argv);
     shockmap::CheckStandardOutput(true);
   } catch (const CLI::RuntimeError& e) {
     return e.get_exit_code();  // A verdict already printed (criteria check, a signal).
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);
-    std::cerr << "shockmap: error: " << e.what() << '\n';
-    return shockmap::kExitBadInput;
+    return shockmap::ReportParseError(app, e);
   } catch (...) {
     return shockmap::ReportFailure(std::current_exception());
   }

@@ -30,8 +30,8 @@ struct SimulateFlags {
 // otherwise.
 std::string ModesKept(const std::vector<int>& modes_per_beam) {
   const auto [fewest, most] = std::minmax_element(modes_per_beam.begin(), modes_per_beam.end());
-  if (*fewest == *most) return fmt::format("{} modes per plane", *most);
-  return fmt::format("{} to {} modes per beam and plane", *fewest, *most);
+  if (*fewest == *most) return Counted(*most, "mode") + " per plane";
+  return fmt::format("{} to {} per beam and plane", *fewest, Counted(*most, "mode"));
 }
 
 void PrintHuman(const Scene& scene, const SceneRun& run) {
@@ -125,8 +125,8 @@ void AddSimulateCommand(CLI::App& app) {
       "Run a scene file (beams, contact zones, effects) with the explicit modal solver and write "
       "the outputs it requests");
   cmd->add_option("scene", flags->scene_file, "scene file (JSON), e.g. scenes/bundle_row.json")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->type_name("FILE")
+      ->required();
   cmd->add_option("--out", flags->out_dir,
                   "directory for the requested histories (CSV), summary.json and the contact-force "
                   "map");

@@ -19,6 +19,7 @@
 #include "formats/output_file.h"
 #include "formats/study_file.h"
 #include "formats/table_output.h"
+#include "views/setting_legend.h"
 
 namespace shockmap {
 namespace {
@@ -188,7 +189,8 @@ void KeepStudy(Table& table, const std::string& study) {
 }
 
 // Every study's points by status, then the points of each kind that breaks them down (ensemble
-// members by clearance state and setting), then where they were computed.
+// members by clearance state and setting, each setting numbered and listed beneath), then where
+// they were computed.
 void Status(const StudyFlags& f) {
   Table r = StudyProgress(f.run.database_path);
   KeepStudy(r, f.study);
@@ -199,12 +201,14 @@ void Status(const StudyFlags& f) {
   for (StudyBreakdown& b : StudyProgressBreakdowns(f.run.database_path)) {
     KeepStudy(b.progress, f.study);
     if (b.progress.rows.empty()) continue;
-    std::string by;
-    for (std::string_view column : b.table->progress_by) {
-      by += (by.empty() ? "" : " and ") + std::string(column);
+    const LabelledSettings labelled = LabelSettings(std::move(b.progress));
+    std::string by;  // The columns after "study".
+    for (std::size_t i = 1; i <= b.table->progress_by.size(); ++i) {
+      by += (by.empty() ? "" : " and ") + labelled.table.columns[i];
     }
     std::cout << "\n" << b.table->name << " by " << by << ":\n";
-    WriteTable(b.progress, TableFormat::kTable, std::cout);
+    WriteTable(labelled.table, TableFormat::kTable, std::cout);
+    if (!labelled.legend.empty()) std::cout << "\n" << labelled.legend;
   }
   Table origins = StudyOrigins(f.run.database_path);
   KeepStudy(origins, f.study);

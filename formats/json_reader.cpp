@@ -8,6 +8,8 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "formats/nearest_name.h"
+
 namespace shockmap {
 namespace {
 
@@ -147,6 +149,15 @@ std::string LineOf(const std::string& text, std::size_t offset) {
              "magnitude");
 }
 
+// A key of `object`, not among those `read`, near enough to `key` to be a misspelling of it.
+std::optional<std::string> MisspellingOf(const std::string& key, const Json& object,
+                                         const std::set<std::string>& read) {
+  for (const auto& [given, value] : object.items()) {
+    if (!read.contains(given) && NearestName(given, {key})) return given;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::string Excerpt(const std::string& text, std::size_t offset) {
@@ -242,6 +253,12 @@ const nlohmann::json* JsonObjectReader::Get(const std::string& key) {
 }
 
 void JsonObjectReader::Fail(const std::string& key, const std::string& message) const {
+  if (!Has(key)) {
+    if (const auto given = MisspellingOf(key, object_, read_)) {
+      FailAt(file_, PathOf(*given),
+             "unknown key; did you mean \"" + key + "\"? (" + key + ": " + message + ")");
+    }
+  }
   FailAt(file_, PathOf(key), message);
 }
 
@@ -294,7 +311,9 @@ void JsonObjectReader::Finish() const {
     if (!read_.contains(key)) {
       std::string known;
       for (const auto& k : read_) known += (known.empty() ? "" : ", ") + k;
-      Fail(key, "unknown key (allowed here: " + known + ")");
+      const auto meant = NearestName(key, {read_.begin(), read_.end()});
+      Fail(key, "unknown key" + (meant ? "; did you mean \"" + *meant + "\"?" : std::string()) +
+                    " (allowed here: " + known + ")");
     }
   }
 }

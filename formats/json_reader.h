@@ -32,7 +32,7 @@ nlohmann::json ParseJsonText(const std::string& text, const std::string& file);
 std::string Excerpt(const std::string& text, std::size_t offset = 0);
 
 // One JSON object being read. Call Finish() once every known key has been read: it rejects the
-// keys nobody asked for.
+// keys nobody asked for, naming the allowed key each most likely misspells.
 class JsonObjectReader {
  public:
   JsonObjectReader(const nlohmann::json& value, std::string file, std::string path);
@@ -55,7 +55,9 @@ class JsonObjectReader {
   std::string Text(const std::string& key, const std::string& fallback);
   void Finish() const;
 
-  // Throws InputError "<file>: <path>: <message>".
+  // Throws InputError "<file>: <path>: <message>". When `key` is absent (a required key
+  // missing) and a key not read looks like a misspelling of it, that key is named instead:
+  // "<file>: <path of the misspelt key>: unknown key; did you mean "<key>"? (<key>: <message>)".
   [[noreturn]] void Fail(const std::string& key, const std::string& message) const;
   const std::string& File() const { return file_; }
 

@@ -3,6 +3,8 @@
 #include <gsl/gsl_statistics_double.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -11,8 +13,10 @@ namespace shockmap {
 
 void CheckOpenUnit(double value, std::string_view name) {
   if (!(value > 0.0 && value < 1.0)) {
-    throw std::invalid_argument(std::string(name) + " = " + std::to_string(value) +
-                                ": must be in (0, 1)");
+    std::array<char, 32> shortest{};  // The value as given: the shortest text that reads back.
+    const auto written = std::to_chars(shortest.data(), shortest.data() + shortest.size(), value);
+    throw std::invalid_argument(std::string(name) + " = " +
+                                std::string(shortest.data(), written.ptr) + ": must be in (0, 1)");
   }
 }
 

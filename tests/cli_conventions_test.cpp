@@ -210,6 +210,30 @@ TEST_F(CliConventions, OptionsThatWouldBeIgnoredAreRefused) {
   EXPECT_TRUE(ReadBytes(Path("s.db")) == bytes);
 }
 
+// A file or folder that is not there is said so in one wording by every command, and --db,
+// whose file `study run` creates, is not shown as a file that must exist.
+TEST_F(CliConventions, MissingFilesAreNamedAlikeAndTheDatabaseMayBeNew) {
+  const std::string missing = Path("nothere.json");
+  for (const std::string& args :
+       {"study run " + missing + " --db " + Path("s.db"), "simulate " + missing}) {
+    const auto o = RunShockmap(args);
+    EXPECT_EQ(o.exit_code, 2) << args << o.output;
+    EXPECT_EQ(o.output, "shockmap: error: " + missing + ": no such file\n") << args;
+  }
+  WriteText(Path("file"), "");
+  for (const std::string& folder : {Path("none"), Path("file")}) {
+    const auto o = RunShockmap("simulate " + missing + " --allow-path " + folder);
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_EQ(o.output, "shockmap: error: --allow-path: " + folder +
+                            (folder == Path("file") ? ": not a folder\n" : ": no such folder\n"));
+  }
+  for (const std::string& command : {"study run", "study status", "map", "sizing"}) {
+    const std::string help = RunShockmap(command + " --help").output;
+    EXPECT_NE(help.find("  --db FILE "), std::string::npos) << command << ":\n" << help;
+    EXPECT_NE(help.find("created by `study run` when missing"), std::string::npos) << help;
+  }
+}
+
 TEST_F(CliConventions, DefaultFileNamesCarryNoFloatNoise) {
   WriteText(Path("g.json"), kStudy);
   ASSERT_EQ(

@@ -11,6 +11,8 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "tests/run_command.h"
 
@@ -55,6 +57,31 @@ INSTANTIATE_TEST_SUITE_P(
         BadFlag{"UnwritableOut", "--rk 3000 --rftrunc 10 --out /proc/shockmap", "/proc/shockmap"}),
     [](const auto& info) { return std::string(info.param.name); });
 
+// A misspelt option or command is named with the one most likely meant, even where it hides a
+// required option; an argument too many is named too.
+TEST(CommandLineTypos, AreNamedWithTheOptionOrCommandMeant) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"compare --rk 3000 --rftruc 300",
+       "compare: unknown option --rftruc (did you mean --rftrunc?); `shockmap compare --help` "
+       "lists the options"},
+      {"compare --rk 3000 --rftrunc 300 --jsn=1",
+       "compare: unknown option --jsn (did you mean --json?); `shockmap compare --help` lists "
+       "the options"},
+      {"compare --rk 3000 --rftrunc 300 --turbo",
+       "compare: unknown option --turbo; `shockmap compare --help` lists the options"},
+      {"compare --rk 3000 --rftrunc 300 fast",
+       "compare: unexpected argument \"fast\"; `shockmap compare --help` says what it takes"},
+      {"simulte x.json",
+       "unknown command \"simulte\" (did you mean \"simulate\"?); use one of compare, study, "},
+      {"--verbose compare", "unknown option --verbose; `shockmap --help` lists the options"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Outcome o = RunShockmap(args);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.output;
+    EXPECT_EQ(o.output.rfind("shockmap: error: " + message, 0), 0u) << args << ": " << o.output;
+  }
+}
+
 TEST(CompareCommand, PaperRuleDivergesAndHalfSharpBoundIsOk) {
   const Outcome paper =
       RunShockmap("compare --rk 3000 --rftrunc 10 --dt-rule paper --dt-factor 1 --json");
@@ -82,6 +109,14 @@ TEST(CompareCommand, JsonCarriesEveryDocumentedKey) {
   }
   EXPECT_EQ(j["status"], "ok");
   EXPECT_LT(j["err"].get<double>(), 0.10);
+}
+
+// Counts agree with their nouns: at R_k = 100 the first shock has one rebound.
+TEST(CompareCommand, OneReboundIsSingular) {
+  const Outcome o = RunShockmap("compare --rk 100 --rftrunc 10 --window 0.03");
+  ASSERT_EQ(o.exit_code, 0) << o.output;
+  EXPECT_NE(o.output.find(" ms, 1 rebound\n"), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("1 rebounds"), std::string::npos) << o.output;
 }
 
 // The full FE scheme has no modal basis: its model line says so instead of "modes kept".

@@ -112,6 +112,28 @@ TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
 
 // The contact laws, the statistics' convention and window, the impact table and the wear law
 // reach the scene as written (docs/scenes.md).
+// A misspelt key is named with the allowed key it most likely misspells: a required one it
+// hides, or an optional one it stands beside.
+TEST_F(SceneFiles, AMisspeltKeyIsNamedWithTheKeyItMisspells) {
+  const std::string required = Refusal(Variant([](Json& s) {
+    s["zones"][0]["stifness_n_per_m"] = s["zones"][0]["stiffness_n_per_m"];
+    s["zones"][0].erase("stiffness_n_per_m");
+  }));
+  EXPECT_EQ(required, Path("variant.json") +
+                          ": zones[0].stifness_n_per_m: unknown key; did you mean "
+                          "\"stiffness_n_per_m\"? (stiffness_n_per_m: required number is missing)");
+  const std::string optional = Refusal(Variant([](Json& s) { s["beams"][0]["elemnts"] = 20; }));
+  EXPECT_EQ(optional.rfind(Path("variant.json") +
+                               ": beams[0].elemnts: unknown key; did you mean \"elements\"? "
+                               "(allowed here: ",
+                           0),
+            0u)
+      << optional;
+  // A key far from every allowed one is not given a guess.
+  const std::string far = Refusal(Variant([](Json& s) { s["beams"][0]["colour"] = "red"; }));
+  EXPECT_NE(far.find("beams[0].colour: unknown key (allowed here: "), std::string::npos) << far;
+}
+
 TEST_F(SceneFiles, ContactLawKeysReachTheScene) {
   const Scene scene = LoadScene(Variant([](Json& s) {
     s["bending"] = "both";

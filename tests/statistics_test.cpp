@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "statistics/bootstrap.h"
@@ -81,6 +82,16 @@ TEST(EstimateQuantile, RefusesBadInput) {
   EXPECT_THROW(EstimateQuantile(with_nan, 0.5, 0.9), std::invalid_argument);
   EXPECT_THROW(EstimateQuantile(sample, 1.0, 0.9), std::invalid_argument);
   EXPECT_THROW(EstimateQuantile(sample, 0.5, 0.0), std::invalid_argument);
+  // The value refused is written as given, not to six decimals.
+  for (const auto& [p, shown] :
+       {std::pair{1.0, "quantile p = 1: "}, {-0.5, "quantile p = -0.5: "}}) {
+    try {
+      EstimateQuantile(sample, p, 0.9);
+      ADD_FAILURE() << p << " was accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(shown), std::string::npos) << e.what();
+    }
+  }
 }
 
 class OrderStatisticCoverage : public testing::TestWithParam<int> {};

@@ -11,6 +11,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <regex>
 #include <thread>
 
 #include "db/migrations.h"
@@ -209,6 +210,43 @@ TEST_F(StudyProcess, BadStudyFilesLeaveTheDatabaseByteForByteUnchanged) {
   EXPECT_EQ(RunShockmap("study run " + Path("missing.json") + " --db " + fresh).exit_code, 2);
 }
 
+// A study file's misspelt key is named with the allowed key it most likely misspells, also
+// when it hides a required one; so are a misspelt subcommand and option of `study`.
+TEST_F(StudyProcess, MisspeltKeysSubcommandsAndOptionsAreNamedWithTheOneMeant) {
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {R"({"name": "g", "grids": [{"rk": 100, "rftrunk": 10}]})",
+       "grids[0].rftrunk: unknown key; did you mean \"rftrunc\"? (rftrunc: required axis is "
+       "missing)"},
+      {R"({"name": "g", "scoring": {"windw_s": 0.03}, "grids": [{"rk": 100, "rftrunc": 10}]})",
+       "scoring.windw_s: unknown key; did you mean \"window_s\"? (allowed here: "},
+  };
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string file = Path("typo" + std::to_string(i) + ".json");
+    WriteText(file, files[i].first);
+    const auto o = RunShockmap("study run " + file + " --db " + Path("s.db") + " --quiet");
+    EXPECT_EQ(o.exit_code, 2) << o.output;
+    EXPECT_EQ(o.output.rfind("shockmap: error: " + file + ": " + files[i].second, 0), 0u)
+        << o.output;
+  }
+  const std::vector<std::pair<std::string, std::string>> commands = {
+      {"study runn " + Path("typo0.json"),
+       "study: unknown command \"runn\" (did you mean \"run\"?); use one of run, status "
+       "(`shockmap study --help` says what each does)\n"},
+      {"study",
+       "study: a command is required, one of run, status; `shockmap study --help` says "
+       "what each does\n"},
+      {"study run " + Path("typo0.json") + " --quite",
+       "study run: unknown option --quite (did you mean --quiet?); `shockmap study run --help` "
+       "lists the options\n"},
+  };
+  for (const auto& [args, message] : commands) {
+    const auto o = RunShockmap(args);
+    EXPECT_EQ(o.exit_code, 2) << args << ": " << o.output;
+    EXPECT_EQ(o.output, "shockmap: error: " + message) << args;
+  }
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
 TEST_F(StudyProcess, QueryAnswersInCsvAndJsonAndRefusesWrites) {
   const std::string db = Path("study.db");
   const std::string spec = Path("q.json");
@@ -349,7 +387,8 @@ TEST_F(StudyProcess, StatusListsStudiesOfEveryKindAndEnsembleMembersByStateAndSe
                 {"members", 1},
                 {"seed", 3},
                 {"window_s", 0.01},
-                {"settings", {{"solver.r_ftrunc", {30, 100}}}},
+                // 30 as a computed value would carry it: 0.1 * 300.
+                {"settings", {{"solver.r_ftrunc", {30.000000000000004, 100}}}},
                 {"refined", {{"solver.r_ftrunc", 100}}},
                 {"draws",
                  {{"effects.base_motion.half_sine.amplitude_m_s2", {{"normal", {{"std", 9.81}}}}}}},
@@ -367,22 +406,29 @@ TEST_F(StudyProcess, StatusListsStudiesOfEveryKindAndEnsembleMembersByStateAndSe
   for (const char* study : {"tiny_canonical", "tiny_sweep", "tiny_ensemble"}) {
     EXPECT_NE(out.find(study), std::string::npos) << study << " missing from:\n" << out;
   }
-  EXPECT_NE(out.find("ensemble_members by state and setting_json:"), std::string::npos) << out;
+  EXPECT_NE(out.find("ensemble_members by state and setting:"), std::string::npos) << out;
   std::vector<std::string> lines;
   for (std::size_t at = 0, end; at < out.size(); at = end + 1) {
     end = std::min(out.find('\n', at), out.size());
     lines.push_back(out.substr(at, end - at));
   }
-  // One line per state and setting, with its one member computed.
-  for (const char* state : {" new ", " worn "}) {
-    for (const char* setting : {R"({"solver.r_ftrunc":30})", R"({"solver.r_ftrunc":100})"}) {
-      const auto line = std::ranges::find_if(lines, [&](const std::string& l) {
-        return l.starts_with("tiny_ensemble ") && l.find(state) != std::string::npos &&
-               l.find(setting) != std::string::npos;
-      });
-      EXPECT_NE(line, lines.end()) << state << setting << " missing from:\n" << out;
+  // One line per state and setting, with its one member computed, the setting by its number;
+  // the numbers' settings beneath, without the JSON nor the last bits of a computed value.
+  for (const char* state : {"new", "worn"}) {
+    for (const char* setting : {"1", "2"}) {
+      const std::regex row("tiny_ensemble +" + std::string(state) + " +" + setting + " +1 +1 .*");
+      EXPECT_EQ(std::ranges::count_if(
+                    lines, [&](const std::string& l) { return std::regex_match(l, row); }),
+                1)
+          << state << " " << setting << " missing from:\n"
+          << out;
     }
   }
+  EXPECT_NE(out.find("\nsettings of tiny_ensemble:\n  1  solver.r_ftrunc = 30\n"
+                     "  2  solver.r_ftrunc = 100\n"),
+            std::string::npos)
+      << out;
+  for (const std::string& line : lines) EXPECT_LE(line.size(), 160u) << line;
   // A study named alone shows its own breakdown only.
   const auto one = RunShockmap("study status tiny_canonical --db " + db);
   ASSERT_EQ(one.exit_code, 0) << one.output;

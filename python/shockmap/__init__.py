@@ -7,9 +7,15 @@ ValueError) with the command line's own message; database faults raise DatabaseE
 
 import json as _json
 
-import pandas as _pd
+try:
+    import numpy as _np  # noqa: F401 (the compiled part returns NumPy arrays)
+    import pandas as _pd
 
-from . import _shockmap
+    from . import _shockmap
+except ImportError as _error:
+    from ._interpreter import import_failure as _import_failure
+
+    raise ImportError(_import_failure(_error)) from _error
 from ._shockmap import Comparison, DatabaseError, InputError, SceneRun as _SceneRun
 
 __version__ = _shockmap.__version__
