@@ -1,5 +1,6 @@
 #include "validation/boundary_comparison.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -8,7 +9,9 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// Within 1e-9 (relative); an infinite end is close to itself only.
 bool Close(double x, double y) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return x == y;
   return std::abs(x - y) <= 1e-9 * std::max(std::abs(x), std::abs(y));
 }
 
