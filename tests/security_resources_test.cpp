@@ -410,11 +410,14 @@ Outcome RunWithFileSizeLimit(std::size_t bytes, const std::string& args) {
                   SHOCKMAP_BIN + " " + args);
 }
 
-// The entries of `dir`, by name.
+// The entries of `dir`, by name, but for the -wal and -shm files SQLite keeps beside a database
+// it reads.
 std::vector<std::string> Entries(const std::filesystem::path& dir) {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    names.push_back(entry.path().filename().string());
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.ends_with("-wal") && !name.ends_with("-shm")) names.push_back(name);
+  }
   std::ranges::sort(names);
   return names;
 }
