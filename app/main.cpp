@@ -2,8 +2,6 @@
 // that can be trusted. Exit codes: app/exit_codes.h.
 
 #include <CLI/CLI.hpp>
-#include <iostream>
-#include <string>
 
 #include "app/check_advice_command.h"
 #include "app/compare_command.h"

@@ -323,7 +323,8 @@ TEST_F(Security, QuantileOfOneIsRefusedAsOutsideTheOpenInterval) {
   const std::string criteria = kSource + "/studies/baselines/paper_fig4.json";
   for (const std::string& args :
        {"check-advice " + study + " --criteria " + criteria + " --db DIR/s.db --quantile 1",
-        "sizing --db DIR/s.db --quantile 1", "sizing --db DIR/s.db --confidence 1"}) {
+        std::string("sizing --db DIR/s.db --quantile 1"),
+        std::string("sizing --db DIR/s.db --confidence 1")}) {
     const std::string out = Refused(args, {"value 1 must be greater than 0 and less than 1"});
     EXPECT_EQ(out.find("<= 1"), std::string::npos) << out;
   }
@@ -424,8 +425,9 @@ TEST_F(Security, StudyRunOnAReadOnlyMountSaysSoAndWhere) {
       ro, dir_ / "out.txt", {"study", "run", study, "--db", (ro / "s.db").string(), "--quiet"});
   if (!fresh) GTEST_SKIP() << "no mount namespace here: a read-only mount cannot be made";
   EXPECT_EQ(fresh->exit_code, 2) << fresh->output;
-  for (const std::string part : {"cannot write database " + (ro / "s.db").string(),
-                                 "its folder " + ro.string(), "read-only file system"}) {
+  for (const std::string part :
+       {"cannot write database " + (ro / "s.db").string(), "its folder " + ro.string(),
+        std::string("read-only file system")}) {
     EXPECT_NE(fresh->output.find(part), std::string::npos) << part << "\n" << fresh->output;
   }
   // A database already there: the same words, and its bytes as they were.
