@@ -161,6 +161,18 @@ void CheckIndex(const Place& at) {
             Count(html, "data-status=\"diverged\"") + Count(html, "data-outcome=\"undecided\""));
   EXPECT_EQ(Count(html, "<rect class=\"marker\""), Count(html, "data-status=\"unstable\""));
   EXPECT_NE(html.find("dt = 2 / \u03c9<sub>max</sub>"), std::string::npos);
+  // Each score's interactive map draws its own boundary: Err's fit rises above the knee, SRf
+  // passes at every R_k's smallest truncation (no fit), PFr has no threshold.
+  auto metric_map = [&](const std::string& metric) {
+    const auto start = html.find("<div class=\"metric-map\" data-metric=\"" + metric + "\"");
+    EXPECT_NE(start, std::string::npos) << metric;
+    return html.substr(start, html.find("</div>", start) - start);
+  };
+  EXPECT_EQ(Count(metric_map("err"), "<polyline class=\"boundary\""), 1u);
+  EXPECT_EQ(Count(metric_map("srf"), "<polyline class=\"boundary\""), 0u);
+  const std::string pfr = metric_map("pfr");
+  EXPECT_EQ(Count(pfr, "<polyline class=\"boundary\""), 0u);
+  EXPECT_NE(pfr.find("no threshold: no boundary drawn"), std::string::npos) << pfr;
 }
 
 void CheckMapCells(const Place& at) {

@@ -50,7 +50,7 @@ std::string InteractiveMaps(const std::vector<ScoredPoint>& points,
       HtmlEscaped(DtShown(by_rft)),
       HtmlValidityMap(by_rft, MapAxis::kRFtrunc, criteria, "map-rftrunc"), by_dt.fixed_r_ftrunc,
       HtmlValidityMap(by_dt, MapAxis::kDt, criteria, "map-dt"), HtmlEscaped(DtShown(by_rft)),
-      HtmlMetricMaps(by_rft, criteria, "map-metric"));
+      HtmlMetricMaps(points, by_rft, criteria, "map-metric"));
 }
 
 // One line of links to a drawn map's image, data and script.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -182,17 +183,19 @@ struct ColourScale {
   }
 };
 
-// A score's scale: bad red to good green over its map range, split at its threshold when the
-// criteria judge by it.
-ColourScale ScoreScale(const ScoreDefinition& score, const CriteriaOptions& th) {
+// A score's scale: bad red to good green over its colour range (ScoreColourRange), split at its
+// threshold when the criteria judge by it.
+ColourScale ScoreScale(const MapGrid& grid, const ScoreDefinition& score,
+                       const CriteriaOptions& th) {
   const bool smaller = score.better == Better::kSmaller;
   const std::string good = "#1a9850", bad = "#d73027";
   ColourScale s;
-  s.metric = score.name, s.label = score.label, s.low = score.map_low, s.high = score.map_high;
   const auto threshold = th.thresholds.find(score.name);
+  s.metric = score.name, s.label = score.label;
+  std::tie(s.low, s.high) = ScoreColourRange(grid, score, threshold != th.thresholds.end());
   if (threshold == th.thresholds.end()) {
     s.stops = {{0.0, smaller ? good : bad}, {0.5, "#ffffbf"}, {1.0, smaller ? bad : good}};
-    s.note = fmt::format("{} ({}), no threshold", score.label, score.source);
+    s.note = fmt::format("{} ({}), no threshold: no boundary drawn", score.label, score.source);
     return s;
   }
   const double t = s.Position(threshold->second);
@@ -279,20 +282,25 @@ std::string HtmlValidityMap(const MapGrid& grid, MapAxis y, const ValidityCriter
   return Svg(grid, y, criteria, f, cells, id) + Legend(grid, criteria, y);
 }
 
-std::string HtmlMetricMaps(const MapGrid& grid, const ValidityCriteria& criteria,
-                           const std::string& id) {
-  std::vector<ColourScale> scales;
+std::string HtmlMetricMaps(const std::vector<ScoredPoint>& points, const MapGrid& grid,
+                           const ValidityCriteria& criteria, const std::string& id) {
+  // Each scale with the criteria its map judges and draws by (MetricCriteria); without a
+  // threshold, none: no cell fails and no boundary is drawn.
+  std::vector<std::pair<ColourScale, ValidityCriteria>> scales;
   for (const ScoreDefinition& score : Scores()) {
     const bool scored = std::ranges::any_of(
         grid.cells, [&](const MapCell& c) { return c.point->scores[score.name].has_value(); });
-    if (scored) scales.push_back(ScoreScale(score, criteria.options));
+    if (!scored) continue;
+    const ValidityCriteria own = MetricCriteria(points, criteria, score.name)
+                                     .value_or(ValidityCriteria{.options = {.thresholds = {}}});
+    scales.emplace_back(ScoreScale(grid, score, own.options), own);
   }
-  scales.push_back(CostScale(grid));
+  scales.emplace_back(CostScale(grid), criteria);
   std::string options, maps;
-  for (const ColourScale& s : scales) {
+  for (const auto& [s, judged] : scales) {
     options += fmt::format("<option value=\"{}\">{}</option>", HtmlEscaped(s.metric),
                            HtmlEscaped(s.label));
-    maps += MetricMap(grid, s, criteria, id);
+    maps += MetricMap(grid, s, judged, id);
   }
   return fmt::format(
       "<div class=\"metric-maps\" id=\"{0}\"><p><label>Metric shown: <select "

@@ -28,9 +28,11 @@ std::string HtmlValidityMap(const MapGrid& grid, MapAxis y, const ValidityCriter
 // has (Err, SRf, PFr, ...), then cost (CPU time, log scale). Each map sits in a
 // <div class="metric-map" data-metric="NAME"> with its colour scale; its cells carry what
 // HtmlValidityMap's do, their <title> opening with the metric's value ("Err = 0.0123; ...").
+// A score's map draws the boundary of its own threshold (MetricCriteria, from `points`), none
+// without one; the cost map that of `criteria`.
 // A <select class="metric-switch" data-maps="ID"> lists the metrics; the page's script shows the
 // chosen map only (views/report_page.h).
-std::string HtmlMetricMaps(const MapGrid& grid, const ValidityCriteria& criteria,
-                           const std::string& id);
+std::string HtmlMetricMaps(const std::vector<ScoredPoint>& points, const MapGrid& grid,
+                           const ValidityCriteria& criteria, const std::string& id);
 
 }  // namespace shockmap

@@ -140,4 +140,28 @@ std::string DtShown(const MapGrid& grid) {
   return fmt::format("dt = {:g} to {:g} dt_sharp (the finest studied per cell)", low, high);
 }
 
+std::optional<ValidityCriteria> MetricCriteria(const std::vector<ScoredPoint>& points,
+                                               const ValidityCriteria& criteria,
+                                               std::string_view metric) {
+  if (!FindScore(metric)) return criteria;
+  const auto threshold = criteria.options.thresholds.find(metric);
+  if (threshold == criteria.options.thresholds.end()) return std::nullopt;
+  CriteriaOptions own = criteria.options;
+  own.thresholds = {*threshold};
+  return DeriveCriteria(points, own);
+}
+
+std::pair<double, double> ScoreColourRange(const MapGrid& grid, const ScoreDefinition& score,
+                                           bool thresholded) {
+  double low = score.map_low, high = score.map_high;
+  if (thresholded) return {low, high};
+  for (const MapCell& c : grid.cells) {
+    if (const auto v = c.point->scores[score.name]; v && std::isfinite(*v)) {
+      low = std::min(low, std::floor(*v * 10.0) / 10.0);
+      high = std::max(high, std::ceil(*v * 10.0) / 10.0);
+    }
+  }
+  return {low, high};
+}
+
 }  // namespace shockmap

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "validation/validity_criteria.h"
@@ -60,5 +61,18 @@ MapGrid BuildMapGrid(const std::vector<ScoredPoint>& points, MapAxis y, double r
 // The dt / dt_sharp of the cells, as the map's title states it: "dt = 0.1 dt_sharp" when every
 // cell shows the same ratio, else "dt = 0.1 to 0.5 dt_sharp (the finest studied per cell)".
 std::string DtShown(const MapGrid& grid);
+
+// What the map of `metric` (a score's name, "status" or "cost") judges by: a score's map by that
+// score's threshold alone, derived again from `points`; nullopt when the score has no threshold
+// (its map draws no boundary, and no cell fails); the status and cost maps by `criteria`.
+std::optional<ValidityCriteria> MetricCriteria(const std::vector<ScoredPoint>& points,
+                                               const ValidityCriteria& criteria,
+                                               std::string_view metric);
+
+// The colour range of a score's map: its map range (validation/scores.h) when a threshold
+// judges by it (the threshold tells pass from fail); without one every value counts, so the
+// range widens to the values the grid's cells show, in steps of 0.1.
+std::pair<double, double> ScoreColourRange(const MapGrid& grid, const ScoreDefinition& score,
+                                           bool thresholded);
 
 }  // namespace shockmap

@@ -60,51 +60,32 @@ struct MetricStyle {
   std::string palette, cb, title;
 };
 
-// The smallest and largest value the cells show for the metric (NaN when none has one).
-std::pair<double, double> ValueRange(const MapGrid& grid, const std::string& metric) {
-  double low = NAN, high = NAN;
-  for (const MapCell& c : grid.cells) {
-    const double v = CellValue(*c.point, metric);
-    if (!std::isfinite(v)) continue;
-    low = std::isfinite(low) ? std::min(low, v) : v;
-    high = std::isfinite(high) ? std::max(high, v) : v;
-  }
-  return {low, high};
-}
-
-// A score's colours: from bad (red) to good (green), split at its threshold when it has one
-// (over its map range: the threshold tells pass from fail). Without a threshold every value
-// counts, so the range widens to the values shown, in steps of 0.1.
+// A score's colours: from bad (red) to good (green) over `range` (ScoreColourRange), split at
+// its threshold when it has one.
 MetricStyle ScoreStyle(const ScoreDefinition& score, const CriteriaOptions& th,
-                       std::pair<double, double> values) {
+                       std::pair<double, double> range) {
   const bool smaller = score.better == Better::kSmaller;
   const char* low_colour = smaller ? "'#1a9850'" : "'#d73027'";
   const char* high_colour = smaller ? "'#d73027'" : "'#1a9850'";
   const auto threshold = th.thresholds.find(score.name);
   const std::string name = fmt::format("{} ({})", score.label, score.source);
   if (threshold == th.thresholds.end()) {
-    const double low = std::isfinite(values.first)
-                           ? std::min(score.map_low, std::floor(values.first * 10.0) / 10.0)
-                           : score.map_low;
-    const double high = std::isfinite(values.second)
-                            ? std::max(score.map_high, std::ceil(values.second * 10.0) / 10.0)
-                            : score.map_high;
+    const auto [low, high] = range;
     return {fmt::format("set palette defined ({} {}, {} '#ffffbf', {} {})\nset cbrange [{}:{}]\n",
                         low, low_colour, 0.5 * (low + high), high, high_colour, low, high),
             std::string(score.label), fmt::format("{}, no threshold: no boundary drawn", name)};
   }
   return {fmt::format("set palette defined ({lo} {lc}, {t} {lt}, {t} {ht}, {hi} {hc})\n"
                       "set cbrange [{lo}:{hi}]\nset cbtics add ('{t:g}' {t})\n",
-                      fmt::arg("lo", score.map_low), fmt::arg("lc", low_colour),
+                      fmt::arg("lo", range.first), fmt::arg("lc", low_colour),
                       fmt::arg("t", threshold->second),
                       fmt::arg("lt", smaller ? "'#a6d96a'" : "'#fdae61'"),
                       fmt::arg("ht", smaller ? "'#fdae61'" : "'#a6d96a'"),
-                      fmt::arg("hi", score.map_high), fmt::arg("hc", high_colour)),
+                      fmt::arg("hi", range.second), fmt::arg("hc", high_colour)),
           std::string(score.label), fmt::format("{}, threshold {:g}", name, threshold->second)};
 }
 
-MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th,
-                    std::pair<double, double> values) {
+MetricStyle StyleOf(const MapGrid& grid, const std::string& metric, const CriteriaOptions& th) {
   if (metric == "cost") {
     return {
         "set palette defined (0 '#f7fbff', 0.5 '#6baed6', 1 '#08306b')\nset logscale cb\n"
@@ -112,20 +93,8 @@ MetricStyle StyleOf(const std::string& metric, const CriteriaOptions& th,
         "CPU time (s)", "CPU time of the numerical run"};
   }
   if (metric == "status") return {"unset colorbox\n", "", "outcome"};
-  return ScoreStyle(*FindScore(metric), th, values);
-}
-
-// The criteria a map draws: a score's map judges by that score's threshold alone (none when
-// the score has none: nothing to draw then); the status and cost maps by every threshold.
-std::optional<ValidityCriteria> MapCriteria(const std::vector<ScoredPoint>& points,
-                                            const ValidityCriteria& criteria,
-                                            const std::string& metric) {
-  if (!FindScore(metric)) return criteria;
-  const auto threshold = criteria.options.thresholds.find(metric);
-  if (threshold == criteria.options.thresholds.end()) return std::nullopt;
-  CriteriaOptions own = criteria.options;
-  own.thresholds = {*threshold};
-  return DeriveCriteria(points, own);
+  const ScoreDefinition& score = *FindScore(metric);
+  return ScoreStyle(score, th, ScoreColourRange(grid, score, th.thresholds.contains(metric)));
 }
 
 // gnuplot's point type of a marker: 2 a cross, 4 an open square, 6 an open circle, 12 an open
@@ -289,12 +258,11 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
   TerminalFor(file, 1100, 850);  // Throws for a bad extension before any file is written.
   if (file.has_parent_path()) CreateOutputDirectory(file.parent_path());
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
-  const std::optional<ValidityCriteria> drawn = MapCriteria(points, criteria, options.metric);
+  const std::optional<ValidityCriteria> drawn = MetricCriteria(points, criteria, options.metric);
   // Without a threshold no cell fails: the cells' categories are their runs' statuses alone.
   const ValidityCriteria judged = drawn.value_or(ValidityCriteria{.options = {.thresholds = {}}});
   WriteMapData(grid, judged, options.metric, data_file);
-  const MetricStyle style =
-      StyleOf(options.metric, judged.options, ValueRange(grid, options.metric));
+  const MetricStyle style = StyleOf(grid, options.metric, judged.options);
   const bool by_dt = options.y == MapAxis::kDt;
   const std::string shown =
       by_dt ? fmt::format("at R_ftrunc = {:g}", grid.fixed_r_ftrunc) : "at " + DtShown(grid);
