@@ -396,11 +396,11 @@ TEST_F(DatabaseCorruption, StoredNumbersOfTheWrongTypeOrOutOfRangeAreRefusedNami
   std::filesystem::remove(db());
   Ensemble();
   ExpectEachRefusedBySizingAndReport(
-      {{"UPDATE ensemble_member_zones SET max_force_n = 'big' WHERE rowid = (SELECT min(rowid) "
-        "FROM ensemble_member_zones)",
+      {{"UPDATE ensemble_member_zones SET max_force_n = 'big' WHERE zone = 0 AND point_id = "
+        "(SELECT min(point_id) FROM ensemble_member_zones)",
         ", zone 0: max_force_n is the text \"big\" (it must be a number, finite and >= 0)"},
-       {"UPDATE ensemble_member_zones SET contact_time_fraction = 2 WHERE rowid = (SELECT "
-        "min(rowid) FROM ensemble_member_zones)",
+       {"UPDATE ensemble_member_zones SET contact_time_fraction = 2 WHERE zone = 0 AND point_id = "
+        "(SELECT min(point_id) FROM ensemble_member_zones)",
         ", zone 0: contact_time_fraction is 2 (it must be in [0, 1])"}});
 }
 
