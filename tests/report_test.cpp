@@ -44,6 +44,16 @@ struct Place {
   std::string db;
 };
 
+// A new empty folder named `name` and this process's id under the temporary directory, and the
+// database file `database` in it.
+Place FreshPlace(const std::string& name, const std::string& database) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return {dir, (dir / database).string()};
+}
+
 // The DOM of `page` after its scripts ran, from headless Chromium.
 std::string Dom(const Place& at, const std::filesystem::path& page) {
   // Flags as the machine's own Chromium check uses them: no sandbox as root, no network.
@@ -537,12 +547,7 @@ std::vector<Cells> TableRows(const std::string& dom, const std::string& id) {
 // parameters as columns, the validity map over them, the contact-force map, and shows the name
 // as text.
 TEST(SceneStudyReport, HasItsTablesAndContactForceMapAndEscapesTheName) {
-  Place at{std::filesystem::temp_directory_path() /
-               ("shockmap_scene_report_" + std::to_string(getpid())),
-           ""};
-  std::filesystem::remove_all(at.dir);
-  std::filesystem::create_directories(at.dir);
-  at.db = (at.dir / "s.db").string();
+  const Place at = FreshPlace("shockmap_scene_report", "s.db");
   const nlohmann::json study = {
       {"name", "<b>spring</b> & \"q\""},
       {"scene", std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/cantilever_spring.json"},
@@ -622,12 +627,7 @@ std::vector<std::string> TableColumns(const std::string& dom, const std::string&
 // and the P95 that `shockmap sizing --format json` prints, every picture loads, and the name
 // and the description show as text.
 TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads) {
-  Place at{std::filesystem::temp_directory_path() /
-               ("shockmap_ensemble_report_" + std::to_string(getpid())),
-           ""};
-  std::filesystem::remove_all(at.dir);
-  std::filesystem::create_directories(at.dir);
-  at.db = (at.dir / "e.db").string();
+  const Place at = FreshPlace("shockmap_ensemble_report", "e.db");
   const nlohmann::json study = {
       {"kind", "scene_ensemble"},
       {"name", "<b>small</b> & \"q\""},
@@ -770,12 +770,7 @@ TEST(EnsembleStudyReport, SizingTableMatchesTheSizingCommandAndEveryPictureLoads
 // An ensemble at one numerical setting (the scene's own): its tables name that setting once, in
 // their captions, and have no column repeating it on every row.
 TEST(EnsembleStudyReport, OneSettingIsNamedInTheCaptionNotOnEveryRow) {
-  Place at{
-      std::filesystem::temp_directory_path() / ("shockmap_one_setting_" + std::to_string(getpid())),
-      ""};
-  std::filesystem::remove_all(at.dir);
-  std::filesystem::create_directories(at.dir);
-  at.db = (at.dir / "e.db").string();
+  const Place at = FreshPlace("shockmap_one_setting", "e.db");
   const nlohmann::json study = {
       {"kind", "scene_ensemble"},
       {"name", "one_setting"},

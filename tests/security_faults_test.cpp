@@ -80,6 +80,15 @@ void WaitForStoredPoints(const std::string& db, std::int64_t stored) {
   }
 }
 
+// A live run of another host (node-17, pid 4242, heartbeat now) holds `db`'s lease.
+void HoldByAnotherHost(const std::string& db) {
+  Connection c(db, Connection::Mode::kReadWriteCreate);
+  c.Execute(
+      "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
+      "started_utc, heartbeat_unix_s) SELECT study_id, 'x', 'x', 'x', 'node-17', 4242, 1, "
+      "'2026-01-01T00:00:00.000Z', unixepoch('now') FROM studies");
+}
+
 int ExitCodeOf(pid_t pid) {
   int status = 0;
   waitpid(pid, &status, 0);
@@ -115,12 +124,9 @@ TEST_F(StudyFaults, PointsOfARunGoneWithItsContainerAreTakenOverOnceItsHeartbeat
 TEST_F(StudyFaults, ASecondWriterIsRefusedNamingTheHolderAndWritesNothing) {
   const std::string spec = Spec(kSmallStudy), db = Path("s.db");
   ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
+  HoldByAnotherHost(db);
   {
     Connection c(db, Connection::Mode::kReadWriteCreate);
-    c.Execute(
-        "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
-        "started_utc, heartbeat_unix_s) SELECT study_id, 'x', 'x', 'x', 'node-17', 4242, 1, "
-        "'2026-01-01T00:00:00.000Z', unixepoch('now') FROM studies");
     c.Execute("UPDATE points SET status = 'pending' WHERE point_id = 1");
   }
   const std::string before = ReadBytes(db);
@@ -142,13 +148,7 @@ TEST_F(StudyFaults, ASecondWriterIsRefusedNamingTheHolderAndWritesNothing) {
 TEST_F(StudyFaults, ARefusedRunRegistersNothingAndLeavesTheStoredStudyFileAsItWas) {
   const std::string spec = Spec(kSmallStudy), db = Path("s.db");
   ASSERT_EQ(RunShockmap("study run " + spec + " --db " + db + " --quiet").exit_code, 0);
-  {
-    Connection c(db, Connection::Mode::kReadWriteCreate);
-    c.Execute(
-        "INSERT INTO runs(study_id, code_version, compiler, build_type, host, pid, jobs, "
-        "started_utc, heartbeat_unix_s) SELECT study_id, 'x', 'x', 'x', 'node-17', 4242, 1, "
-        "'2026-01-01T00:00:00.000Z', unixepoch('now') FROM studies");
-  }
+  HoldByAnotherHost(db);
   const std::string before = ReadBytes(db);
   const auto stored = [&] {
     return testing::Rows(db, "SELECT name, spec_json, updated_utc FROM studies ORDER BY name");
