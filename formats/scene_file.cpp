@@ -505,8 +505,10 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
             : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
   BundleZones zones;
   for (const auto& [cell, a] : index) {
+    const std::array<int, 2> at =
+        cell;  // A lambda may not capture a structured binding (clang 14).
     const auto missing = std::ranges::count_if(steps, [&](const auto& s) {
-      return !index.contains({cell[0] + s[0], cell[1] + s[1]});
+      return !index.contains({at[0] + s[0], at[1] + s[1]});
     });
     for (const auto& s : steps) {
       const double ny = l.row ? s[0] : s[0] + s[1] / 2.0;
