@@ -505,8 +505,8 @@ BundleZones GenerateBundleZones(const Lattice& l, const BundleParts& p,
             : std::vector<std::array<int, 2>>{{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
   BundleZones zones;
   for (const auto& [cell, a] : index) {
-    const std::array<int, 2> at =
-        cell;  // A lambda may not capture a structured binding (clang 14).
+    // A copy: clang 14 refuses a lambda's capture of a structured binding.
+    const std::array<int, 2> at = cell;
     const auto missing = std::ranges::count_if(steps, [&](const auto& s) {
       return !index.contains({at[0] + s[0], at[1] + s[1]});
     });
