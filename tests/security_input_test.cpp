@@ -168,14 +168,15 @@ TEST_F(Security, RepeatedKeysAreRefusedWithTheirPath) {
 
 TEST_F(Security, RepeatedNamesAreRefusedWithTheirPath) {
   const Json zone = CanonicalScene()["zones"][0];
-  Refused("simulate " + Scene("zones.json", [&](Json& s) { s["zones"].push_back(zone); }),
-          {"zones[1].name", "tip_spring", "twice"});
+  Refused(
+      "simulate " + Scene("zones.json", [&](Json& s) { s["zones"].push_back(zone); }),
+      {"zones[1].name", "tip_spring", "already the name given at zones[0].name", "must be unique"});
   Refused("simulate " +
               Scene("outputs.json",
                     [](Json& s) {
                       s["outputs"]["displacements"].push_back(s["outputs"]["displacements"][0]);
                     }),
-          {"outputs.displacements[1].name", "tip", "twice"});
+          {"outputs.displacements[1].name", "tip", "already the name given at", "must be unique"});
   Refused("simulate " + Scene("listed.json",
                               [](Json& s) {
                                 s["outputs"]["contact_forces"] = {"tip_spring", "tip_spring"};
