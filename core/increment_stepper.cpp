@@ -4,6 +4,8 @@
 #include <cassert>
 #include <utility>
 
+#include "core/vector_clones.h"
+
 namespace shockmap {
 namespace {
 
@@ -153,13 +155,12 @@ template <int... kChunks>
 }
 
 // The paper's problem: one zone, the tip read off it, the state in registers.
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void AdvanceOneZone(
-    const Pass& p, int steps, double* observed, double* forces) {
+SHOCKMAP_VECTOR_CLONES void AdvanceOneZone(const Pass& p, int steps, double* observed,
+                                           double* forces) {
   AdvanceOneZoneIn(std::make_integer_sequence<int, kMaxChunks>(), p, steps, observed, forces);
 }
 
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void AdvanceAny(
-    const Pass& p, int steps, double* observed, double* forces) {
+SHOCKMAP_VECTOR_CLONES void AdvanceAny(const Pass& p, int steps, double* observed, double* forces) {
   AdvanceSteps<0, -1, 0>(p, steps, observed, forces);
 }
 

@@ -3,9 +3,7 @@
 #include <cstring>
 
 #include "core/contact_law.h"
-
-#define SHOCKMAP_CLONES \
-  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#include "core/vector_clones.h"
 
 namespace shockmap {
 namespace {
@@ -162,8 +160,8 @@ double StationDot(const double* f, const double* p, int n) { return Dot(f, p, n)
 
 int StationWidth(int count) { return count <= 2 ? count : (count + 3) / 4 * 4; }
 
-SHOCKMAP_CLONES void EvaluateStations(std::span<const StationBlock> blocks, const double* shapes,
-                                      const double* x, double* out) {
+SHOCKMAP_VECTOR_CLONES void EvaluateStations(std::span<const StationBlock> blocks,
+                                             const double* shapes, const double* x, double* out) {
   for (const StationBlock& b : blocks) EvaluateBlock(b, shapes + b.shapes, x, out + 2 * b.first);
 }
 
@@ -186,8 +184,8 @@ SHOCKMAP_CLONES void EvaluateStations(std::span<const StationBlock> blocks, cons
   }
 }
 
-SHOCKMAP_CLONES int LinearPenaltyForces(const PenaltyZones& zones, const double* u, double* force,
-                                        int* closed) {
+SHOCKMAP_VECTOR_CLONES int LinearPenaltyForces(const PenaltyZones& zones, const double* u,
+                                               double* force, int* closed) {
   // Without a branch on contact: zones open and close at random.
   int n_closed = 0, i = 0;
   for (; i + 8 <= zones.count; i += 8) PenaltyGroup(zones, i, u, force, closed, n_closed);
@@ -209,8 +207,8 @@ SHOCKMAP_CLONES int LinearPenaltyForces(const PenaltyZones& zones, const double*
   for (int i = 0; i < n; ++i) out[i] += f * row[i];
 }
 
-SHOCKMAP_CLONES void AddStationForces(std::span<const StationForce> forces,
-                                      const StationLayout& layout, double* a) {
+SHOCKMAP_VECTOR_CLONES void AddStationForces(std::span<const StationForce> forces,
+                                             const StationLayout& layout, double* a) {
   for (const StationForce& f : forces) {
     const double* row = layout.rows + layout.row[f.slot];
     const int n = layout.modes[f.slot];
