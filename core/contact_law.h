@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace shockmap {
@@ -61,17 +62,31 @@ struct NormalLaw {
   }
 };
 
+// How a zone with friction decides between sticking and sliding (docs/physics.md §7.2).
+enum class FrictionConvention {
+  // The default: the spring's elastic trial force against the Coulomb limit (a return mapping).
+  kReturnMapping,
+  // code_aster's DIS_CHOC in a modal transient (its ftang routine): the slip rate's sign decides.
+  kCodeAster,
+};
+
 // Coulomb friction regularized by a tangential spring, as DIS_CHOC: while the contact is closed
 // a spring k_t, in parallel with a damper c_t, ties the two sides' tangential slip s to an
 // anchor s0; the force it carries is capped at mu N (N the normal force). Sticking holds up to
 // the static coefficient; beyond, the zone slides under the sliding coefficient's force and the
-// anchor follows so that the spring holds that force. A contact that closes starts sticking
-// with the spring relaxed (docs/physics.md §7.2).
+// anchor follows so that the spring holds that force. The convention says when a zone passes
+// from one to the other (docs/physics.md §7.2).
 struct FrictionLaw {
   double coefficient = 0.0;                   // mu: sliding (code_aster's COULOMB_DYNA).
   double static_coefficient = 0.0;            // mu_s >= mu: sticking (COULOMB_STAT).
   double tangential_stiffness_n_per_m = 0.0;  // k_t > 0 (RIGI_TAN).
   double tangential_damping_n_s_per_m = 0.0;  // c_t >= 0, while sticking (AMOR_TAN).
+  FrictionConvention convention = FrictionConvention::kReturnMapping;
+
+  // Whether the force depends on the slip rate: with a damper, or in code_aster's convention.
+  bool ReadsSlipRate() const {
+    return tangential_damping_n_s_per_m != 0.0 || convention == FrictionConvention::kCodeAster;
+  }
 };
 
 // One zone's friction between steps.
@@ -79,17 +94,43 @@ struct FrictionState {
   double anchor_m = 0.0;  // s0: the slip at which the tangential spring is relaxed.
   double force_n = 0.0;   // The latest tangential force on side a, along the zone's tangent.
   bool sliding = false;   // The latest force is mu N, the anchor following.
-  // The work the slider dissipated in the latest update, -F (s0 - s0_before) (J): the energy
-  // the spring did not store of the structure's work -F ds, F^2 / (2 k_t) following N included.
+  // The work the slider dissipated in the latest update (J): the structure's work -F ds less
+  // what the spring stored (FrictionForce says how each convention counts it).
   double slid_work_j = 0.0;
+  // code_aster's convention only: the slip and slip rate of the latest update (ftang's OLDVT).
+  double slip_m = 0.0;
+  double slip_rate_m_s = 0.0;
 };
 
-// The tangential force on side a along the tangent (N) at slip s (m) and slip rate s' (m/s)
-// under the normal force N >= 0, the state updated: an elastic trial -k_t (s - s0) - c_t s',
-// kept while within the limit (mu_s N sticking, mu N sliding), else mu N along the trial with
-// the anchor moved to s + F / k_t (a return mapping), the slider's work recorded.
-inline double FrictionForce(const FrictionLaw& law, double normal_force_n, double slip_m,
-                            double slip_rate_m_s, FrictionState& state) {
+// The state of a zone whose contact closes at slip s (m), the spring relaxed. In the default
+// convention the zone starts sticking, anchored at s. In code_aster's it starts as DIS_CHOC's
+// state after an open step: sliding, with no previous slip rate, so that it slides at once when
+// the sides move faster than kCodeAsterSlidingSpeedMS, and else sticks anchored at s (DIS_CHOC
+// anchors it at the slip of the open step before, one step's slip away). A zone closed when the
+// run starts has no open step before it: DIS_CHOC's anchor is then the origin of the
+// obstacle's frame, far away, so the zone slides at its first update; here no anchor at all
+// (infinite) has that effect.
+inline FrictionState ClosingFrictionState(const FrictionLaw& law, double slip_m,
+                                          bool at_run_start) {
+  FrictionState state;
+  state.anchor_m = slip_m;
+  state.slip_m = slip_m;
+  if (law.convention == FrictionConvention::kCodeAster) {
+    state.sliding = true;
+    if (at_run_start) state.anchor_m = std::numeric_limits<double>::infinity();
+  }
+  return state;
+}
+
+// The default convention's tangential force on side a along the tangent (N) at slip s (m) and
+// slip rate s' (m/s) under the normal force N >= 0, the state updated: an elastic trial
+// -k_t (s - s0) - c_t s', kept while within the limit (mu_s N sticking, mu N sliding), else
+// mu N along the trial with the anchor moved to s + F / k_t (a return mapping), the slider's
+// work -F (s0 - s0_before) recorded: the energy the spring did not store of the structure's
+// work -F ds, F^2 / (2 k_t) following N included.
+inline double ReturnMappingFrictionForce(const FrictionLaw& law, double normal_force_n,
+                                         double slip_m, double slip_rate_m_s,
+                                         FrictionState& state) {
   const double trial = -law.tangential_stiffness_n_per_m * (slip_m - state.anchor_m) -
                        law.tangential_damping_n_s_per_m * slip_rate_m_s;
   const double limit = (state.sliding ? law.coefficient : law.static_coefficient) * normal_force_n;
@@ -105,6 +146,59 @@ inline double FrictionForce(const FrictionLaw& law, double normal_force_n, doubl
     state.slid_work_j = -state.force_n * (state.anchor_m - anchor_before);
   }
   return state.force_n;
+}
+
+// The slip rate (m/s) at or below which code_aster's DIS_CHOC does not let a zone keep sliding
+// (ftang's 1.d-6 on the tangential speed).
+inline constexpr double kCodeAsterSlidingSpeedMS = 1e-6;
+
+// code_aster's convention (DIS_CHOC's ftang, one tangential direction): a sliding zone keeps
+// sliding, F = -mu N sign(s'), while its slip rate keeps its sign (s' s'_before >= 0) and
+// exceeds kCodeAsterSlidingSpeedMS; the anchor then sits where the spring holds F. Otherwise
+// (a reversal, a slow slip, or a zone that stuck) it sticks from the latest sliding force:
+// F = -k_t (s - s0) - c_t s', i.e. ftang's OLDFT - k_t (s - OLDXLO) - c_t s'. A sticking force
+// beyond mu_s N makes it slide at once under -mu N sign(s') (0 when |s'| is within the machine
+// epsilon, as ftang's r8prem), the anchor reset.
+// The slider's work is the structure's work -F (s - s_before) less the change of the spring's
+// energy, exactly, since the force may reverse in one step.
+inline double CodeAsterFrictionForce(const FrictionLaw& law, double normal_force_n, double slip_m,
+                                     double slip_rate_m_s, FrictionState& state) {
+  const double k_t = law.tangential_stiffness_n_per_m;
+  const double stretch_before = state.slip_m - state.anchor_m;
+  const double energy_before =
+      std::isfinite(stretch_before) ? 0.5 * k_t * stretch_before * stretch_before : 0.0;
+  const bool keeps_sliding = state.sliding && slip_rate_m_s * state.slip_rate_m_s >= 0.0 &&
+                             std::abs(slip_rate_m_s) > kCodeAsterSlidingSpeedMS;
+  bool slides = keeps_sliding;
+  if (!keeps_sliding) {
+    state.force_n =
+        -k_t * (slip_m - state.anchor_m) - law.tangential_damping_n_s_per_m * slip_rate_m_s;
+    slides = std::abs(state.force_n) > law.static_coefficient * normal_force_n;
+  }
+  if (slides) {
+    state.force_n = std::abs(slip_rate_m_s) <= std::numeric_limits<double>::epsilon()
+                        ? 0.0
+                        : -std::copysign(law.coefficient * normal_force_n, slip_rate_m_s);
+    state.anchor_m = slip_m + state.force_n / k_t;
+    const double energy = 0.5 * state.force_n * state.force_n / k_t;
+    state.slid_work_j = -state.force_n * (slip_m - state.slip_m) - (energy - energy_before);
+  } else {
+    state.slid_work_j = 0.0;
+  }
+  state.sliding = slides;
+  state.slip_m = slip_m;
+  state.slip_rate_m_s = slip_rate_m_s;
+  return state.force_n;
+}
+
+// The tangential force on side a along the tangent (N) at slip s (m) and slip rate s' (m/s)
+// under the normal force N >= 0, the state updated, in the law's convention.
+inline double FrictionForce(const FrictionLaw& law, double normal_force_n, double slip_m,
+                            double slip_rate_m_s, FrictionState& state) {
+  if (law.convention == FrictionConvention::kCodeAster) {
+    return CodeAsterFrictionForce(law, normal_force_n, slip_m, slip_rate_m_s, state);
+  }
+  return ReturnMappingFrictionForce(law, normal_force_n, slip_m, slip_rate_m_s, state);
 }
 
 // The energy in the tangential spring at slip s (J).

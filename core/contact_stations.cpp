@@ -212,11 +212,15 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
 double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {
   Rubbing& r = frictions_[friction_of_[zone]];
   const double slip = Tangential(zone, displacement_);
-  // A contact closing (not closed at the step before): its spring starts relaxed, sticking.
-  if (r.closed_step == 0 || r.closed_step + 1 != step_) r.state = {slip, 0.0, false};
+  // A contact closing (not closed at the step before): its spring starts relaxed. The first
+  // call (step 1) is the run's initial state.
+  if (r.closed_step == 0 || r.closed_step + 1 != step_) {
+    r.state = ClosingFrictionState(r.law, slip, step_ == 1);
+  }
   r.closed_step = step_;
-  // The slip rate enters through the tangential damper only: evaluated only with one.
-  const double rate = r.law.tangential_damping_n_s_per_m != 0.0 ? SlipRate(zone, v) : 0.0;
+  // The slip rate enters through the tangential damper, or code_aster's convention: evaluated
+  // only then.
+  const double rate = r.law.ReadsSlipRate() ? SlipRate(zone, v) : 0.0;
   const double force = FrictionForce(r.law, f, slip, rate, r.state);
   if (dt_s_ > 0.0) friction_power_w_ += FrictionDissipatedPower(r.law, r.state, dt_s_, rate);
   return force;

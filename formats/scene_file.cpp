@@ -272,6 +272,14 @@ FrictionLaw ParseFriction(JsonObjectReader& f) {
   law.static_coefficient = InRange(f, "static_coefficient", law.coefficient, law.coefficient, 10.0);
   law.tangential_stiffness_n_per_m = Positive(f, "tangential_stiffness_n_per_m");
   law.tangential_damping_n_s_per_m = InRange(f, "tangential_damping_n_s_per_m", 0.0, 0.0, 1e9);
+  const std::string convention = f.String("convention", "return_mapping");
+  if (convention != "return_mapping" && convention != "code_aster") {
+    f.Fail("convention", Shown(Json(convention)) +
+                             " is not a friction convention: use \"return_mapping\" (the "
+                             "default) or \"code_aster\" (DIS_CHOC's algorithm)");
+  }
+  law.convention = convention == "code_aster" ? FrictionConvention::kCodeAster
+                                              : FrictionConvention::kReturnMapping;
   return law;
 }
 
