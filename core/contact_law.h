@@ -97,9 +97,13 @@ struct FrictionState {
   // The work the slider dissipated in the latest update (J): the structure's work -F ds less
   // what the spring stored (FrictionForce says how each convention counts it).
   double slid_work_j = 0.0;
-  // code_aster's convention only: the slip and slip rate of the latest update (ftang's OLDVT).
+  // code_aster's convention only: the slip and slip rate of the latest update (ftang's OLDVT),
+  // and the latest sliding force and the slip it slid at (OLDFT, OLDXLO), kept apart as ftang
+  // keeps them, so that a stick starts from that force exactly: s0 = OLDXLO + OLDFT / k_t.
   double slip_m = 0.0;
   double slip_rate_m_s = 0.0;
+  double slide_force_n = 0.0;
+  double slide_slip_m = 0.0;
 };
 
 // The state of a zone whose contact closes at slip s (m), the spring relaxed. In the default
@@ -115,9 +119,13 @@ inline FrictionState ClosingFrictionState(const FrictionLaw& law, double slip_m,
   FrictionState state;
   state.anchor_m = slip_m;
   state.slip_m = slip_m;
+  state.slide_slip_m = slip_m;
   if (law.convention == FrictionConvention::kCodeAster) {
     state.sliding = true;
-    if (at_run_start) state.anchor_m = std::numeric_limits<double>::infinity();
+    if (at_run_start) {
+      state.anchor_m = std::numeric_limits<double>::infinity();
+      state.slide_slip_m = state.anchor_m;
+    }
   }
   return state;
 }
@@ -156,7 +164,7 @@ inline constexpr double kCodeAsterSlidingSpeedMS = 1e-6;
 // sliding, F = -mu N sign(s'), while its slip rate keeps its sign (s' s'_before >= 0) and
 // exceeds kCodeAsterSlidingSpeedMS; the anchor then sits where the spring holds F. Otherwise
 // (a reversal, a slow slip, or a zone that stuck) it sticks from the latest sliding force:
-// F = -k_t (s - s0) - c_t s', i.e. ftang's OLDFT - k_t (s - OLDXLO) - c_t s'. A sticking force
+// F = OLDFT - k_t (s - OLDXLO) - c_t s', i.e. -k_t (s - s0) - c_t s'. A sticking force
 // beyond mu_s N makes it slide at once under -mu N sign(s') (0 when |s'| is within the machine
 // epsilon, as ftang's r8prem), the anchor reset.
 // The slider's work is the structure's work -F (s - s_before) less the change of the spring's
@@ -171,14 +179,16 @@ inline double CodeAsterFrictionForce(const FrictionLaw& law, double normal_force
                              std::abs(slip_rate_m_s) > kCodeAsterSlidingSpeedMS;
   bool slides = keeps_sliding;
   if (!keeps_sliding) {
-    state.force_n =
-        -k_t * (slip_m - state.anchor_m) - law.tangential_damping_n_s_per_m * slip_rate_m_s;
+    state.force_n = state.slide_force_n - k_t * (slip_m - state.slide_slip_m) -
+                    law.tangential_damping_n_s_per_m * slip_rate_m_s;
     slides = std::abs(state.force_n) > law.static_coefficient * normal_force_n;
   }
   if (slides) {
     state.force_n = std::abs(slip_rate_m_s) <= std::numeric_limits<double>::epsilon()
                         ? 0.0
                         : -std::copysign(law.coefficient * normal_force_n, slip_rate_m_s);
+    state.slide_force_n = state.force_n;
+    state.slide_slip_m = slip_m;
     state.anchor_m = slip_m + state.force_n / k_t;
     const double energy = 0.5 * state.force_n * state.force_n / k_t;
     state.slid_work_j = -state.force_n * (slip_m - state.slip_m) - (energy - energy_before);

@@ -174,35 +174,89 @@ TEST(Friction, BlockOnAPlaneSticksThenSlips) {
 
 // A Jenkins element (tangential spring k_t and a Coulomb slider mu N) driven through the slip
 // s = U sin(omega t) dissipates 4 mu N (U - mu N / k_t) per cycle, the area of its
-// parallelogram loop. Sampled at 20000 points per cycle over a steady cycle, the work taken,
-// the integral of -F ds, and the slider's work agree with it within 1e-3.
+// parallelogram loop, in either convention (both stick at a reversal until the spring has
+// unloaded 2 mu N / k_t). Sampled at 20000 points per cycle over a steady cycle, the work taken,
+// the integral of -F ds, and the slider's work agree with it within 1e-3. code_aster's
+// convention is sampled half a step off the reversals: at a sample on a reversal itself, the
+// slip rate within the machine epsilon and the spring at mu N give ftang's zero force at rest,
+// the spring relaxed, and the stick that follows unloads mu N / k_t only.
 TEST(Friction, EnergyDissipatedPerCycleOfAHarmonicSlide) {
-  const FrictionLaw law{0.25, 0.25, 2e5, 0.0};
-  const double normal_n = 40.0, amplitude_m = 3e-4, omega = 2 * kPi * 5.0;
-  const int samples = 20000;
-  const double dt = 2 * kPi / omega / samples;
-  FrictionState state;
-  double force = 0.0, work = 0.0, dissipated = 0.0, power_before = 0.0;
-  auto slip = [&](double t) { return amplitude_m * std::sin(omega * t); };
-  for (int n = 0; n <= 2 * samples; ++n) {
-    const double t = n * dt, rate = amplitude_m * omega * std::cos(omega * t);
-    const double next = FrictionForce(law, normal_n, slip(t), rate, state);
-    const double power = FrictionDissipatedPower(law, state, dt, rate);
-    if (n > samples) {  // The second cycle: steady.
-      work += -0.5 * (force + next) * (slip(t) - slip(t - dt));
-      dissipated += 0.5 * dt * (power_before + power);
+  for (const FrictionConvention convention :
+       {FrictionConvention::kReturnMapping, FrictionConvention::kCodeAster}) {
+    FrictionLaw law{0.25, 0.25, 2e5, 0.0};
+    law.convention = convention;
+    const double normal_n = 40.0, amplitude_m = 3e-4, omega = 2 * kPi * 5.0;
+    const int samples = 20000;
+    const double dt = 2 * kPi / omega / samples;
+    FrictionState state = ClosingFrictionState(law, 0.0, false);
+    double force = 0.0, work = 0.0, dissipated = 0.0, power_before = 0.0;
+    auto slip = [&](double t) { return amplitude_m * std::sin(omega * t); };
+    const double phase = convention == FrictionConvention::kCodeAster ? 0.5 : 0.0;
+    for (int n = 0; n <= 2 * samples; ++n) {
+      const double t = (n + phase) * dt, rate = amplitude_m * omega * std::cos(omega * t);
+      const double next = FrictionForce(law, normal_n, slip(t), rate, state);
+      const double power = FrictionDissipatedPower(law, state, dt, rate);
+      if (n > samples) {  // The second cycle: steady.
+        work += -0.5 * (force + next) * (slip(t) - slip(t - dt));
+        dissipated += 0.5 * dt * (power_before + power);
+      }
+      force = next;
+      power_before = power;
     }
-    force = next;
-    power_before = power;
+    const double limit = law.coefficient * normal_n;
+    const double expected = 4 * limit * (amplitude_m - limit / law.tangential_stiffness_n_per_m);
+    std::printf(
+        "harmonic slide (%s): per cycle, closed form %.8e J; slider's work error %.2e, work "
+        "taken error %.2e\n",
+        convention == FrictionConvention::kCodeAster ? "code_aster" : "return_mapping", expected,
+        dissipated / expected - 1, work / expected - 1);
+    EXPECT_NEAR(work / expected, 1.0, 1e-3);
+    EXPECT_NEAR(dissipated / expected, 1.0, 1e-3);
   }
-  const double limit = law.coefficient * normal_n;
-  const double expected = 4 * limit * (amplitude_m - limit / law.tangential_stiffness_n_per_m);
-  std::printf(
-      "harmonic slide: per cycle, closed form %.8e J; slider's work error %.2e, work "
-      "taken error %.2e\n",
-      expected, dissipated / expected - 1, work / expected - 1);
-  EXPECT_NEAR(work / expected, 1.0, 1e-3);
-  EXPECT_NEAR(dissipated / expected, 1.0, 1e-3);
+}
+
+// code_aster's convention, update by update on a scripted slip, against DIS_CHOC's ftang worked
+// by hand (N = 10 N, mu = 0.2, mu_s = 0.3, k_t = 1e4 N/m): a zone closed at the run's start
+// slides at once (force 0 at rest, then -mu N sign(s')) where the default convention would
+// stick; a reversal sticks from the last sliding force, OLDFT - k_t (s - OLDXLO); a sticking
+// force beyond mu_s N slides under -mu N sign(s'); a slip rate at or below 1e-6 m/s ends a
+// slide; AMOR_TAN adds -c_t s' while sticking.
+TEST(Friction, CodeAsterConventionFollowsDisChocUpdateByUpdate) {
+  FrictionLaw law{0.2, 0.3, 1e4, 0.0};
+  law.convention = FrictionConvention::kCodeAster;
+  const double n = 10.0;
+  FrictionState state = ClosingFrictionState(law, 0.0, true);
+  struct Update {
+    double slip_m, rate_m_s, force_n;
+    bool sliding;
+  };
+  const Update script[] = {
+      {0.0, 0.0, 0.0, true},         // At rest: slides with no force, anchored there.
+      {1e-4, 0.2, -2.0, true},       // Moving: -mu N sign(s'), though k_t s = 1 N < mu_s N.
+      {2e-4, 0.2, -2.0, true},       // Keeps sliding: OLDFT = -2 N, OLDXLO = 2e-4 m.
+      {1.5e-4, -0.1, -1.5, false},   // Reversal: -2 - 1e4 (1.5e-4 - 2e-4).
+      {1e-4, -0.1, -1.0, false},     // Sticks: -2 - 1e4 (1e-4 - 2e-4).
+      {-4e-4, -0.1, 2.0, true},      // -2 + 6 = 4 > mu_s N: slides, +mu N.
+      {-5e-4, -0.1, 2.0, true},      // Keeps sliding: OLDFT = 2 N, OLDXLO = -5e-4 m.
+      {-5.5e-4, -5e-7, 2.5, false},  // Too slow to slide: 2 - 1e4 (-5.5e-4 + 5e-4).
+      {-5.5e-4, -0.1, 2.5, false},   // Stuck stays stuck while within mu_s N.
+  };
+  for (const Update& u : script) {
+    const double force = FrictionForce(law, n, u.slip_m, u.rate_m_s, state);
+    EXPECT_NEAR(force, u.force_n, 1e-12) << "slip " << u.slip_m;
+    EXPECT_EQ(state.sliding, u.sliding) << "slip " << u.slip_m;
+  }
+  // The default convention sticks where code_aster's slid (k_t s = 1 N < mu_s N).
+  FrictionLaw default_law{0.2, 0.3, 1e4, 0.0};
+  FrictionState default_state = ClosingFrictionState(default_law, 0.0, true);
+  FrictionForce(default_law, n, 0.0, 0.0, default_state);
+  EXPECT_NEAR(FrictionForce(default_law, n, 1e-4, 0.2, default_state), -1.0, 1e-12);
+  EXPECT_FALSE(default_state.sliding);
+  // AMOR_TAN: sticking, -c_t s' joins the spring's force.
+  law.tangential_damping_n_s_per_m = 5.0;
+  state = ClosingFrictionState(law, 0.0, false);
+  EXPECT_NEAR(FrictionForce(law, n, 1e-5, 1e-7, state), -1e4 * 1e-5 - 5.0 * 1e-7, 1e-12);
+  EXPECT_FALSE(state.sliding);
 }
 
 // A cantilever bending in both planes, its tip preloaded against a stop along y with friction,

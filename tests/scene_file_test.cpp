@@ -140,7 +140,8 @@ TEST_F(SceneFiles, ContactLawKeysReachTheScene) {
     s["zones"][0]["friction"] = {{"coefficient", 0.2},
                                  {"static_coefficient", 0.25},
                                  {"tangential_stiffness_n_per_m", 3e8},
-                                 {"tangential_damping_n_s_per_m", 10.0}};
+                                 {"tangential_damping_n_s_per_m", 10.0},
+                                 {"convention", "code_aster"}};
     Json hertz = s["zones"][0];
     hertz["name"] = "hertz";
     hertz.erase("stiffness_n_per_m");
@@ -160,6 +161,7 @@ TEST_F(SceneFiles, ContactLawKeysReachTheScene) {
   EXPECT_EQ(scene.zones[0].friction->static_coefficient, 0.25);
   EXPECT_EQ(scene.zones[0].friction->tangential_stiffness_n_per_m, 3e8);
   EXPECT_EQ(scene.zones[0].friction->tangential_damping_n_s_per_m, 10.0);
+  EXPECT_EQ(scene.zones[0].friction->convention, FrictionConvention::kCodeAster);
   ASSERT_TRUE(scene.zones[1].power_law);
   EXPECT_EQ(scene.zones[1].power_law->exponent, 1.5);
   // Its stiffness for the bound: 1.5 k d_b^0.5.
@@ -207,6 +209,13 @@ TEST_F(SceneFiles, ContactLawMistakesAreNamedByTheirJsonPath) {
                                       {"tangential_damping", 5.0}};
        },
        {"zones[0].friction.tangential_damping", "unknown"}},
+      {[&](Json& s) {
+         both(s);
+         s["zones"][0]["friction"] = {{"coefficient", 0.3},
+                                      {"tangential_stiffness_n_per_m", 1e8},
+                                      {"convention", "dis_choc"}};
+       },
+       {"zones[0].friction.convention", "\"dis_choc\"", "\"return_mapping\"", "\"code_aster\""}},
       {[](Json& s) {
          s["zones"][0]["power_law"] = {{"coefficient_n_per_m_exponent", 1e10},
                                        {"bound_penetration_m", 1e-5}};
