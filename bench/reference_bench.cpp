@@ -45,16 +45,17 @@ void Reference(benchmark::State& state) {
 }
 BENCHMARK(Reference)->ArgName("log10_rk")->DenseRange(0, 8)->Unit(benchmark::kMillisecond);
 
-// The solution alone, sampled at its output step: R_k = 1e6 at R_fref = 30 000 and 1e8 at
-// 100 000, over the Fig. 4 window (0.03 s) and over 0.06 s; `check` adds the same problem at
-// R_fref / 3, sampled alike (the work of a reference with a coarser check, as the Fig. 4 grid of
-// docs/performance.md's comparison with a JIT-compiled script computes it). Only SolveReference
-// and SampleHistories, whose signatures are those of earlier versions, so the same source built
-// against an older library times the older method side by side.
+// The solution alone, sampled at its output step: R_k = 1e5 and 1e6 at R_fref = 30 sqrt(R_k)
+// (9 487 and 30 000) and 1e8 at 100 000, over the Fig. 4 window (0.03 s) and over 0.06 s; `check`
+// adds the same problem at R_fref / 3, sampled alike (the work of a reference with a coarser check,
+// as the Fig. 4 grid of docs/performance.md's comparison with a JIT-compiled script computes it).
+// Only SolveReference and SampleHistories, whose signatures are those of earlier versions, so the
+// same source built against an older library times the older method side by side.
 void ReferenceSolutionAlone(benchmark::State& state) {
   CantileverImpact problem;
   problem.r_k = std::pow(10.0, static_cast<double>(state.range(0)));
-  const double r_fref = state.range(0) == 6 ? 30000.0 : 100000.0;
+  const double r_fref =
+      state.range(0) == 8 ? 100000.0 : std::max(2000.0, 30.0 * std::sqrt(problem.r_k));
   const double window_s = 1e-3 * static_cast<double>(state.range(1));
   std::vector<double> truncations = {r_fref};
   if (state.range(2) != 0) truncations.push_back(r_fref / 3.0);
@@ -75,6 +76,8 @@ BENCHMARK(ReferenceSolutionAlone)
     ->ArgNames({"log10_rk", "window_ms", "check"})
     ->Args({6, 30, 0})
     ->Args({8, 30, 0})
+    ->Args({5, 60, 0})
+    ->Args({5, 60, 1})
     ->Args({6, 60, 0})
     ->Args({6, 60, 1})
     ->Unit(benchmark::kMillisecond);

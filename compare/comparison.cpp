@@ -66,6 +66,11 @@ std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance) 
   if (c.r_fref_needed) {
     message += fmt::format("R_fref = {:.3g} would do by the observed order {:.2f}",
                            *c.r_fref_needed, *c.Deciding().order);
+  } else if (c.r_fref_check < c.r_fref) {  // ReferenceCheck::kCoarser: no order, no raise.
+    message += fmt::format(
+        "checked against a coarser truncation alone (scoring.reference.check = \"coarser\"), "
+        "it is not raised: R_fref above {:g} is needed",
+        c.r_fref);
   } else {
     message +=
         fmt::format("the convergence is not regular: R_fref above {:g} is needed", c.r_fref_check);

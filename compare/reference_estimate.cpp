@@ -94,4 +94,28 @@ ReferenceConvergence EstimateReferenceError(const std::vector<const ReferenceLev
   return c;
 }
 
+ReferenceConvergence DifferenceFromCoarser(const ReferenceLevel& coarser,
+                                           const ReferenceLevel& level, double window_s) {
+  auto as_is = [](double difference) {
+    QuantityConvergence q;
+    q.difference = std::abs(difference);
+    q.error = q.difference;
+    return q;
+  };
+  ReferenceConvergence c;
+  c.r_fref = level.r_fref;
+  c.r_fref_check = coarser.r_fref;
+  c.tip =
+      as_is(TipDifference(level.histories.tip_m, coarser.histories.tip_m, level.histories.tip_m));
+  if (level.shocks.empty() != coarser.shocks.empty()) {
+    c.impulse = as_is(1.0);
+  } else if (!level.shocks.empty()) {
+    c.impulse = as_is((FirstImpulse(level) - FirstImpulse(coarser)) / FirstImpulse(level));
+  }
+  c.induced_err = as_is(
+      SpectralError(coarser.histories.tip_m, level.histories.tip_m, 0.0, window_s, PsdOptions{}));
+  c.difference = c.Deciding().error;
+  return c;
+}
+
 }  // namespace shockmap

@@ -48,4 +48,13 @@ void ResampleLevel(ReferenceLevel& level, double window_s, const ShockSegmentati
 ReferenceConvergence EstimateReferenceError(const std::vector<const ReferenceLevel*>& ladder,
                                             double window_s, double tolerance);
 
+// The check of ReferenceCheck::kCoarser: `level` against `coarser` (its truncation / 3, sampled
+// on level's grid), each quantity's error the difference d(R / 3, R) itself (no order, no factor
+// of safety): the tip's max_t |u_R - u_R/3| / max_t |u_R|, the first-shock impulses'
+// |I_R - I_R/3| / I_R (1 where only one has a shock), the Err of u_R/3 scored against u_R.
+// No bound on the reference's error (docs/physics.md §2). The wall_check_s field is left to the
+// caller.
+ReferenceConvergence DifferenceFromCoarser(const ReferenceLevel& coarser,
+                                           const ReferenceLevel& level, double window_s);
+
 }  // namespace shockmap

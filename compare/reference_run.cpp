@@ -5,6 +5,7 @@
 #include <deque>
 #include <stdexcept>
 
+#include "compare/coarser_checked_reference.h"
 #include "compare/reference_estimate.h"
 #include "core/cpu_timer.h"
 #include "reference/reference_cost.h"
@@ -23,6 +24,8 @@ double ReferenceTruncationRule::For(double r_k) const {
 
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
                                  double window_s, const ShockSegmentationOptions& shocks) {
+  if (options.check == ReferenceCheck::kCoarser)
+    return ComputeCoarserCheckedReferenceRun(problem, options, window_s, shocks);
   const CpuTimer timer;
   // The reference on its own output grid; the truncations of its estimate on the same grid:
   // up to two coarser ones (r_fref / 9, r_fref / 3) for the orders, and the finer check.

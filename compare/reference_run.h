@@ -44,7 +44,8 @@ struct ReferenceTruncationRule {
 
 // The reference at options.r_fref, its error estimated against 3 r_fref (and the order from
 // r_fref / 3; docs/physics.md §2); with options.target_error > 0, r_fref is raised threefold
-// until the estimate meets it or the next truncation would exceed the reference budget.
+// until the estimate meets it or the next truncation would exceed the reference budget. With
+// options.check = ReferenceCheck::kCoarser, ComputeCoarserCheckedReferenceRun instead.
 // Throws InputError when the reference cannot represent the problem.
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,
                                  double window_s, const ShockSegmentationOptions& shocks);

@@ -340,6 +340,13 @@ void ParseScoring(const Json& value, const std::string& file, const BeamProperti
                  f.Integer("crossing_samples_per_period", p.crossing_samples_per_period),
                  {4.0, false, 1024.0}));
     p.tolerance = in_range(f, "tolerance", f.Number("tolerance", p.tolerance), {0.0, true, 1.0});
+    const std::string check = f.String("check", ToString(p.check));
+    const auto c = ReferenceCheckFromString(check);
+    if (!c)
+      f.Fail("check", "\"" + check +
+                          "\" is not a reference check: use \"finer\" (the default: 3 R_fref, "
+                          "a bound) or \"coarser\" (R_fref / 3 alone, no bound)");
+    p.check = *c;
     f.Finish();
   }
   if (const Json* spread = r.Get("spread")) {
@@ -500,6 +507,7 @@ ComparisonOptions OptionsOf(const StudySpec& spec, const StudyPoint& point) {
   o.srf_definition = spec.scoring.srf_definition;
   o.reference_tolerance = spec.scoring.reference.tolerance;
   o.reference.target_error = o.reference_tolerance;
+  o.reference.check = spec.scoring.reference.check;
   return o;
 }
 
@@ -516,14 +524,16 @@ std::string PointKey(const StudyPoint& p) {
 
 std::string ReferenceKey(const StudySpec& spec, const StudyPoint& p) {
   const ComparisonOptions o = OptionsOf(spec, p);
-  return Json{{"problem", ProblemJson(spec.problem)},
-              {"rk", p.r_k},
-              {"mass_damping_per_s", p.mass_damping_per_s},
-              {"r_fref", o.reference.r_fref},
-              {"crossing_samples_per_period", o.reference.crossing_samples_per_period},
-              {"window_s", p.window_s},
-              {"rest_duration_t1", o.rest_duration_t1}}
-      .dump();
+  Json key{{"problem", ProblemJson(spec.problem)},
+           {"rk", p.r_k},
+           {"mass_damping_per_s", p.mass_damping_per_s},
+           {"r_fref", o.reference.r_fref},
+           {"crossing_samples_per_period", o.reference.crossing_samples_per_period},
+           {"window_s", p.window_s},
+           {"rest_duration_t1", o.rest_duration_t1}};
+  // Only when not the default, so that the references stored before the key keep theirs.
+  if (o.reference.check != ReferenceCheck::kFiner) key["check"] = ToString(o.reference.check);
+  return key.dump();
 }
 
 std::optional<RepeatedTiming> ShortRunTiming(const ScoringSpec& scoring) {
@@ -548,7 +558,8 @@ std::string SettingsKey(const StudySpec& spec) {
                  {{"r_fref_min", s.reference.r_fref_min},
                   {"r_fref_per_sqrt_rk", s.reference.r_fref_per_sqrt_rk},
                   {"crossing_samples_per_period", s.reference.crossing_samples_per_period},
-                  {"tolerance", s.reference.tolerance}}}}}}
+                  {"tolerance", s.reference.tolerance},
+                  {"check", ToString(s.reference.check)}}}}}}
       .dump();
 }
 

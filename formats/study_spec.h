@@ -30,6 +30,9 @@ struct ReferencePolicy {
   // Score nothing against a reference whose estimated error exceeds this; the truncation is
   // raised threefold until it does not, within the reference budget.
   double tolerance = 0.02;
+  // What the reference is checked against ("check"): finer truncations (the default, a bound) or
+  // R_fref / 3 alone, as a script does (ReferenceCheck, reference/reference_convergence.h).
+  ReferenceCheck check = ReferenceCheck::kFiner;
 
   double RFref(double r_k) const;
 };

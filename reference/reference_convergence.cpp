@@ -6,6 +6,16 @@
 
 namespace shockmap {
 
+std::string ToString(ReferenceCheck check) {
+  return check == ReferenceCheck::kCoarser ? "coarser" : "finer";
+}
+
+std::optional<ReferenceCheck> ReferenceCheckFromString(std::string_view name) {
+  if (name == "finer") return ReferenceCheck::kFiner;
+  if (name == "coarser") return ReferenceCheck::kCoarser;
+  return std::nullopt;
+}
+
 double FinerTruncation(double r_fref) { return kReferenceCheckRatio * r_fref; }
 
 double CoarserTruncation(double r_fref) { return std::max(1.0, r_fref / kReferenceCheckRatio); }

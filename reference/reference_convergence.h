@@ -4,9 +4,29 @@
 // convergence index with the order observed over three truncations.
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace shockmap {
+
+// What a reference is checked against (scoring.reference.check).
+enum class ReferenceCheck {
+  // kFiner (default): 3 R_fref, with R_fref / 3 and R_fref / 9 for the observed order; each
+  // quantity's error is its grid convergence index (below), a bound, and R_fref is raised until
+  // it meets the tolerance.
+  kFiner,
+  // kCoarser: R_fref / 3 alone, as a script would check it; the estimate is the difference
+  // d(R / 3, R) itself, with no order and no factor of safety, and R_fref is not raised. That
+  // difference measures the coarser truncation's error rather than the reference's: it is no
+  // bound (docs/physics.md §2).
+  kCoarser,
+};
+
+// "finer", "coarser".
+std::string ToString(ReferenceCheck check);
+// Inverse of ToString; std::nullopt for any other string.
+std::optional<ReferenceCheck> ReferenceCheckFromString(std::string_view name);
 
 // Truncations are compared three times apart.
 inline constexpr double kReferenceCheckRatio = 3.0;

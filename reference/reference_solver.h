@@ -12,6 +12,7 @@
 
 #include "core/cantilever_impact.h"
 #include "core/uniform_signal.h"
+#include "reference/reference_convergence.h"
 
 namespace shockmap {
 
@@ -28,6 +29,8 @@ struct ReferenceOptions {
   // estimated error (ReferenceConvergence::difference) is at most this, within the budget of
   // reference/reference_cost.h.
   double target_error = 0.0;
+  // What ComputeReferenceRun checks the reference against (ReferenceCheck).
+  ReferenceCheck check = ReferenceCheck::kFiner;
 
   bool IsValid(std::string* error) const;
 };

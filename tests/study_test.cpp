@@ -119,6 +119,10 @@ INSTANTIATE_TEST_SUITE_P(
             "UnknownSrfDefinition",
             R"({"name": "x", "scoring": {"shocks": {"srf_definition": "first"}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
             "scoring.shocks.srf_definition"},
+        BadSpec{
+            "UnknownReferenceCheck",
+            R"({"name": "x", "scoring": {"reference": {"check": "both"}}, "grids": [{"rk": 1, "rftrunc": 10}]})",
+            "scoring.reference.check"},
         BadSpec{"ModesAxisReversed",
                 R"({"name": "x", "grids": [{"rk": 1, "rftrunc": {"modes": [5, 2]}}]})",
                 "grids[0].rftrunc.modes"},
@@ -217,6 +221,25 @@ TEST(StudySpec, ScoringSettingsEnterTheSettingsKeyByTheirValue) {
   EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
 }
 
+// The check enters a reference's key only when it is not the default, so that references
+// stored before the setting keep their keys; a coarser-checked reference is never taken for a
+// finer-checked one.
+TEST(StudySpec, ACoarserCheckedReferenceHasItsOwnKey) {
+  auto spec = [](const std::string& reference) {
+    return ParseStudySpec(Json::parse(R"({"name": "x", "scoring": {"reference": {)" + reference +
+                                      R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})"),
+                          "x.json");
+  };
+  const StudySpec plain = spec("");
+  const StudySpec finer = spec(R"("check": "finer")");
+  const StudySpec coarser = spec(R"("check": "coarser")");
+  EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(finer, finer.points[0]));
+  EXPECT_EQ(ReferenceKey(plain, plain.points[0]).find("check"), std::string::npos);
+  EXPECT_NE(ReferenceKey(plain, plain.points[0]), ReferenceKey(coarser, coarser.points[0]));
+  EXPECT_EQ(OptionsOf(coarser, coarser.points[0]).reference.check, ReferenceCheck::kCoarser);
+  EXPECT_EQ(OptionsOf(plain, plain.points[0]).reference.check, ReferenceCheck::kFiner);
+}
+
 // Each scoring and reference setting is lifelong and named by its key in the study file, with
 // the stored and the given value; thresholds and grid axes are not.
 TEST(StudySpec, AChangedLifelongSettingIsNamedByItsFileKey) {
@@ -235,6 +258,7 @@ TEST(StudySpec, AChangedLifelongSettingIsNamedByItsFileKey) {
       {R"("window_s": 0.03, "shocks": {"rest_duration_t1": 1})", "scoring.shocks.rest_duration_t1"},
       {R"("window_s": 0.03, "reference": {"r_fref_min": 1000})", "scoring.reference.r_fref_min"},
       {R"("window_s": 0.03, "reference": {"tolerance": 0.05})", "scoring.reference.tolerance"},
+      {R"("window_s": 0.03, "reference": {"check": "coarser"})", "scoring.reference.check"},
   };
   for (const auto& [scoring, setting] : changes) {
     const auto change = FirstChangedSetting(plain, key(scoring));
