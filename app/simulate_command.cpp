@@ -1,6 +1,7 @@
 #include "app/simulate_command.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <iostream>
@@ -29,6 +30,7 @@ struct SimulateFlags {
 // "10 modes per plane" when every beam keeps as many, "8 to 10 modes per beam and plane"
 // otherwise.
 std::string ModesKept(const std::vector<int>& modes_per_beam) {
+  if (modes_per_beam.empty()) return "no beam";
   const auto [fewest, most] = std::minmax_element(modes_per_beam.begin(), modes_per_beam.end());
   if (*fewest == *most) return Counted(*most, "mode") + " per plane";
   return fmt::format("{} to {} per beam and plane", *fewest, Counted(*most, "mode"));
@@ -45,6 +47,14 @@ void PrintHuman(const Scene& scene, const SceneRun& run) {
              Counted(run.coordinates, "modal coordinate"), ModesKept(run.modes_per_beam),
              scene.solver.r_ftrunc,
              Counted(run.distinct_bases, "distinct modal basis", "distinct modal bases"));
+  if (!scene.structures.empty()) {
+    std::vector<std::string> structures;
+    for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+      structures.push_back(fmt::format("{} ({})", scene.structures[i].name,
+                                       Counted(run.modes_per_structure[i], "mode")));
+    }
+    fmt::print("  structures        {}\n", fmt::join(structures, ", "));
+  }
   fmt::print("  dt used           {:.4g} s (asked {:.4g} s), {}\n", s.dt_used_s, s.dt_requested_s,
              Counted(s.steps_taken, "step"));
   fmt::print("  stability bounds  paper 1/(4 f_trunc) = {:.4g} s, sharp 2/omega_max = {:.4g} s\n",

@@ -74,6 +74,7 @@ SceneRun RunScene(const Scene& scene, std::function<void(double t_s)> on_progres
   run.coordinates = model.system->Size();
   run.distinct_bases = model.distinct_bases;
   run.modes_per_beam = model.modes_per_beam;
+  run.modes_per_structure = model.modes_per_structure;
   run.bounds = model.bounds;
 
   const SceneOutputs& out = scene.outputs;

@@ -20,6 +20,7 @@ struct SceneRun {
   int coordinates = 0;     // Modal coordinates integrated (all beams, both planes).
   int distinct_bases = 0;  // Modal bases computed (identical beams share one).
   std::vector<int> modes_per_beam;
+  std::vector<int> modes_per_structure;
   StabilityBounds bounds;
   double build_wall_s = 0.0;  // Assembling the FE models and modal bases.
 

@@ -28,6 +28,10 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
   std::vector<std::array<std::tuple<int, int, int>, 2>> sides;
   for (const ZoneTerm& z : zones) {
     std::array<std::tuple<int, int, int>, 2> side{std::tuple{-1, -1, -1}, std::tuple{-1, -1, -1}};
+    if (z.InFrame()) {
+      sides.push_back(side);
+      continue;
+    }
     side[0] = {z.a_y, z.a_z, drafts[{z.a_y, z.a_z}].Add(z.phi_a)};
     if (z.b_y >= 0 || z.b_z >= 0) side[1] = {z.b_y, z.b_z, drafts[{z.b_y, z.b_z}].Add(z.phi_b)};
     sides.push_back(side);
@@ -66,14 +70,25 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
     slots += b.width;
     blocks_.push_back(b);
   }
+  first_frame_slot_ = slots;
+  // One frame station per side of each zone in its own frame (the base for a stop).
+  auto add_frame = [&](const std::vector<FrameSegment>& segments) {
+    if (segments.empty()) return 0;
+    frames_.push_back(segments);
+    slot_row_.push_back(-1);
+    slot_y_.push_back(-1);
+    slot_z_.push_back(-1);
+    slot_modes_.push_back(0);
+    return slots++;
+  };
   for (std::size_t i = 0; i < zones.size(); ++i) {
     const ZoneTerm& z = zones[i];
     auto slot_of = [&](const std::tuple<int, int, int>& s) {
       const auto [y, zz, station] = s;
       return station < 0 ? 0 : first_slot.at({y, zz}) + station;
     };
-    slot_a_.push_back(slot_of(sides[i][0]));
-    slot_b_.push_back(slot_of(sides[i][1]));
+    slot_a_.push_back(z.InFrame() ? add_frame(z.frame_a) : slot_of(sides[i][0]));
+    slot_b_.push_back(z.InFrame() ? add_frame(z.frame_b) : slot_of(sides[i][1]));
     normal_y_.push_back(z.normal_y);
     normal_z_.push_back(z.normal_z);
     gap_.push_back(z.gap_m);
@@ -97,6 +112,32 @@ ContactStations::ContactStations(const std::vector<ZoneTerm>& zones) {
 
 void ContactStations::Evaluate(const Eigen::VectorXd& x, Slots& out) const {
   EvaluateStations(blocks_, shapes_.data(), x.data(), out.yz.data());
+  if (!frames_.empty()) EvaluateFrames(x, out);
+}
+
+std::array<double, 2> ContactStations::FrameAt(int slot, const Eigen::VectorXd& state) const {
+  std::array<double, 2> u{0.0, 0.0};
+  for (const FrameSegment& s : Frame(slot)) {
+    const int n = static_cast<int>(s.normal.size());
+    u[0] += StationDot(s.normal.data(), state.data() + s.offset, n);
+    u[1] += StationDot(s.tangent.data(), state.data() + s.offset, n);
+  }
+  return u;
+}
+
+void ContactStations::EvaluateFrames(const Eigen::VectorXd& x, Slots& out) const {
+  for (int slot = first_frame_slot_; slot < static_cast<int>(slot_row_.size()); ++slot) {
+    const auto u = FrameAt(slot, x);
+    out.yz[2 * slot] = u[0];
+    out.yz[2 * slot + 1] = u[1];
+  }
+}
+
+void ContactStations::AddFrameForce(int slot, double force_n, double force_t, double* a) const {
+  for (const FrameSegment& s : Frame(slot)) {
+    for (std::size_t i = 0; i < s.normal.size(); ++i)
+      a[s.offset + static_cast<int>(i)] += force_n * s.normal[i] + force_t * s.tangent[i];
+  }
 }
 
 // n . (u_a - u_b), in the order the zone-by-zone sum used (the base reads zero).
@@ -108,6 +149,7 @@ double ContactStations::Normal(int zone, const Slots& u) const {
 
 std::array<double, 2> ContactStations::SlotAt(int slot, const Eigen::VectorXd& state) const {
   if (slot == 0) return {0.0, 0.0};
+  if (IsFrame(slot)) return FrameAt(slot, state);
   const double* row = rows_.data() + slot_row_[slot];
   const int n = slot_modes_[slot];
   return {StationDot(row, state.data() + slot_y_[slot], n),
@@ -135,7 +177,8 @@ void ContactStations::VelocityAt(int slot, const Eigen::VectorXd& v) {
 }
 
 void ContactStations::Push(int slot, double force_y, double force_z) {
-  if (slot != 0) station_forces_.push_back({slot, force_y, force_z});
+  if (slot == 0) return;
+  (IsFrame(slot) ? frame_forces_ : station_forces_).push_back({slot, force_y, force_z});
 }
 
 void ContactStations::AddForces(double t_s, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
@@ -184,6 +227,7 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
   double* const force = force_.data();
   const int* const closed = closed_.data();
   station_forces_.clear();
+  frame_forces_.clear();
   for (int j = 0; j < n_closed; ++j) {
     const int i = closed[j], sa = slot_a[i], sb = slot_b[i];
     if (c[i] != 0.0) {
@@ -207,6 +251,7 @@ void ContactStations::ProjectClosed(int n_closed, const Eigen::VectorXd& v, Eige
   const StationLayout layout{rows_.data(), slot_row_.data(), slot_y_.data(), slot_z_.data(),
                              slot_modes_.data()};
   AddStationForces(station_forces_, layout, a.data());
+  for (const StationForce& f : frame_forces_) AddFrameForce(f.slot, f.y, f.z, a.data());
 }
 
 double ContactStations::RubbingForce(int zone, double f, const Eigen::VectorXd& v) {
@@ -318,6 +363,10 @@ void ContactStations::AddClosedStiffness(const Eigen::VectorXd& x,
     gz[slot_b_[i]] -= ft * normal_y_[i];
   }
   for (std::size_t s = 1; s < gy.size(); ++s) {
+    if (IsFrame(static_cast<int>(s))) {
+      AddFrameForce(static_cast<int>(s), gy[s], gz[s], y.data());
+      continue;
+    }
     if (slot_row_[s] < 0) continue;
     const double* row = rows_.data() + slot_row_[s];
     for (int i = 0; i < slot_modes_[s]; ++i) {
@@ -337,6 +386,15 @@ Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z) {
   put(z.a_z, dir_z, z.phi_a);
   put(z.b_y, -dir_y, z.phi_b);
   put(z.b_z, -dir_z, z.phi_b);
+  auto put_frame = [&](double scale, const std::vector<FrameSegment>& side) {
+    for (const FrameSegment& s : side) {
+      for (std::size_t i = 0; i < s.normal.size(); ++i) {
+        r[s.offset + static_cast<int>(i)] += scale * (dir_y * s.normal[i] + dir_z * s.tangent[i]);
+      }
+    }
+  };
+  put_frame(1.0, z.frame_a);
+  put_frame(-1.0, z.frame_b);
   return r;
 }
 

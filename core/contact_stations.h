@@ -33,24 +33,43 @@
 
 namespace shockmap {
 
+// Part of a zone side given in the zone's own frame: over the coordinates from `offset`, the
+// rows whose products with them are the side's motion along the zone's normal and along its
+// tangent (1/sqrt(kg)).
+struct FrameSegment {
+  int offset = 0;
+  std::vector<double> normal, tangent;
+};
+
 // One zone in modal coordinates. Offsets are the first coordinate of each beam's block in y
 // and z (-1 when absent: planar scenes, or a stop instead of beam b).
+//
+// A zone at a structure's node is given in its own frame instead (frame_a not empty): each side
+// a sum of segments (a structure's block, or a beam's y and z blocks weighted by the normal's
+// and the tangent's components), the offsets and shapes above unused (-1, empty), frame_b empty
+// against a stop, and the normal (1, 0): a station's y is then the side's normal motion and its
+// z its tangential one, so that every law reads the zone as it reads a beam's.
 struct ZoneTerm {
   int a_y = -1, a_z = -1, b_y = -1, b_z = -1;
   std::vector<double> phi_a, phi_b;  // Mode shapes at the zone's height (1/sqrt(kg)).
+  std::vector<FrameSegment> frame_a, frame_b;
   double normal_y = 1.0, normal_z = 0.0;
   double gap_m = 0.0;
-  ContactLaw law;  // Friction only where both sides bend in y and z.
+  ContactLaw law;  // Friction only where both sides bend in y and z, or in the zone's frame.
+
+  bool InFrame() const { return !frame_a.empty(); }
 };
 
 // The zone's row along a direction (dir_y, dir_z): the normal for (n_y, n_z), the tangent for
-// (-n_z, n_y), in a state of n coordinates: d . (u_a - u_b) = row . x.
+// (-n_z, n_y), in a state of n coordinates: d . (u_a - u_b) = row . x (in the zone's frame for a
+// zone in its own frame).
 Eigen::VectorXd ZoneRow(const ZoneTerm& z, int n, double dir_y, double dir_z);
 
 class ContactStations {
  public:
   // Stations are the distinct (block, mode shape) pairs of the zones' two sides, grouped by
-  // beam so that a beam's stations are evaluated together. Zones keep their order.
+  // beam so that a beam's stations are evaluated together, then one frame station per side of
+  // each zone in its own frame. Zones keep their order.
   explicit ContactStations(const std::vector<ZoneTerm>& zones);
 
   // The step's contact forces: every station's displacement at x, every zone's normal force
@@ -129,12 +148,25 @@ class ContactStations {
   // Queues the force (y, z) of one zone side on its slot (nothing for the base): the queue is
   // added to the modes at the end of ProjectClosed, in order.
   void Push(int slot, double force_y, double force_z);
+  // The frame stations: the slots from first_frame_slot_ on, each (normal, tangent) from its
+  // segments.
+  bool IsFrame(int slot) const { return slot >= first_frame_slot_; }
+  const std::vector<FrameSegment>& Frame(int slot) const {
+    return frames_[static_cast<std::size_t>(slot - first_frame_slot_)];
+  }
+  std::array<double, 2> FrameAt(int slot, const Eigen::VectorXd& state) const;
+  void EvaluateFrames(const Eigen::VectorXd& x, Slots& out) const;
+  // a += f_n (normal rows) + f_t (tangent rows) of a frame station.
+  void AddFrameForce(int slot, double force_n, double force_t, double* a) const;
 
   std::vector<StationBlock> blocks_;
   std::vector<double> shapes_;  // Mode-major matrices, shared by blocks of equal shapes.
   std::vector<double> rows_;    // Per slot, its mode shape (modes contiguous).
   std::vector<int> slot_row_;   // Offset of each slot's row in rows_ (-1: base, padding).
   std::vector<int> slot_y_, slot_z_, slot_modes_;
+  int first_frame_slot_ = 0;
+  std::vector<std::vector<FrameSegment>> frames_;
+  std::vector<StationForce> frame_forces_;  // The step's forces on frame stations, in order.
   // Zones, structure of arrays.
   std::vector<int> slot_a_, slot_b_;
   std::vector<double> normal_y_, normal_z_, gap_, stiffness_, damping_;

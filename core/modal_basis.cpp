@@ -146,24 +146,30 @@ namespace shockmap {
 
 ModalBasis WithStaticCorrection(const FeBeamModel& model, const ModalBasis& basis,
                                 const std::vector<Eigen::VectorXd>& force_rows) {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(model.stiffness);
+  return WithStaticCorrection(model.stiffness, model.mass, basis, force_rows);
+}
+
+ModalBasis WithStaticCorrection(const Eigen::SparseMatrix<double>& stiffness,
+                                const Eigen::SparseMatrix<double>& mass, const ModalBasis& basis,
+                                const std::vector<Eigen::VectorXd>& force_rows) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(stiffness);
   std::vector<Eigen::VectorXd> columns;
   for (int j = 0; j < basis.NumModes(); ++j) columns.push_back(basis.shapes.col(j));
   for (const Eigen::VectorXd& row : force_rows) {
     Eigen::VectorXd psi = k.solve(row);
-    const double initial = std::sqrt(psi.dot(model.mass * psi));
+    const double initial = std::sqrt(psi.dot(mass * psi));
     // Mass-orthogonal to every column so far (twice: classical Gram-Schmidt loses it once).
     for (int pass = 0; pass < 2; ++pass) {
-      for (const Eigen::VectorXd& c : columns) psi -= c.dot(model.mass * psi) * c;
+      for (const Eigen::VectorXd& c : columns) psi -= c.dot(mass * psi) * c;
     }
-    const double left = std::sqrt(psi.dot(model.mass * psi));
+    const double left = std::sqrt(psi.dot(mass * psi));
     if (!(left > 1e-8 * initial)) continue;
     columns.push_back(psi / left);
   }
-  Eigen::MatrixXd t(model.Size(), static_cast<Eigen::Index>(columns.size()));
+  Eigen::MatrixXd t(stiffness.rows(), static_cast<Eigen::Index>(columns.size()));
   for (std::size_t j = 0; j < columns.size(); ++j) t.col(static_cast<Eigen::Index>(j)) = columns[j];
   // t is mass-orthonormal, so the reduced problem is a standard symmetric one.
-  const Eigen::MatrixXd reduced = t.transpose() * (model.stiffness * t);
+  const Eigen::MatrixXd reduced = t.transpose() * (stiffness * t);
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(0.5 * (reduced + reduced.transpose()));
   ModalBasis enriched;
   enriched.omega_rad_s = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt();

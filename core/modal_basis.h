@@ -75,5 +75,9 @@ std::string EigenBudgetExcess(const std::vector<int>& unknowns, int solves_each)
 // Precondition: the beam is supported (K nonsingular).
 ModalBasis WithStaticCorrection(const FeBeamModel& model, const ModalBasis& basis,
                                 const std::vector<Eigen::VectorXd>& force_rows);
+// The same for any model of stiffness K (nonsingular) and mass M (an FE structure's).
+ModalBasis WithStaticCorrection(const Eigen::SparseMatrix<double>& stiffness,
+                                const Eigen::SparseMatrix<double>& mass, const ModalBasis& basis,
+                                const std::vector<Eigen::VectorXd>& force_rows);
 
 }  // namespace shockmap

@@ -3,6 +3,8 @@
 // outputs requested (docs/physics.md §5, docs/architecture.md). Plain description structs; parsing
 // lives outside core (studies/scene_file), building lives in core/scene_model.
 
+#include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +37,18 @@ struct SceneBeam {
   std::optional<double> f_trunc_hz, r_ftrunc;
 };
 
+struct FeStructure;
+
+// A structure from an FE code (core/fe_structure.h): its matrices as read, and its own
+// truncation overriding the solver's, as a beam's. x runs along the beams' axis (heights), y
+// and z across it, so that a beam's deflection (u_y, u_z) at a height is the motion (0, u_y, u_z)
+// in the structures' frame.
+struct SceneStructure {
+  std::string name;
+  std::shared_ptr<const FeStructure> fe;
+  std::optional<double> f_trunc_hz, r_ftrunc;
+};
+
 // A power law F = k d^p for a zone's normal force (Hertz: p = 3/2).
 struct ScenePowerLaw {
   double coefficient = 0.0;  // k, N/m^p.
@@ -49,12 +63,20 @@ struct ScenePowerLaw {
 // F = k d + c d' (never pulling), or k d^p + c d' with a power law, pushes a along -n and b
 // along +n. With friction (scenes bending in both planes), a tangential force along
 // t = (-n_z, n_y) acts on a and its reaction on b (docs/physics.md §7).
+//
+// A side may instead be a structure's node (structure_a or structure_b >= 0, the side's beam
+// index -1): the zone then has a normal in 3D (normal_xyz), and its tangent for friction is
+// t = x × n normalized (t = (0, -n_z, n_y) when n lies across the axis, as a beam zone's), or
+// y × n when n lies along x. height_m is the beam side's height, or the node's x.
 struct SceneZone {
   std::string name;
   int beam_a = 0;
   int beam_b = -1;
+  int structure_a = -1, node_a = 0;
+  int structure_b = -1, node_b = 0;
   double height_m = 0.0;
-  double normal_y = 1.0, normal_z = 0.0;  // Unit vector from a towards b (or the stop).
+  double normal_y = 1.0, normal_z = 0.0;            // Unit vector from a towards b (or the stop).
+  std::optional<std::array<double, 3>> normal_xyz;  // Zones with a node: (x, y, z), unit.
   double gap_m = 0.0;
   // The linear law's k; with a power law, its tangent stiffness at the bound penetration (what
   // the stability bound gives the zone).
@@ -66,6 +88,8 @@ struct SceneZone {
 
   // The zone's laws as the models evaluate them.
   ContactLaw Law() const;
+  bool AtNode() const { return normal_xyz.has_value(); }
+  bool AgainstStop() const { return beam_b < 0 && structure_b < 0; }
 };
 
 struct ModalDampingEffect {
@@ -96,8 +120,13 @@ struct StaticForceEffect {
 // Initial state of one beam in one direction, any combination of: its `mode` (1-based) scaled so
 // that its largest deflection is `tip_m`; the static deflection (in the retained basis) under a
 // force `static_force_n` at `height_m`; a uniform velocity.
+//
+// At a structure's node (structure >= 0, beam unused): the static deflection under a force
+// `static_force_n` at `node` along `direction_xyz`, and a uniform velocity along direction_xyz.
 struct InitialStateEffect {
   int beam = 0;
+  int structure = -1, node = 0;
+  std::array<double, 3> direction_xyz{0.0, 1.0, 0.0};
   int direction = 0;  // 0: y, 1: z.
   int mode = 1;
   double tip_m = 0.0;
@@ -109,17 +138,22 @@ struct InitialStateEffect {
 struct SceneSolver {
   double r_ftrunc = 300.0;           // Of each beam's own first elastic frequency, unless
   std::optional<double> f_trunc_hz;  // an absolute truncation is given (beams may override).
-  // Static correction modes (ENRI_STAT) at the heights of every beam's zones.
+  // Static correction modes (ENRI_STAT) at the heights of every beam's zones and along the
+  // normals of every structure's zones at its nodes.
   bool static_correction = false;
   TimeStepRequest dt;
   double end_time_s = 0.0;
 };
 
+// A beam's deflection at a height, or a structure's node's motion along a unit direction
+// (structure >= 0, beam unused).
 struct ObservedPoint {
   std::string name;
   int beam = 0;
   double height_m = 0.0;
   int direction = 0;  // 0: y, 1: z.
+  int structure = -1, node = 0;
+  std::array<double, 3> direction_xyz{0.0, 1.0, 0.0};
 };
 
 // Nothing unrequested is recorded.
@@ -143,6 +177,7 @@ struct Scene {
   std::string description;
   BendingPlanes planes = BendingPlanes::kPlanar;
   std::vector<SceneBeam> beams;
+  std::vector<SceneStructure> structures;  // Their coordinates follow the beams'.
   std::vector<SceneZone> zones;
   std::optional<ModalDampingEffect> modal_damping;
   std::optional<BaseMotionEffect> base_motion;
@@ -153,6 +188,9 @@ struct Scene {
   SceneOutputs outputs;
 
   int Directions() const { return planes == BendingPlanes::kBoth ? 2 : 1; }
+  // The name of a zone's side a or b: its beam's, its structure's with the node
+  // ("plate#12"), or "stop".
+  std::string SideName(const SceneZone& z, bool side_b) const;
 };
 
 }  // namespace shockmap

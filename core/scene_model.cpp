@@ -13,6 +13,7 @@
 #include "core/modal_basis.h"
 #include "core/modal_basis_cache.h"
 #include "core/preload_equilibrium.h"
+#include "core/scene_structure_modes.h"
 
 namespace shockmap {
 namespace {
@@ -40,7 +41,9 @@ struct Truncation {
   std::optional<double> hz;
   double ratio = 0.0;
 
-  static Truncation Of(const SceneBeam& b, const SceneSolver& solver) {
+  // A beam's or a structure's.
+  template <typename Part>
+  static Truncation Of(const Part& b, const SceneSolver& solver) {
     if (b.f_trunc_hz) return {b.f_trunc_hz, 0.0};
     if (b.r_ftrunc) return {std::nullopt, *b.r_ftrunc};
     if (solver.f_trunc_hz) return {solver.f_trunc_hz, 0.0};
@@ -113,7 +116,7 @@ std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
   std::vector<std::vector<double>> heights(scene.beams.size());
   if (!scene.solver.static_correction) return heights;
   for (const SceneZone& z : scene.zones) {
-    heights[z.beam_a].push_back(z.height_m);
+    if (z.beam_a >= 0) heights[z.beam_a].push_back(z.height_m);
     if (z.beam_b >= 0) heights[z.beam_b].push_back(z.height_m);
   }
   for (auto& h : heights) {
@@ -123,13 +126,30 @@ std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
   return heights;
 }
 
+// The distinct nodes of the zones at each structure's nodes, when static correction is asked.
+std::vector<std::vector<int>> StaticNodes(const Scene& scene) {
+  std::vector<std::vector<int>> nodes(scene.structures.size());
+  if (!scene.solver.static_correction) return nodes;
+  for (const SceneZone& z : scene.zones) {
+    if (z.structure_a >= 0) nodes[z.structure_a].push_back(z.node_a);
+    if (z.structure_b >= 0) nodes[z.structure_b].push_back(z.node_b);
+  }
+  for (auto& n : nodes) {
+    std::sort(n.begin(), n.end());
+    n.erase(std::unique(n.begin(), n.end()), n.end());
+  }
+  return nodes;
+}
+
 // Where each beam's modes sit in the scene's coordinates: beam b's block in direction d (y, z)
-// starts at offset[b] + d * modes[b]->N().
+// starts at offset[b] + d * modes[b]->N(); each structure's one block follows the beams'.
 struct Layout {
   int dirs = 1;
   int n = 0;
   std::vector<std::shared_ptr<const BeamModes>> modes;
   std::vector<int> offset;
+  std::vector<SceneStructureModes> structures;
+  std::vector<int> structure_offset;
   int distinct_bases = 0;
 
   // -1 when the direction is absent (planar scenes).
@@ -159,6 +179,16 @@ Layout LayOut(const Scene& scene) {
     layout.n += layout.dirs * slot->N();
   }
   layout.distinct_bases = static_cast<int>(cache.size());
+  const auto static_nodes = StaticNodes(scene);
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    const SceneStructure& s = scene.structures[i];
+    const Truncation truncation = Truncation::Of(s, scene.solver);
+    layout.structures.push_back(
+        MakeStructureModes(s.fe, truncation.hz, truncation.ratio, static_nodes[i]));
+    layout.structure_offset.push_back(layout.n);
+    layout.n += layout.structures.back().N();
+  }
+  layout.distinct_bases += static_cast<int>(scene.structures.size());
   return layout;
 }
 
@@ -169,6 +199,10 @@ Eigen::VectorXd Frequencies(const Layout& layout) {
       omega.segment(layout.Block(b, d), layout.modes[b]->N()) = layout.modes[b]->basis.omega_rad_s;
     }
   }
+  for (std::size_t s = 0; s < layout.structures.size(); ++s) {
+    omega.segment(layout.structure_offset[s], layout.structures[s].N()) =
+        layout.structures[s].basis.omega_rad_s;
+  }
   return omega;
 }
 
@@ -177,6 +211,9 @@ double HighestTruncationHz(const Layout& layout) {
   double f_trunc_max = 0.0;
   for (const auto& m : layout.modes) {
     f_trunc_max = std::max({f_trunc_max, m->f_trunc_hz, m->basis.HighestFrequencyHz()});
+  }
+  for (const auto& s : layout.structures) {
+    f_trunc_max = std::max({f_trunc_max, s.f_trunc_hz, s.basis.HighestFrequencyHz()});
   }
   return f_trunc_max;
 }
@@ -198,12 +235,68 @@ std::optional<Eigen::VectorXd> ModalDamping(const Scene& scene, const Layout& la
       }
     }
   }
+  for (std::size_t s = 0; s < layout.structures.size(); ++s) {
+    for (int i = 0; i < layout.structures[s].N(); ++i) {
+      const double xi = md.ratios[std::min<std::size_t>(i, md.ratios.size() - 1)];
+      const int k = layout.structure_offset[s] + i;
+      damping[k] = 2.0 * xi * omega[k];
+    }
+  }
   return damping;
+}
+
+std::vector<double> Values(const Eigen::VectorXd& v) { return {v.data(), v.data() + v.size()}; }
+
+// The tangent of a zone at a node: x × n normalized, or y × n when n lies along x.
+std::array<double, 3> NodeZoneTangent(const std::array<double, 3>& n) {
+  std::array<double, 3> t{0.0, -n[2], n[1]};
+  if (std::hypot(t[1], t[2]) < 1e-12) t = {n[2], 0.0, -n[0]};
+  const double norm = std::hypot(t[0], t[1], t[2]);
+  for (double& c : t) c /= norm;
+  return t;
+}
+
+// One side of a zone at a node in the zone's frame: a structure's node, or a beam at the zone's
+// height (its y and z blocks weighted by the normal's and the tangent's y and z components).
+std::vector<FrameSegment> FrameSide(const Layout& layout, int beam, int structure, int node,
+                                    double height_m, const std::array<double, 3>& n,
+                                    const std::array<double, 3>& t) {
+  if (structure >= 0) {
+    const SceneStructureModes& m = layout.structures[structure];
+    return {
+        {layout.structure_offset[structure], Values(m.AtNode(node, n)), Values(m.AtNode(node, t))}};
+  }
+  if (beam < 0) return {};
+  const std::vector<double> phi = layout.modes[beam]->At(height_m);
+  std::vector<FrameSegment> side;
+  for (int d = 0; d < layout.dirs; ++d) {
+    FrameSegment s{layout.Block(beam, d), phi, phi};
+    for (double& v : s.normal) v *= n[1 + d];
+    for (double& v : s.tangent) v *= t[1 + d];
+    side.push_back(std::move(s));
+  }
+  return side;
+}
+
+// A zone with a side at a structure's node, in its own frame (core/contact_stations.h).
+ZoneTerm NodeZoneTerm(const SceneZone& z, const Layout& layout) {
+  ZoneTerm t;
+  const std::array<double, 3> n = *z.normal_xyz, tangent = NodeZoneTangent(n);
+  t.frame_a = FrameSide(layout, z.beam_a, z.structure_a, z.node_a, z.height_m, n, tangent);
+  t.frame_b = FrameSide(layout, z.beam_b, z.structure_b, z.node_b, z.height_m, n, tangent);
+  t.normal_y = 1.0, t.normal_z = 0.0;
+  t.gap_m = z.gap_m;
+  t.law = z.Law();
+  return t;
 }
 
 std::vector<ZoneTerm> ZoneTerms(const Scene& scene, const Layout& layout) {
   std::vector<ZoneTerm> zones;
   for (const auto& z : scene.zones) {
+    if (z.AtNode()) {
+      zones.push_back(NodeZoneTerm(z, layout));
+      continue;
+    }
     ZoneTerm t;
     t.a_y = layout.Block(z.beam_a, 0);
     t.a_z = layout.Block(z.beam_a, 1);
@@ -237,6 +330,12 @@ std::vector<TimeLoad> TimeLoads(const Scene& scene, const Layout& layout) {
         base.shape.segment(layout.Block(b, d), layout.modes[b]->N()) =
             dir[d] * layout.modes[b]->participation;
       }
+    }
+    // -phi^T M r a(t), r the support's unit motion along (0, dir_y, dir_z) on every
+    // translational DOF (one rigid support).
+    for (std::size_t s = 0; s < layout.structures.size(); ++s) {
+      base.shape.segment(layout.structure_offset[s], layout.structures[s].N()) =
+          layout.structures[s].Participation({0.0, dir[0], dir[1]});
     }
     loads.push_back(std::move(base));
   }
@@ -273,12 +372,33 @@ double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
   return tip_m / m.At(height)[mode - 1];
 }
 
+// A structure's initial state: q_i = phi_i(node, d) F / omega_i^2, the static deflection under F
+// along d at the node in the retained basis (exact there with static correction), and a
+// uniform velocity along d.
+void AddStructureInitialState(const InitialStateEffect& s, const Layout& layout,
+                              SceneModel& model) {
+  const SceneStructureModes& m = layout.structures[s.structure];
+  const int offset = layout.structure_offset[s.structure];
+  if (s.static_force_n != 0.0) {
+    const Eigen::VectorXd phi = m.AtNode(s.node, s.direction_xyz);
+    model.x0.segment(offset, m.N()) +=
+        (s.static_force_n * phi.array() / m.basis.omega_rad_s.array().square()).matrix();
+  }
+  if (s.velocity_m_s != 0.0) {
+    model.v0.segment(offset, m.N()) += s.velocity_m_s * m.Participation(s.direction_xyz);
+  }
+}
+
 // The declared initial state, over the static equilibrium of the preloaded zones if any.
 void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model) {
   model.x0 = HasPreloadedZones(*model.system) ? PreloadEquilibrium(*model.system)
                                               : Eigen::VectorXd::Zero(layout.n);
   model.v0 = Eigen::VectorXd::Zero(layout.n);
   for (const auto& s : scene.initial_state) {
+    if (s.structure >= 0) {
+      AddStructureInitialState(s, layout, model);
+      continue;
+    }
     const BeamModes& m = *layout.modes[s.beam];
     const int offset = layout.Block(s.beam, s.direction);
     if (s.tip_m != 0.0 && s.mode - 1 < m.N()) {
@@ -303,6 +423,12 @@ void SetInitialState(const Scene& scene, const Layout& layout, SceneModel& model
 void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
   for (const auto& o : scene.outputs.displacements) {
     Eigen::VectorXd row = Eigen::VectorXd::Zero(layout.n);
+    if (o.structure >= 0) {
+      const SceneStructureModes& m = layout.structures[o.structure];
+      row.segment(layout.structure_offset[o.structure], m.N()) = m.AtNode(o.node, o.direction_xyz);
+      model.observed_rows.push_back(std::move(row));
+      continue;
+    }
     const auto phi = layout.modes[o.beam]->At(o.height_m);
     const int offset = layout.Block(o.beam, o.direction);
     for (std::size_t i = 0; i < phi.size(); ++i) row[offset + static_cast<int>(i)] = phi[i];
@@ -312,6 +438,10 @@ void SetRows(const Scene& scene, const Layout& layout, SceneModel& model) {
     Eigen::VectorXd row = Eigen::VectorXd::Zero(layout.n);
     for (std::size_t b = 0; b < layout.modes.size(); ++b)
       row.segment(layout.Block(b, d), layout.modes[b]->N()) = layout.modes[b]->participation;
+    for (std::size_t s = 0; s < layout.structures.size(); ++s) {
+      row.segment(layout.structure_offset[s], layout.structures[s].N()) =
+          layout.structures[s].Participation({0.0, d == 0 ? 1.0 : 0.0, d == 1 ? 1.0 : 0.0});
+    }
     model.momentum_rows.push_back(std::move(row));
   }
 }
@@ -358,6 +488,7 @@ SceneModel BuildSceneModel(const Scene& scene) {
   SceneModel model;
   model.beam_offset = layout.offset;
   for (const auto& m : layout.modes) model.modes_per_beam.push_back(m->N());
+  for (const auto& s : layout.structures) model.modes_per_structure.push_back(s.N());
   model.distinct_bases = layout.distinct_bases;
 
   const Eigen::VectorXd omega = Frequencies(layout);

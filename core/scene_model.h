@@ -1,6 +1,7 @@
 #pragma once
 // Builds the modal model of a scene: one FE model and modal basis per distinct beam (shared by
-// identical beams), the zones in modal coordinates, the declared loads, the initial state, the
+// identical beams), one modal block per structure after the beams' (block-diagonal, paper eq.
+// 7), the zones in modal coordinates, the declared loads, the initial state, the
 // observed points and both stability bounds.
 
 #include <memory>
@@ -22,6 +23,7 @@ struct SceneModel {
   std::vector<Eigen::VectorXd> momentum_rows;
   std::vector<int> beam_offset;     // First coordinate of each beam (y, then z).
   std::vector<int> modes_per_beam;  // Per direction.
+  std::vector<int> modes_per_structure;
   int distinct_bases = 0;
   StabilityBounds bounds;  // paper: 1/(4 max f_trunc); sharp: every zone closed.
 };

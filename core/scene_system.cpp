@@ -49,7 +49,7 @@ bool SceneModalSystem::SolveAcceleration(double t_s, double beta_dt2, double gam
 
 TangentialSample SceneModalSystem::Tangential(int contact, const Eigen::VectorXd& v) const {
   const ZoneTerm& z = zones_[static_cast<std::size_t>(contact)];
-  if (z.a_y < 0 || z.a_z < 0) return {};
+  if (!z.InFrame() && (z.a_y < 0 || z.a_z < 0)) return {};
   const auto [w_y, w_z] = contacts_.RelativeVelocity(contact, v);
   return {std::abs(-z.normal_z * w_y + z.normal_y * w_z),
           std::abs(contacts_.TangentialForce(contact)), contacts_.Sticks(contact)};

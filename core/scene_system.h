@@ -34,8 +34,9 @@ class SceneModalSystem final : public SecondOrderSystem {
                          Eigen::VectorXd& a) override;
   std::span<const double> LastContactForces() const override { return contacts_.Forces(); }
   // |t . (v_a - v_b)| at the zone's height, t = (-n_z, n_y) the in-plane tangent, for zones
-  // whose beam a bends in both planes (NaN otherwise: planar scenes), and the zone's friction
-  // force and state in the last solve.
+  // whose beam a bends in both planes or that lie in their own frame (a structure's node: t its
+  // tangent), NaN otherwise (planar scenes), and the zone's friction force and state in the last
+  // solve.
   TangentialSample Tangential(int contact, const Eigen::VectorXd& v) const override;
   bool HasFriction(int contact) const override { return contacts_.HasFriction(contact); }
   // n . (v_a - v_b) at the zone's height.

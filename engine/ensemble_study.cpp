@@ -17,8 +17,8 @@ std::string ZonesJson(const Scene& scene) {
   Json zones = Json::array();
   for (const SceneZone& z : scene.zones) {
     zones.push_back({{"name", z.name},
-                     {"beam_a", scene.beams[z.beam_a].name},
-                     {"beam_b", z.beam_b >= 0 ? scene.beams[z.beam_b].name : "stop"},
+                     {"beam_a", scene.SideName(z, false)},
+                     {"beam_b", scene.SideName(z, true)},
                      {"height_m", z.height_m},
                      {"y_m", z.y_m},
                      {"z_m", z.z_m}});

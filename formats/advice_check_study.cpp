@@ -90,6 +90,13 @@ Json RungSetting(const Json& scene_json, const Scene& scene, const SceneAdvice& 
                       "advised {:.4g}) exceeds the largest allowed, {:g}",
                       b.name, r_ftrunc, factor, b.r_ftrunc, kMaxRFtrunc));
     }
+    // A structure's mesh is its FE code's: only its truncation climbs the ladder.
+    const auto structure = std::ranges::find(scene.structures, b.name, &SceneStructure::name);
+    if (structure != scene.structures.end()) {
+      setting[fmt::format("structures[{}].r_ftrunc", structure - scene.structures.begin())] =
+          std::round(r_ftrunc * 1e3) / 1e3;
+      continue;
+    }
     const std::string path = BeamPath(scene_json, b.name, "r_ftrunc");
     const int elements =
         std::max(BeamNamed(scene, b.name).n_elements, DefaultElementCount(r_ftrunc));

@@ -10,7 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -18,10 +20,12 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "core/fe_structure.h"
 #include "core/modal_basis.h"
 #include "core/transient_run.h"
 #include "formats/acceleration_csv.h"
 #include "formats/json_reader.h"
+#include "formats/structure_files.h"
 
 namespace shockmap {
 namespace {
@@ -611,6 +615,33 @@ void LoadAccelerationCsv(JsonObjectReader& r, const SceneFileAccess& access,
   ParseAccelerationCsv(in, csv.string(), base);
 }
 
+// A structure's matrices: Matrix Market files with the CSV tables of its DOFs and nodes, or
+// CalculiX's matrix storage (jobname.sti, .mas, .dof) with the deck for the nodes' coordinates;
+// files resolved as a scene's data files.
+std::shared_ptr<const FeStructure> ReadStructureFiles(JsonObjectReader& s,
+                                                      const SceneFileAccess& access) {
+  if (s.Has("matrix_market") == s.Has("calculix")) {
+    s.Fail("matrix_market",
+           "give \"matrix_market\": {\"stiffness\", \"mass\", \"dofs\", \"nodes\"} or "
+           "\"calculix\": {\"jobname\", \"deck\"}, one of them");
+  }
+  FeStructure fe;
+  if (const Json* mm = s.Get("matrix_market")) {
+    JsonObjectReader f(*mm, s.File(), s.PathOf("matrix_market"));
+    const auto stiffness = DataFile(f, "stiffness", access), mass = DataFile(f, "mass", access);
+    const auto dofs = DataFile(f, "dofs", access), nodes = DataFile(f, "nodes", access);
+    f.Finish();
+    fe =
+        ReadMatrixMarketStructure(stiffness.string(), mass.string(), dofs.string(), nodes.string());
+  } else {
+    JsonObjectReader f(*s.Get("calculix"), s.File(), s.PathOf("calculix"));
+    const auto jobname = DataFile(f, "jobname", access), deck = DataFile(f, "deck", access);
+    f.Finish();
+    fe = ReadCalculixMatrixStorage(jobname.string(), deck.string());
+  }
+  return std::make_shared<const FeStructure>(std::move(fe));
+}
+
 int BeamIndex(const Scene& scene, JsonObjectReader& r, const std::string& key) {
   const std::string name = r.RequiredString(key);
   for (std::size_t i = 0; i < scene.beams.size(); ++i) {
@@ -658,6 +689,85 @@ std::string UniqueName(JsonObjectReader& r, const std::string& key, const char* 
   return name;
 }
 
+// structures[]: each one's files and truncation; names unique among beams and structures.
+void ParseStructures(JsonObjectReader& r, const SceneFileAccess& access, Scene& scene,
+                     NamesGiven& names) {
+  EachItem(r, "structures", [&](JsonObjectReader& s) {
+    SceneStructure structure;
+    structure.name = UniqueName(s, "name", "structure", names);
+    if (s.Has("r_ftrunc") && s.Has("f_trunc_hz"))
+      s.Fail("f_trunc_hz", "give r_ftrunc or f_trunc_hz, not both");
+    if (s.Has("r_ftrunc")) structure.r_ftrunc = InRange(s, "r_ftrunc", 0.0, 1.0, 1e5);
+    if (s.Has("f_trunc_hz")) structure.f_trunc_hz = Positive(s, "f_trunc_hz", 1e7);
+    auto fe = ReadStructureFiles(s, access);
+    std::const_pointer_cast<FeStructure>(fe)->name = structure.name;
+    structure.fe = std::move(fe);
+    scene.structures.push_back(std::move(structure));
+  });
+}
+
+std::optional<int> StructureNamed(const Scene& scene, const std::string& name) {
+  for (std::size_t i = 0; i < scene.structures.size(); ++i) {
+    if (scene.structures[i].name == name) return static_cast<int>(i);
+  }
+  return std::nullopt;
+}
+
+int StructureIndex(const Scene& scene, JsonObjectReader& r, const std::string& key) {
+  const std::string name = r.RequiredString(key);
+  if (const auto i = StructureNamed(scene, name)) return *i;
+  r.Fail(key, "no structure named \"" + name + "\"");
+}
+
+constexpr std::array<DofComponent, 3> kTranslations{DofComponent::kUx, DofComponent::kUy,
+                                                    DofComponent::kUz};
+
+// A node of a structure at `key`: in its node table, with a free translational DOF.
+int NodeOf(JsonObjectReader& r, const std::string& key, const SceneStructure& s) {
+  if (!r.Has(key)) r.Fail(key, "required: a node of structure \"" + s.name + "\"");
+  const int node = r.Integer(key, 0);
+  if (!s.fe->node_coordinates_m.contains(node)) {
+    r.Fail(key, "node " + std::to_string(node) + " is not in the node table of structure \"" +
+                    s.name + "\"");
+  }
+  if (std::ranges::none_of(kTranslations,
+                           [&](DofComponent c) { return s.fe->DofIndex(node, c).has_value(); })) {
+    r.Fail(key, "node " + std::to_string(node) + " of structure \"" + s.name +
+                    "\" has no free translational DOF (ux, uy, uz): its supports hold it");
+  }
+  return node;
+}
+
+// A unit vector [x, y, z] at `key` (required): refused when zero or not of unit length.
+std::array<double, 3> UnitVector3(JsonObjectReader& r, const std::string& key) {
+  const Json* v = r.Get(key);
+  if (v == nullptr) r.Fail(key, "required: a unit vector [x, y, z]");
+  if (!v->is_array() || v->size() != 3) r.Fail(key, "expected [x, y, z], got " + Shown(*v));
+  std::array<double, 3> n{};
+  for (int i = 0; i < 3; ++i)
+    n[i] = NumberAt((*v)[i], r.File(), r.PathOf(key) + "[" + std::to_string(i) + "]");
+  const double norm = std::hypot(n[0], n[1], n[2]);
+  if (norm < 1e-12) r.Fail(key, "a direction must not be zero, got " + Shown(*v));
+  if (std::abs(norm - 1.0) > 1e-6) {
+    r.Fail(key, Shown(*v) + " has length " + Shown(Json(norm)) +
+                    ": give a unit vector (length 1 within 1e-6)");
+  }
+  return n;
+}
+
+// Refused when the direction `n` (at `key`) moves no free DOF of the node.
+void CheckFreeAlong(JsonObjectReader& r, const std::string& key, const SceneStructure& s, int node,
+                    const std::array<double, 3>& n) {
+  double free = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    if (s.fe->DofIndex(node, kTranslations[c])) free += n[c] * n[c];
+  }
+  if (free < 1e-12) {
+    r.Fail(key, "node " + std::to_string(node) + " of structure \"" + s.name +
+                    "\" has no free DOF along this direction: its supports hold it there");
+  }
+}
+
 void ParseHeader(JsonObjectReader& r, Scene& scene) {
   scene.name = r.RequiredName("name");
   scene.description = r.Text("description", "");
@@ -667,9 +777,9 @@ void ParseHeader(JsonObjectReader& r, Scene& scene) {
   scene.planes = planes == "both" ? BendingPlanes::kBoth : BendingPlanes::kPlanar;
 }
 
-// beams[], then the bundle's beams and zones: every beam name once.
-void ParseBeams(JsonObjectReader& r, Scene& scene) {
-  NamesGiven names;
+// beams[], then the bundle's beams and zones: every beam name once (`names`: the names of the
+// beams and structures so far).
+void ParseBeams(JsonObjectReader& r, Scene& scene, NamesGiven& names) {
   EachItem(r, "beams", [&](JsonObjectReader& b) {
     SceneBeam beam = ParseBeamProperties(b);
     beam.name = UniqueName(b, "name", "beam", names);
@@ -683,8 +793,6 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
       r.Fail("bundle", "generates a beam named \"" + scene.beams[i].name +
                            "\", as one in \"beams\" is named; beam names must be unique");
   }
-  if (scene.beams.empty())
-    r.Fail("beams", "a scene needs at least one beam (\"beams\" or \"bundle\")");
   if (scene.beams.size() > static_cast<std::size_t>(kMaxBeams))
     r.Fail("beams", "lists " + std::to_string(scene.beams.size()) +
                         " beams: " + BeamLimit(static_cast<double>(scene.beams.size()), 0.0));
@@ -692,11 +800,62 @@ void ParseBeams(JsonObjectReader& r, Scene& scene) {
     r.Fail("beams", "the scene's distinct beams: " + excess);
 }
 
+// A zone with a side at a structure's node (docs/scenes.md, "Structures from an FE code"): the
+// other side, its unit normal in 3D, the beam sides' height (else the node's x), position and
+// laws; friction in any scene (its tangent lies in 3D).
+SceneZone ParseNodeZone(JsonObjectReader& z, const Scene& scene, SceneZone zone,
+                        const std::string& against) {
+  if (against != "stop") {
+    if (const auto s = StructureNamed(scene, against)) {
+      zone.structure_b = *s;
+      zone.node_b = NodeOf(z, "against_node", scene.structures[*s]);
+      if (zone.structure_b == zone.structure_a && zone.node_b == zone.node_a)
+        z.Fail("against_node", "a node cannot hit itself");
+    } else {
+      zone.beam_b = -1;
+      for (std::size_t i = 0; i < scene.beams.size(); ++i) {
+        if (scene.beams[i].name == against) zone.beam_b = static_cast<int>(i);
+      }
+      if (zone.beam_b < 0)
+        z.Fail("against", "no beam or structure named \"" + against + "\" (or use \"stop\")");
+    }
+  }
+  zone.normal_xyz = UnitVector3(z, "normal");
+  if (zone.structure_a >= 0)
+    CheckFreeAlong(z, "normal", scene.structures[zone.structure_a], zone.node_a, *zone.normal_xyz);
+  if (zone.structure_b >= 0)
+    CheckFreeAlong(z, "normal", scene.structures[zone.structure_b], zone.node_b, *zone.normal_xyz);
+  std::pair<double, double> at{0.0, 0.0};
+  if (zone.beam_a >= 0 || zone.beam_b >= 0) {
+    const int beam = zone.beam_a >= 0 ? zone.beam_a : zone.beam_b;
+    zone.height_m = Height(scene, z, beam);
+    at = {scene.beams[beam].y_m, scene.beams[beam].z_m};
+  }
+  if (zone.structure_a >= 0) {
+    const Eigen::Vector3d& node =
+        scene.structures[zone.structure_a].fe->node_coordinates_m.at(zone.node_a);
+    if (zone.beam_b < 0) zone.height_m = node.x();
+    at = {node.y(), node.z()};
+  }
+  std::tie(zone.y_m, zone.z_m) = Vector2(z, "position_m", at, false);
+  zone.gap_m = InRange(z, "gap_m", 0.0, -1.0, 1.0);
+  ParseZoneLaws(z, BendingPlanes::kBoth).ApplyTo(zone);
+  return zone;
+}
+
 SceneZone ParseZone(JsonObjectReader& z, const Scene& scene, NamesGiven& names) {
   SceneZone zone;
   zone.name = UniqueName(z, "name", "zone", names);
-  zone.beam_a = BeamIndex(scene, z, "beam");
   const std::string against = z.String("against", "stop");
+  if (z.Has("structure")) {
+    if (z.Has("beam")) z.Fail("beam", "give \"beam\" or \"structure\", not both");
+    zone.beam_a = -1;
+    zone.structure_a = StructureIndex(scene, z, "structure");
+    zone.node_a = NodeOf(z, "node", scene.structures[zone.structure_a]);
+    return ParseNodeZone(z, scene, zone, against);
+  }
+  zone.beam_a = BeamIndex(scene, z, "beam");
+  if (StructureNamed(scene, against)) return ParseNodeZone(z, scene, zone, against);
   if (against != "stop") {
     zone.beam_b = -1;
     for (std::size_t i = 0; i < scene.beams.size(); ++i) {
@@ -775,7 +934,25 @@ StaticForceEffect ParseStaticForce(JsonObjectReader& f, const Scene& scene) {
   return force;
 }
 
+// A structure's initial state: a static force at a node and a uniform velocity, both along a
+// unit direction.
+InitialStateEffect ParseStructureInitialState(JsonObjectReader& s, const Scene& scene) {
+  InitialStateEffect init;
+  init.beam = -1;
+  init.structure = StructureIndex(scene, s, "structure");
+  const SceneStructure& structure = scene.structures[init.structure];
+  init.direction_xyz = UnitVector3(s, "direction");
+  init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
+  init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+  if (init.static_force_n != 0.0) {
+    init.node = NodeOf(s, "node", structure);
+    CheckFreeAlong(s, "direction", structure, init.node, init.direction_xyz);
+  }
+  return init;
+}
+
 InitialStateEffect ParseInitialState(JsonObjectReader& s, const Scene& scene) {
+  if (s.Has("structure")) return ParseStructureInitialState(s, scene);
   InitialStateEffect init;
   init.beam = BeamIndex(scene, s, "beam");
   init.direction = Direction(s, "direction");
@@ -849,6 +1026,13 @@ void ParseSolver(JsonObjectReader& r, Scene& scene) {
 ObservedPoint ParseDisplacement(JsonObjectReader& d, const Scene& scene, NamesGiven& names) {
   ObservedPoint p;
   p.name = UniqueName(d, "name", "output", names);
+  if (d.Has("structure")) {
+    p.beam = -1;
+    p.structure = StructureIndex(scene, d, "structure");
+    p.node = NodeOf(d, "node", scene.structures[p.structure]);
+    p.direction_xyz = UnitVector3(d, "direction");
+    return p;
+  }
   p.beam = BeamIndex(scene, d, "beam");
   p.height_m = Height(scene, d, p.beam);
   p.direction = Direction(d, "direction");
@@ -1004,7 +1188,13 @@ Scene ParseScene(const nlohmann::json& json, const std::string& path,
   Scene scene;
   JsonObjectReader r(json, path, "");
   ParseHeader(r, scene);
-  ParseBeams(r, scene);
+  NamesGiven names;
+  ParseStructures(r, access, scene, names);
+  ParseBeams(r, scene, names);
+  if (scene.beams.empty() && scene.structures.empty()) {
+    r.Fail("beams",
+           "a scene needs at least one beam (\"beams\" or \"bundle\") or one \"structures\"");
+  }
   ParseZones(r, scene);
   if (const Json* effects = r.Get("effects")) ParseEffects(*effects, path, access, scene);
   ParseSolver(r, scene);

@@ -13,10 +13,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string BeamName(const Scene& scene, int beam) {
-  return beam >= 0 ? scene.beams[beam].name : std::string("stop");
-}
-
 // How a zone's wear work rate was measured: at every step from its two sides' tangential speed
 // (no friction), or only while it slides (friction).
 const char* WearBasis(const ImpactStatistics& s) {
@@ -31,8 +27,8 @@ Json WearVolumeJson(const WearLaw& law, const ImpactStatistics& s) {
 Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
   const SceneZone& z = scene.zones[i];
   Json zone = {{"name", z.name},
-               {"beam", BeamName(scene, z.beam_a)},
-               {"against", BeamName(scene, z.beam_b)},
+               {"beam", scene.SideName(z, false)},
+               {"against", scene.SideName(z, true)},
                {"height_m", z.height_m},
                {"position_m", {z.y_m, z.z_m}}};
   if (!run.max_contact_force_n.empty()) zone["max_force_n"] = run.max_contact_force_n[i];
@@ -158,6 +154,7 @@ Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
                {"build_wall_s", run.build_wall_s},
                {"wall_s", s.wall_s},
                {"cpu_s", s.cpu_s}};
+  if (!scene.structures.empty()) json["structures"] = scene.structures.size();
   if (scene.wear) {
     json["wear"] = {{"coefficient_m2_per_n", scene.wear->coefficient_m2_per_n},
                     {"life_s", scene.wear->life_s}};
@@ -237,8 +234,8 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
         scene.zones.size(),
         [&](std::ostream& out, std::size_t i) {
           const SceneZone& z = scene.zones[i];
-          out << CsvField(z.name) << ',' << CsvField(BeamName(scene, z.beam_a)) << ','
-              << CsvField(BeamName(scene, z.beam_b)) << ',' << z.height_m << ',' << z.y_m << ','
+          out << CsvField(z.name) << ',' << CsvField(scene.SideName(z, false)) << ','
+              << CsvField(scene.SideName(z, true)) << ',' << z.height_m << ',' << z.y_m << ','
               << z.z_m << ',' << run.max_contact_force_n[i] << '\n';
         },
         written);

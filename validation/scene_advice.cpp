@@ -5,22 +5,29 @@
 
 #include <algorithm>
 #include <optional>
+#include <tuple>
 
 #include "core/input_error.h"
 #include "core/scene_model.h"
+#include "core/structure_modes.h"
 
 namespace shockmap {
 namespace {
 
-double SceneTruncation(const Scene& scene, const SceneBeam& beam) {
-  return beam.r_ftrunc.value_or(scene.solver.r_ftrunc);
+// A beam's or a structure's.
+template <typename Part>
+double SceneTruncation(const Scene& scene, const Part& part) {
+  return part.r_ftrunc.value_or(scene.solver.r_ftrunc);
 }
 
-// The scene with each beam at its advised truncation, for its time-step bound.
+// The scene with each beam and structure at its advised truncation, for its time-step bound.
 Scene AtAdvisedTruncations(Scene scene, const std::vector<BeamAdvice>& beams) {
   for (const BeamAdvice& b : beams) {
     for (SceneBeam& beam : scene.beams) {
       if (beam.name == b.name) beam.r_ftrunc = b.r_ftrunc, beam.f_trunc_hz.reset();
+    }
+    for (SceneStructure& structure : scene.structures) {
+      if (structure.name == b.name) structure.r_ftrunc = b.r_ftrunc, structure.f_trunc_hz.reset();
     }
   }
   scene.outputs = SceneOutputs{};
@@ -63,6 +70,33 @@ ValidityCriteria UnscoredAroundZones(ValidityCriteria criteria, double r_k_min, 
   return criteria;
 }
 
+// The local stiffness of one side of a zone (N/m): a beam's bending stiffness at the zone's
+// height, across its axis (along a zone's 3D normal n, K / (n_y^2 + n_z^2): the beam does not
+// move along its axis); a structure's node's along n: 1 / (n^T K^-1 n) (the paper's K_bend).
+double SideStiffness(const Scene& scene, const SceneZone& z, bool side_b) {
+  const int structure = side_b ? z.structure_b : z.structure_a;
+  if (structure >= 0) {
+    const auto& n = *z.normal_xyz;
+    return LocalStiffness(*scene.structures[static_cast<std::size_t>(structure)].fe,
+                          side_b ? z.node_b : z.node_a, Eigen::Vector3d(n[0], n[1], n[2]));
+  }
+  const int beam = side_b ? z.beam_b : z.beam_a;
+  const double k_bend =
+      LocalBendingStiffness(scene.beams[static_cast<std::size_t>(beam)], z.height_m);
+  if (!z.AtNode()) return k_bend;
+  const auto& n = *z.normal_xyz;
+  return k_bend / std::max(n[1] * n[1] + n[2] * n[2], 1e-300);
+}
+
+// The name and truncation of part `i`: the beams, then the structures.
+std::pair<std::string, double> PartOf(const Scene& scene, std::size_t i) {
+  if (i < scene.beams.size()) {
+    return {scene.beams[i].name, SceneTruncation(scene, scene.beams[i])};
+  }
+  const SceneStructure& s = scene.structures[i - scene.beams.size()];
+  return {s.name, SceneTruncation(scene, s)};
+}
+
 }  // namespace
 
 SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
@@ -72,24 +106,31 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
         "bound to advise from; derive them from a study over a wider range of R_k");
   }
   SceneAdvice a;
-  std::vector<BeamAdvice> beams(scene.beams.size());
+  // The beams', then the structures'.
+  std::vector<BeamAdvice> beams(scene.beams.size() + scene.structures.size());
+  auto part = [&](const SceneZone& z, bool side_b) {
+    const int structure = side_b ? z.structure_b : z.structure_a;
+    const int beam = side_b ? z.beam_b : z.beam_a;
+    return structure >= 0 ? static_cast<int>(scene.beams.size()) + structure : beam;
+  };
   double r_k_min = 0.0, r_k_max = 0.0;
   for (const SceneZone& z : scene.zones) {
     ZoneAdvice zone;
     zone.name = z.name;
     zone.height_m = z.height_m;
     zone.stiffness_n_per_m = z.stiffness_n_per_m;
-    for (const int b : {z.beam_a, z.beam_b}) {
+    for (const bool side_b : {false, true}) {
+      const int b = part(z, side_b);
       if (b < 0) continue;
-      const double k_local = LocalBendingStiffness(scene.beams[b], z.height_m);
+      const double k_local = SideStiffness(scene, z, side_b);
       const double r_k = z.stiffness_n_per_m / k_local;
       const double r_ftrunc = *criteria.RequiredRFtrunc(r_k);
-      if (b == z.beam_a) {
+      if (!side_b) {
         zone.k_local_a = k_local, zone.r_k_a = r_k, zone.r_ftrunc_a = r_ftrunc;
       } else {
         zone.k_local_b = k_local, zone.r_k_b = r_k, zone.r_ftrunc_b = r_ftrunc;
       }
-      r_k_min = a.zones.empty() && b == z.beam_a ? r_k : std::min(r_k_min, r_k);
+      r_k_min = a.zones.empty() && !side_b ? r_k : std::min(r_k_min, r_k);
       r_k_max = std::max(r_k_max, r_k);
       BeamAdvice& beam = beams[b];
       ++beam.zones;
@@ -100,8 +141,7 @@ SceneAdvice AdviseScene(const Scene& scene, const ValidityCriteria& criteria) {
   }
   for (std::size_t b = 0; b < beams.size(); ++b) {
     if (beams[b].zones == 0) continue;
-    beams[b].name = scene.beams[b].name;
-    beams[b].r_ftrunc_scene = SceneTruncation(scene, scene.beams[b]);
+    std::tie(beams[b].name, beams[b].r_ftrunc_scene) = PartOf(scene, b);
     a.beams.push_back(beams[b]);
   }
   a.dt_ratio = *criteria.dt_ratio_max;

@@ -45,9 +45,10 @@ struct ZoneExtent {
 
 // A zone between a pin of a generated bundle and its wrapper (formats/zone_family.h).
 bool AgainstWrapper(const Scene& scene, const SceneZone& z) {
-  return z.beam_b >= 0 && FamilyOfZone(scene.beams[static_cast<std::size_t>(z.beam_a)].name,
-                                       scene.beams[static_cast<std::size_t>(z.beam_b)].name) ==
-                              ZoneFamily::kPinWrapper;
+  return z.beam_a >= 0 && z.beam_b >= 0 &&
+         FamilyOfZone(scene.beams[static_cast<std::size_t>(z.beam_a)].name,
+                      scene.beams[static_cast<std::size_t>(z.beam_b)].name) ==
+             ZoneFamily::kPinWrapper;
 }
 
 // Columns: y (mm), z (mm), height (m), the quantity (a force in N, a wear volume in m^3), 1
@@ -62,7 +63,7 @@ ZoneExtent WriteZones(const Scene& scene, const std::vector<double>& max_force_n
   ZoneExtent e;
   for (std::size_t i : ByForce(max_force_n)) {
     const SceneZone& z = scene.zones[i];
-    const bool between = z.beam_b >= 0, wrapper = AgainstWrapper(scene, z);
+    const bool between = !z.AgainstStop(), wrapper = AgainstWrapper(scene, z);
     zones << fmt::format("{} {} {} {} {} {}\n", 1e3 * z.y_m, 1e3 * z.z_m, z.height_m,
                          max_force_n[i], between ? 1 : 0, wrapper ? 1 : 0);
     e.y_min = std::min(e.y_min, 1e3 * z.y_m), e.y_max = std::max(e.y_max, 1e3 * z.y_m);
@@ -104,8 +105,10 @@ SectionBox WriteBeams(const Scene& scene, const std::filesystem::path& beams_fil
   std::set<int> in_section;  // Beams meeting another beam in a zone: the bundle's cross-section.
   SectionBox box;
   for (const SceneZone& z : scene.zones) {
-    if (z.beam_b < 0) continue;
-    in_section.insert({z.beam_a, z.beam_b});
+    if (z.AgainstStop()) continue;
+    for (const int beam : {z.beam_a, z.beam_b}) {
+      if (beam >= 0) in_section.insert(beam);
+    }
     box.Add(1e3 * z.y_m, 1e3 * z.z_m);
   }
   for (int i : in_section) {
