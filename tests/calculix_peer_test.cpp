@@ -1,0 +1,135 @@
+// CalculiX (ccx) as an independent FE code on the same structures as shockmap (docs/fidelity.md
+// "Structures from an FE code"). Every test skips, saying why, where ccx is absent.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "core/beam_properties.h"
+#include "tests/calculix_decks.h"
+#include "tests/calculix_runner.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap::testing {
+namespace {
+
+#define SKIP_WITHOUT_CALCULIX() \
+  if (!FindCalculix()) GTEST_SKIP() << CalculixMissingMessage()
+
+class CalculixPeer : public TempDirTest {
+ protected:
+  // Writes `deck` as dir/jobname.inp, runs ccx on it, fails the test unless ccx completed.
+  CalculixRun Run(const std::string& jobname, const std::string& deck) {
+    WriteDeck(dir_ / (jobname + ".inp"), deck);
+    const CalculixRun run = RunCalculix(dir_, jobname);
+    EXPECT_TRUE(run.Completed()) << run.Describe();
+    return run;
+  }
+  std::filesystem::path Dat(const std::string& jobname) const { return dir_ / (jobname + ".dat"); }
+};
+
+// ccx 2.20 refuses a support on a node set the deck does not define with "*ERROR" and exit
+// code 201 (measured).
+TEST_F(CalculixPeer, RunnerReportsADeckCcxRefusesWithItsLog) {
+  SKIP_WITHOUT_CALCULIX();
+  std::string deck = StaticDeck(ClampedPlate({}, 2, 2), {0.0, 0.0, 1.0});
+  deck.replace(deck.find("CLAMP, 1, 3"), 5, "NOSUCHSET");
+  WriteDeck(dir_ / "bad.inp", deck);
+  const CalculixRun run = RunCalculix(dir_, "bad");
+  EXPECT_EQ(run.status, CalculixRun::Status::kFailed) << run.Describe();
+  EXPECT_NE(run.exit_code, 0) << run.Describe();
+  EXPECT_NE(run.Describe().find("NOSUCHSET"), std::string::npos) << run.Describe();
+  EXPECT_EQ(run.log, dir_ / "bad.log");
+}
+
+TEST_F(CalculixPeer, RunnerSaysWhenCcxIsMissing) {
+  ::setenv("SHOCKMAP_CCX", (dir_ / "no_ccx_here").c_str(), 1);
+  const CalculixRun run = RunCalculix(dir_, "any");
+  ::unsetenv("SHOCKMAP_CCX");
+  EXPECT_EQ(run.status, CalculixRun::Status::kNotFound);
+  EXPECT_NE(run.Describe().find("apt-get install calculix-ccx"), std::string::npos)
+      << run.Describe();
+}
+
+TEST_F(CalculixPeer, RunnerKillsAJobPastItsTimeLimit) {
+  SKIP_WITHOUT_CALCULIX();
+  // A plate's transient of 20000 steps runs for minutes; the limit stops it after one second.
+  TransientStep step;
+  step.dt_s = 1e-6;
+  step.end_s = 0.02;
+  step.stop.normal = {0.0, 0.0, -1.0};
+  WriteDeck(dir_ / "long.inp", TransientDeck(ClampedPlate({}, 8, 6), step));
+  const CalculixRun run =
+      RunCalculix(dir_, "long", {.threads = 1, .time_limit = std::chrono::seconds(1)});
+  EXPECT_EQ(run.status, CalculixRun::Status::kTimedOut) << run.Describe();
+  EXPECT_LT(run.wall_seconds, 5.0);
+}
+
+// The paper's cantilever in 20 C3D20R bricks: ccx's frequencies are the analytic clamped-free
+// ones within the mesh's and the section's (shear) discretization, measured -2.3e-4 for f1 and
+// -1.6e-3 for the second bending mode in the plane; the bending across the plane (width twice
+// the depth) is at twice f1, measured -9.3e-4 (the shear of the wider side).
+TEST_F(CalculixPeer, SolidCantileverFrequenciesAreTheAnalyticOnes) {
+  SKIP_WITHOUT_CALCULIX();
+  const BeamProperties beam;
+  Run("solid", FrequencyDeck(SolidCantilever(beam, {}, 20), {.modes = 4}));
+  const std::vector<double> hz = ReadEigenfrequenciesHz(Dat("solid"));
+  ASSERT_EQ(hz.size(), 4u);
+  const double f1 = FirstClampedFreeFrequencyHz(beam);
+  const double f2 = f1 * std::pow(4.6940911329741745 / kClampedFreeB1, 2);
+  EXPECT_NEAR(hz[0] / f1 - 1.0, 0.0, 5e-4);
+  EXPECT_NEAR(hz[1] / (2.0 * f1) - 1.0, 0.0, 1.5e-3);
+  EXPECT_NEAR(hz[2] / f2 - 1.0, 0.0, 3e-3);
+}
+
+// ccx expands B32R beams into C3D20R bricks of the section's shape: the beam deck has the brick
+// deck's frequencies (measured equal to all 7 printed digits).
+TEST_F(CalculixPeer, BeamElementsAreExpandedIntoTheSameBricks) {
+  SKIP_WITHOUT_CALCULIX();
+  const BeamProperties beam;
+  Run("beam", FrequencyDeck(BeamCantilever(beam, {}, 20), {.modes = 4}));
+  Run("solid", FrequencyDeck(SolidCantilever(beam, {}, 20), {.modes = 4}));
+  const std::vector<double> beam_hz = ReadEigenfrequenciesHz(Dat("beam"));
+  const std::vector<double> solid_hz = ReadEigenfrequenciesHz(Dat("solid"));
+  ASSERT_EQ(beam_hz.size(), solid_hz.size());
+  for (std::size_t i = 0; i < beam_hz.size(); ++i)
+    EXPECT_NEAR(beam_hz[i] / solid_hz[i], 1.0, 1e-6) << "mode " << i + 1;
+}
+
+// The GAPUNI element at the observed node closes when the node moves along the stop's normal,
+// with the stop's stiffness in series with none (both in parallel on the node): under a force F
+// along n the node moves F / (K_bend + k); against n it moves F / K_bend. Only in a nonlinear
+// step (NLGEOM), as TransientDeck writes it.
+TEST_F(CalculixPeer, GapStopClosesAlongItsNormalOnly) {
+  SKIP_WITHOUT_CALCULIX();
+  const DeckModel plate = ClampedPlate({}, 4, 3);
+  const Eigen::Vector3d n(0.0, 0.0, -1.0);
+  Run("free", StaticDeck(plate, 10.0 * n));
+  const double free_u =
+      HistoryAlong(ReadNodeBlocks(Dat("free"), "displacements", "OBSERVED"), plate.observed_node, n)
+          .value.at(0);
+  const double k_bend = 10.0 / free_u;
+  const double k_stop = 100.0 * k_bend;
+  for (const double sign : {1.0, -1.0}) {
+    std::string deck = StaticDeck(plate, sign * 10.0 * n);
+    const int stop = StopNodeOf(plate);
+    const Eigen::Vector3d at = plate.nodes.at(plate.observed_node);
+    const std::string gap = "*NODE, NSET=STOP\n" + std::to_string(stop) + ", " +
+                            std::to_string(at.x()) + ", " + std::to_string(at.y()) + ", " +
+                            std::to_string(at.z()) + "\n*ELEMENT, TYPE=GAPUNI, ELSET=EGAP\n9999, " +
+                            std::to_string(plate.observed_node) + ", " + std::to_string(stop) +
+                            "\n*GAP, ELSET=EGAP\n0, 0, 0, -1, , " + std::to_string(k_stop) +
+                            "\n*BOUNDARY\nSTOP, 1, 3\n*STEP, NLGEOM\n";
+    deck.replace(deck.find("*STEP\n"), 6, gap);
+    Run("gap", deck);
+    const double u = HistoryAlong(ReadNodeBlocks(Dat("gap"), "displacements", "OBSERVED"),
+                                  plate.observed_node, n)
+                         .value.at(0);
+    const double expected = sign * 10.0 / (sign > 0 ? k_bend + k_stop : k_bend);
+    EXPECT_NEAR(u / expected, 1.0, 1e-3) << "force along " << sign << " n";
+  }
+}
+
+}  // namespace
+}  // namespace shockmap::testing
