@@ -142,23 +142,12 @@ Eigen::MatrixXd ResidualFlexibility(const FeStructure& s, const ModalBasis& basi
 
 double LocalStiffness(const FeStructure& s, int node, const Eigen::Vector3d& normal) {
   assert(std::abs(normal.norm() - 1.0) < 1e-9);
-  constexpr DofComponent kTranslations[] = {DofComponent::kUx, DofComponent::kUy,
-                                            DofComponent::kUz};
-  std::vector<int> rows;
-  std::vector<double> along;
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto row = s.DofIndex(node, kTranslations[axis]);
-    if (row && normal[axis] != 0.0) {
-      rows.push_back(*row);
-      along.push_back(normal[axis]);
-    }
-  }
-  if (rows.empty()) {
+  const Eigen::VectorXd w = s.NodeDirection(node, normal);
+  if (w.isZero(0.0)) {
     throw InputError("structure '" + s.name + "': node " + std::to_string(node) +
                      " has no free translation along the normal");
   }
-  const Eigen::VectorXd n = Eigen::Map<const Eigen::VectorXd>(along.data(), along.size());
-  return 1.0 / n.dot(StaticFlexibility(s, rows) * n);
+  return 1.0 / w.dot(StiffnessFactorization(s).Solve(w));
 }
 
 }  // namespace shockmap

@@ -28,8 +28,9 @@ Eigen::MatrixXd StaticFlexibility(const FeStructure& s, const std::vector<int>& 
 Eigen::MatrixXd ResidualFlexibility(const FeStructure& s, const ModalBasis& basis,
                                     const std::vector<int>& rows);
 
-// The paper's K_bend at a node along a unit normal n (3D): 1 / (n^T (K^-1)_cc n) over the node's
-// translational DOFs (a missing DOF contributes nothing along its direction). Throws InputError
+// The paper's K_bend at a node along a unit normal n (3D): 1 / (w^T K^-1 w) with
+// w = s.NodeDirection(node, n), i.e. 1 / (n^T (K^-1)_cc n) over the node's translational DOFs (a
+// missing DOF contributes nothing along its direction; copies are averaged). Throws InputError
 // when the node has no free translational DOF along n.
 double LocalStiffness(const FeStructure& s, int node, const Eigen::Vector3d& normal);
 

@@ -181,7 +181,6 @@ std::vector<StructureDof> ReadDofTable(const std::string& path) {
     file.Fail("expected the header \"node,component\", got " + Quoted(line));
   }
   std::vector<StructureDof> dofs;
-  std::set<std::pair<int, int>> seen;
   while (file.Next(line)) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = Split(line, ',');
@@ -192,9 +191,6 @@ std::vector<StructureDof> ReadDofTable(const std::string& path) {
       file.Fail("component " + Quoted(fields[1]) + "; allowed: ux, uy, uz, rx, ry, rz");
     }
     if (node < 1 || node > 2'000'000'000) file.Fail("node " + fields[0] + " outside 1..2e9");
-    if (!seen.emplace(node, static_cast<int>(*component)).second) {
-      file.Fail("node " + fields[0] + " " + fields[1] + " is listed again; each DOF once");
-    }
     dofs.push_back({static_cast<int>(node), *component});
   }
   if (dofs.empty()) file.Fail("no DOF after the header");
@@ -273,7 +269,6 @@ std::vector<StructureDof> ReadCalculixDofs(const std::string& path) {
   LineFile file(path);
   std::string line;
   std::vector<StructureDof> dofs;
-  std::set<std::pair<int, int>> seen;
   while (file.Next(line)) {
     const std::vector<std::string> fields = Split(line, ' ');
     if (fields.empty()) continue;
@@ -286,7 +281,6 @@ std::vector<StructureDof> ReadCalculixDofs(const std::string& path) {
     if (node < 1 || node > 2'000'000'000 || direction < 1 || direction > 6) {
       file.Fail("DOF " + Quoted(fields[0]) + "; allowed: a node >= 1 and a direction 1..6");
     }
-    if (!seen.emplace(node, direction).second) file.Fail("DOF " + fields[0] + " is listed again");
     dofs.push_back({static_cast<int>(node), static_cast<DofComponent>(direction - 1)});
   }
   if (dofs.empty()) file.Fail("no DOF");
