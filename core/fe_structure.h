@@ -25,10 +25,11 @@ struct StructureDof {
 };
 
 // K and M over the structure's free DOFs (supports eliminated), symmetric (both triangles
-// stored), M positive definite; row i of K and M is dofs[i]. A node may carry several copies of
-// a component: CalculiX expands beam and shell elements into bricks whose nodes it names after
-// the node they were made from (docs/structures.md). The node's motion along the component is
-// then the mean of its copies, and a force on it is shared equally among them.
+// stored), M positive semi-definite (singular for bricks with reduced integration); row i of K and
+// M is dofs[i]. A node may carry several copies of a component: CalculiX expands beam and shell
+// elements into bricks whose nodes it names after the node they were made from
+// (docs/structures.md). The node's motion along the component is then the mean of its copies, and a
+// force on it is shared equally among them.
 struct FeStructure {
   std::string name;
   Eigen::SparseMatrix<double> stiffness;  // N/m, N, N m

@@ -18,7 +18,7 @@ namespace shockmap {
 // first by Sylvester's inertia of K - (2 pi f_trunc)^2 M.
 // Throws InputError when K is not positive definite (the supports leave a rigid motion).
 ModalBasis StructureModesBelow(const FeStructure& s, double f_trunc_hz);
-// The `count` lowest modes (all of them when count >= s.Size()), as above.
+// The `count` lowest modes (all the finite ones when count is larger), as above.
 ModalBasis LowestStructureModes(const FeStructure& s, int count);
 
 // The static flexibility (K^-1) restricted to the given rows (columns in the rows' order).

@@ -65,12 +65,13 @@ std::string LogExcerpt(const std::filesystem::path& log) {
   return all.size() > kLogExcerptBytes ? "..." + all.substr(all.size() - kLogExcerptBytes) : all;
 }
 
-// Runs `ccx -i structure` in `folder`, stdin from /dev/null, stdout and stderr into
-// structure.log; returns waitpid's status.
-int RunCcx(const std::filesystem::path& ccx, const std::filesystem::path& folder) {
-  std::string arg0 = ccx.string(), arg1 = "-i", arg2 = kJobName;
+}  // namespace
+
+int RunCalculixJob(const std::filesystem::path& ccx, const std::filesystem::path& folder,
+                   const std::string& jobname) {
+  std::string arg0 = ccx.string(), arg1 = "-i", arg2 = jobname;
   char* argv[] = {arg0.data(), arg1.data(), arg2.data(), nullptr};
-  const std::string log = (folder / (std::string(kJobName) + ".log")).string();
+  const std::string log = (folder / (jobname + ".log")).string();
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
@@ -87,6 +88,8 @@ int RunCcx(const std::filesystem::path& ccx, const std::filesystem::path& folder
   }
   return status;
 }
+
+namespace {
 
 // A temporary folder removed with everything in it when destroyed (or on a signal).
 class TemporaryFolder {
@@ -162,7 +165,7 @@ FeStructure ImportCalculixDeck(const std::filesystem::path& deck) {
   const TemporaryFolder folder;
   const std::filesystem::path stem = folder.Path() / kJobName;
   std::ofstream(stem.string() + ".inp") << text;
-  const int status = RunCcx(*ccx, folder.Path());
+  const int status = RunCalculixJob(*ccx, folder.Path(), kJobName);
   const std::filesystem::path log = stem.string() + ".log";
   if (WIFSIGNALED(status)) {
     throw CalculixError(ccx->string() + " was ended by signal " + std::to_string(WTERMSIG(status)) +

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "core/fe_structure.h"
 
@@ -20,6 +21,13 @@ class CalculixError : public std::runtime_error {
 // The ccx executable: $SHOCKMAP_CCX when set, else `ccx` on the PATH; nullopt when neither is an
 // executable file.
 std::optional<std::filesystem::path> FindCalculixExecutable();
+
+// Runs `ccx -i jobname` in `folder` (which holds jobname.inp) as a child process without a shell,
+// stdin from /dev/null, stdout and stderr into folder/jobname.log; waits for it (killed if a
+// signal ends this process) and returns waitpid's status. Throws CalculixError when it cannot
+// be started.
+int RunCalculixJob(const std::filesystem::path& ccx, const std::filesystem::path& folder,
+                   const std::string& jobname);
 
 // The deck's model part: its lines before the first *STEP, then the *BOUNDARY blocks of its
 // first step (supports given in the step), then the matrix-storage step. *INCLUDE paths are
