@@ -50,6 +50,7 @@ struct DeckModel {
   std::vector<int> clamped;
   int clamped_dofs = 3;   // 3 for solids, 6 for beams (rotations).
   int observed_node = 0;  // The tip or corner node the checks watch and the stop touches.
+  int element_count = 0;  // Elements are numbered 1..element_count.
 };
 
 // The paper's cantilever (beam: length, EI, rhoA, paper §2.1) along x, bending in y, clamped
@@ -134,5 +135,12 @@ struct History {
   std::vector<double> t, value;
 };
 History HistoryAlong(const std::vector<NodeBlock>& blocks, int node, const Eigen::Vector3d& n);
+
+// The impulse of a stop's reaction (N s) over a history printed every step dt: the sum of its
+// values above `threshold_n` times dt (ccx's open GAPUNI pulls with a residual 1e-3 N). dt is
+// given: ccx prints times to 7 digits, and the dynamic step's start at 1.
+double ContactImpulse(const History& force, double dt, double threshold_n = 0.01);
+// The first time the history crosses zero from above (linear between samples), or NaN.
+double FirstDownCrossing(const History& h);
 
 }  // namespace shockmap::testing
