@@ -9,6 +9,7 @@
 #include "app/exit_codes.h"
 #include "core/input_error.h"
 #include "db/sqlite_handle.h"
+#include "formats/calculix_job.h"
 #include "formats/json_reader.h"
 #include "formats/nearest_name.h"
 #include "views/gnuplot.h"
@@ -131,6 +132,9 @@ int ReportFailure(const std::exception_ptr& failure) {
     return kExitBadInput;
   } catch (const PlotError& e) {
     std::cerr << "shockmap: plot error: " << e.what() << '\n';
+    return kExitFailure;
+  } catch (const CalculixError& e) {
+    std::cerr << "shockmap: calculix error: " << e.what() << '\n';
     return kExitFailure;
   } catch (const std::exception& e) {
     std::cerr << "shockmap: internal error: " << e.what() << '\n';

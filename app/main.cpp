@@ -15,6 +15,7 @@
 #include "app/report_command.h"
 #include "app/simulate_command.h"
 #include "app/sizing_command.h"
+#include "app/structure_command.h"
 #include "app/study_command.h"
 #include "app/view_commands.h"
 #include "engine/provenance.h"
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
   shockmap::AddCheckAdviceCommand(app);
   shockmap::AddReportCommand(app);
   shockmap::AddExportCommand(app);
+  shockmap::AddStructureCommand(app);
   shockmap::AddCompletionCommand(app);
   try {
     app.parse(argc, argv);

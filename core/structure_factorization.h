@@ -19,7 +19,7 @@ class ShiftedFactorization {
   // False when a pivot was exactly zero (K - sigma M singular to the factorization's eyes).
   bool Succeeded() const { return succeeded_; }
   // The number of negative pivots: by Sylvester's law of inertia, the number of eigenvalues
-  // omega^2 of K phi = omega^2 M phi below sigma (M positive definite).
+  // omega^2 of K phi = omega^2 M phi below sigma (K positive definite, M positive semi-definite).
   int NegativePivots() const;
   // The row whose pivot is smallest relative to its diagonal entry of K - sigma M (a DOF the
   // supports leave free to move rigidly when K itself is factorized), and that ratio.

@@ -8,6 +8,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,7 +25,7 @@ class FactorizedShiftSolve {
   explicit FactorizedShiftSolve(const ShiftedFactorization& factor) : factor_(factor) {}
   Eigen::Index rows() const { return factor_.Size(); }
   Eigen::Index cols() const { return factor_.Size(); }
-  void set_shift(double sigma) const { assert(sigma == factor_.Shift()); }
+  void set_shift([[maybe_unused]] double sigma) const { assert(sigma == factor_.Shift()); }
   void perform_op(const double* x, double* y) const { factor_.Solve(x, y); }
 
  private:
@@ -36,10 +37,20 @@ constexpr double kLanczosTolerance = 1e-12;
 constexpr int kLanczosIterations = 1000;
 // Structures this small are solved densely: Lanczos needs count < size / 2 to be worth it.
 constexpr int kDenseSize = 400;
+// Modes whose 1 / omega^2 is below this share of the largest are taken as the infinite
+// frequencies of a singular mass (its null combinations), never as modes.
+constexpr double kFiniteShare = 1e-13;
 
 std::string DofLabel(const FeStructure& s, int row) {
   return "node " + std::to_string(s.dofs[row].node) + " " +
          std::string(DofComponentName(s.dofs[row].component));
+}
+
+std::string ThreeDigits(double value) {
+  std::ostringstream text;
+  text.precision(3);
+  text << value;
+  return text.str();
 }
 
 // The factorization of K, refused when K is not positive definite.
@@ -48,7 +59,7 @@ ShiftedFactorization StiffnessFactorization(const FeStructure& s) {
   const auto [row, ratio] = factor.WeakestPivot();
   if (!factor.Succeeded() || ratio <= 1e-13) {
     throw InputError("structure '" + s.name + "': its stiffness is not positive definite (the " +
-                     "pivot of " + DofLabel(s, row) + " is " + std::to_string(ratio) +
+                     "pivot of " + DofLabel(s, row) + " is " + ThreeDigits(ratio) +
                      " of its diagonal): the supports must remove every rigid motion");
   }
   return factor;
@@ -68,10 +79,17 @@ ModalBasis RayleighRitz(const FeStructure& s, const Eigen::MatrixXd& shapes) {
   return basis;
 }
 
+// The lowest `count` modes' shapes from the dense problem in flexibility form,
+// M phi = (1 / omega^2) K phi (K positive definite, M only semi-definite), at most as many as
+// M's rank: the largest 1 / omega^2, in descending order.
 Eigen::MatrixXd DenseLowestShapes(const FeStructure& s, int count) {
   const Eigen::MatrixXd k(s.stiffness), m(s.mass);
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(k, m);
-  return dense.eigenvectors().leftCols(count);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> dense(m, k);
+  const Eigen::VectorXd& flexibility = dense.eigenvalues();  // ascending
+  const double largest = flexibility.maxCoeff();
+  const int finite = static_cast<int>((flexibility.array() > kFiniteShare * largest).count());
+  count = std::min(count, finite);
+  return dense.eigenvectors().rightCols(count).rowwise().reverse();
 }
 
 Eigen::MatrixXd LanczosLowestShapes(const FeStructure& s, const ShiftedFactorization& factor,
@@ -142,23 +160,12 @@ Eigen::MatrixXd ResidualFlexibility(const FeStructure& s, const ModalBasis& basi
 
 double LocalStiffness(const FeStructure& s, int node, const Eigen::Vector3d& normal) {
   assert(std::abs(normal.norm() - 1.0) < 1e-9);
-  constexpr DofComponent kTranslations[] = {DofComponent::kUx, DofComponent::kUy,
-                                            DofComponent::kUz};
-  std::vector<int> rows;
-  std::vector<double> along;
-  for (int axis = 0; axis < 3; ++axis) {
-    const auto row = s.DofIndex(node, kTranslations[axis]);
-    if (row && normal[axis] != 0.0) {
-      rows.push_back(*row);
-      along.push_back(normal[axis]);
-    }
-  }
-  if (rows.empty()) {
+  const Eigen::VectorXd w = s.NodeDirection(node, normal);
+  if (w.isZero(0.0)) {
     throw InputError("structure '" + s.name + "': node " + std::to_string(node) +
                      " has no free translation along the normal");
   }
-  const Eigen::VectorXd n = Eigen::Map<const Eigen::VectorXd>(along.data(), along.size());
-  return 1.0 / n.dot(StaticFlexibility(s, rows) * n);
+  return 1.0 / w.dot(StiffnessFactorization(s).Solve(w));
 }
 
 }  // namespace shockmap

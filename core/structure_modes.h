@@ -18,7 +18,7 @@ namespace shockmap {
 // first by Sylvester's inertia of K - (2 pi f_trunc)^2 M.
 // Throws InputError when K is not positive definite (the supports leave a rigid motion).
 ModalBasis StructureModesBelow(const FeStructure& s, double f_trunc_hz);
-// The `count` lowest modes (all of them when count >= s.Size()), as above.
+// The `count` lowest modes (all the finite ones when count is larger), as above.
 ModalBasis LowestStructureModes(const FeStructure& s, int count);
 
 // The static flexibility (K^-1) restricted to the given rows (columns in the rows' order).
@@ -28,8 +28,9 @@ Eigen::MatrixXd StaticFlexibility(const FeStructure& s, const std::vector<int>& 
 Eigen::MatrixXd ResidualFlexibility(const FeStructure& s, const ModalBasis& basis,
                                     const std::vector<int>& rows);
 
-// The paper's K_bend at a node along a unit normal n (3D): 1 / (n^T (K^-1)_cc n) over the node's
-// translational DOFs (a missing DOF contributes nothing along its direction). Throws InputError
+// The paper's K_bend at a node along a unit normal n (3D): 1 / (w^T K^-1 w) with
+// w = s.NodeDirection(node, n), i.e. 1 / (n^T (K^-1)_cc n) over the node's translational DOFs (a
+// missing DOF contributes nothing along its direction; copies are averaged). Throws InputError
 // when the node has no free translational DOF along n.
 double LocalStiffness(const FeStructure& s, int node, const Eigen::Vector3d& normal);
 

@@ -62,6 +62,10 @@ std::vector<std::string> Split(const std::string& line, char separator) {
   return fields;
 }
 
+// The share of its diagonal added to M before its factorization checks it positive
+// semi-definite (rounding of a singular M stays above -1e-10 of its diagonal).
+constexpr double kMassLift = 1e-10;
+
 std::string Quoted(const std::string& text) { return "\"" + Excerpt(text) + "\""; }
 
 // `text` as a whole integer, or the line's failure naming `what`.
@@ -181,7 +185,6 @@ std::vector<StructureDof> ReadDofTable(const std::string& path) {
     file.Fail("expected the header \"node,component\", got " + Quoted(line));
   }
   std::vector<StructureDof> dofs;
-  std::set<std::pair<int, int>> seen;
   while (file.Next(line)) {
     if (line.empty()) continue;
     const std::vector<std::string> fields = Split(line, ',');
@@ -192,9 +195,6 @@ std::vector<StructureDof> ReadDofTable(const std::string& path) {
       file.Fail("component " + Quoted(fields[1]) + "; allowed: ux, uy, uz, rx, ry, rz");
     }
     if (node < 1 || node > 2'000'000'000) file.Fail("node " + fields[0] + " outside 1..2e9");
-    if (!seen.emplace(node, static_cast<int>(*component)).second) {
-      file.Fail("node " + fields[0] + " " + fields[1] + " is listed again; each DOF once");
-    }
     dofs.push_back({static_cast<int>(node), *component});
   }
   if (dofs.empty()) file.Fail("no DOF after the header");
@@ -248,20 +248,32 @@ void CheckNodesHaveCoordinates(const FeStructure& s, const std::string& dofs_pat
   }
 }
 
-// Refuses a mass that is not positive definite: its LDL^T factorization has a pivot <= 0 (or
-// below 1e-12 of its diagonal entry) at some row.
-void CheckMassPositiveDefinite(const FeStructure& s, const std::string& mass_path) {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(s.mass);
+// Refuses a mass with a diagonal entry <= 0, or that is not positive semi-definite: the LDL^T
+// factorization of M + 1e-10 diag(M) has a pivot <= 0 at some row. A singular M is allowed:
+// 20-node bricks with reduced integration (CalculiX's C3D20R) give one, whose null combinations
+// have no finite frequency and never enter a truncated basis.
+void CheckMassPositiveSemidefinite(const FeStructure& s, const std::string& mass_path) {
+  const Eigen::VectorXd diagonal = s.mass.diagonal();
+  for (int i = 0; i < s.Size(); ++i) {
+    if (!(diagonal[i] > 0.0)) {
+      throw InputError(
+          fmt::format("{}: {} has the mass {} on its diagonal; every DOF needs a "
+                      "positive mass or inertia",
+                      mass_path, RowLabel(s.dofs)(i), diagonal[i]));
+    }
+  }
+  Eigen::SparseMatrix<double> lifted = s.mass;
+  lifted.diagonal() += kMassLift * diagonal;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(lifted);
   const auto& permutation = factor.permutationP().indices();
   for (int i = 0; i < s.Size(); ++i) {
-    const double diagonal = s.mass.coeff(i, i);
     const double pivot = factor.info() == Eigen::Success ? factor.vectorD()[permutation[i]] : 0.0;
-    if (factor.info() != Eigen::Success || !(pivot > 1e-12 * std::abs(diagonal)) || diagonal <= 0) {
+    if (!(pivot > 0.0)) {
       throw InputError(fmt::format(
-          "{}: the mass is not positive definite: at {} (diagonal {}) its factorization's pivot "
-          "is {}; every DOF needs a positive mass or inertia, and no combination of DOFs may "
-          "move without kinetic energy",
-          mass_path, RowLabel(s.dofs)(i), diagonal, pivot));
+          "{}: the mass is not positive semi-definite: at {} (diagonal {}) the pivot of the "
+          "factorization of M + {} diag(M) is {}; no combination of DOFs may have a negative "
+          "kinetic energy",
+          mass_path, RowLabel(s.dofs)(i), diagonal[i], kMassLift, pivot));
     }
   }
 }
@@ -273,7 +285,6 @@ std::vector<StructureDof> ReadCalculixDofs(const std::string& path) {
   LineFile file(path);
   std::string line;
   std::vector<StructureDof> dofs;
-  std::set<std::pair<int, int>> seen;
   while (file.Next(line)) {
     const std::vector<std::string> fields = Split(line, ' ');
     if (fields.empty()) continue;
@@ -286,7 +297,6 @@ std::vector<StructureDof> ReadCalculixDofs(const std::string& path) {
     if (node < 1 || node > 2'000'000'000 || direction < 1 || direction > 6) {
       file.Fail("DOF " + Quoted(fields[0]) + "; allowed: a node >= 1 and a direction 1..6");
     }
-    if (!seen.emplace(node, direction).second) file.Fail("DOF " + fields[0] + " is listed again");
     dofs.push_back({static_cast<int>(node), static_cast<DofComponent>(direction - 1)});
   }
   if (dofs.empty()) file.Fail("no DOF");
@@ -386,7 +396,7 @@ FeStructure ReadMatrixMarketStructure(const std::string& stiffness_path,
   MarketEntries m = ReadMarketEntries(mass_path);
   CheckSize(mass_path, m.size, dofs_path, s.Size());
   s.mass = SymmetricMatrix(std::move(m.entries), m.size, m.symmetric, mass_path, RowLabel(s.dofs));
-  CheckMassPositiveDefinite(s, mass_path);
+  CheckMassPositiveSemidefinite(s, mass_path);
   return s;
 }
 
@@ -407,7 +417,7 @@ FeStructure ReadCalculixMatrixStorage(const std::string& stem, const std::string
   const std::string mass_path = stem + ".mas";
   s.mass = SymmetricMatrix(ReadCalculixMatrix(mass_path, s.Size()), s.Size(), true, mass_path,
                            RowLabel(s.dofs));
-  CheckMassPositiveDefinite(s, mass_path);
+  CheckMassPositiveSemidefinite(s, mass_path);
   return s;
 }
 

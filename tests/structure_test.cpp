@@ -1,0 +1,163 @@
+// FE structures from their matrices (docs/structures.md): modes by shift-invert Lanczos against a
+// spring chain's closed form, repeated frequencies, static and residual flexibility, the local
+// stiffness, and the Matrix Market files written and read back.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <numbers>
+
+#include "core/input_error.h"
+#include "core/structure_modes.h"
+#include "formats/structure_files.h"
+#include "tests/structure_chain.h"
+#include "tests/temp_dir.h"
+
+namespace shockmap {
+namespace {
+
+using testing::ChainOmega;
+using testing::SpringChain;
+
+constexpr double kK = 3.0e6, kM = 0.25;
+
+// Phi^T M Phi = I and M^-1 K Phi = Phi diag(omega^2), each to `tolerance`.
+void ExpectEigenpairs(const FeStructure& s, const ModalBasis& b, double tolerance) {
+  const Eigen::MatrixXd modal_mass = b.shapes.transpose() * (s.mass * b.shapes);
+  EXPECT_LT(
+      (modal_mass - Eigen::MatrixXd::Identity(b.NumModes(), b.NumModes())).cwiseAbs().maxCoeff(),
+      tolerance);
+  for (int j = 0; j < b.NumModes(); ++j) {
+    const Eigen::VectorXd residual =
+        s.stiffness * b.shapes.col(j) - std::pow(b.omega_rad_s[j], 2) * (s.mass * b.shapes.col(j));
+    EXPECT_LT(residual.norm() / (std::pow(b.omega_rad_s[j], 2) * (s.mass * b.shapes.col(j)).norm()),
+              tolerance)
+        << "mode " << j + 1;
+  }
+}
+
+TEST(StructureModes, LanczosGivesTheChainsFrequencies) {
+  const int n = 2000;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUx});
+  const ModalBasis b = LowestStructureModes(s, 30);
+  ASSERT_EQ(b.NumModes(), 30);
+  for (int j = 1; j <= 30; ++j) {
+    EXPECT_NEAR(b.omega_rad_s[j - 1] / ChainOmega(n, kK, kM, j), 1.0, 1e-10) << "mode " << j;
+  }
+  ExpectEigenpairs(s, b, 1e-8);
+}
+
+TEST(StructureModes, SmallStructuresAreSolvedDenselyToTheSameFrequencies) {
+  const int n = 50;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUy});
+  const ModalBasis b = LowestStructureModes(s, n + 7);  // More than it has: all of them.
+  ASSERT_EQ(b.NumModes(), n);
+  for (int j = 1; j <= n; ++j) {
+    EXPECT_NEAR(b.omega_rad_s[j - 1] / ChainOmega(n, kK, kM, j), 1.0, 1e-12) << "mode " << j;
+  }
+  ExpectEigenpairs(s, b, 1e-10);
+}
+
+TEST(StructureModes, BelowATruncationCountsByInertia) {
+  const int n = 1500;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUx});
+  // Halfway between the 12th and 13th frequencies.
+  const double f_trunc =
+      0.5 * (ChainOmega(n, kK, kM, 12) + ChainOmega(n, kK, kM, 13)) / (2 * std::numbers::pi);
+  const ModalBasis b = StructureModesBelow(s, f_trunc);
+  EXPECT_EQ(b.NumModes(), 12);
+  EXPECT_LE(b.HighestFrequencyHz(), f_trunc);
+}
+
+// Each frequency twice (ux and uy): the basis of each pair spans its eigenspace, whatever the
+// order or rotation within it.
+TEST(StructureModes, RepeatedFrequenciesGiveABasisOfTheirEigenspace) {
+  const int n = 800;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUx, DofComponent::kUy});
+  const ModalBasis b = LowestStructureModes(s, 20);
+  ASSERT_EQ(b.NumModes(), 20);
+  for (int j = 1; j <= 10; ++j) {
+    for (int copy = 0; copy < 2; ++copy) {
+      EXPECT_NEAR(b.omega_rad_s[2 * (j - 1) + copy] / ChainOmega(n, kK, kM, j), 1.0, 1e-10);
+    }
+  }
+  ExpectEigenpairs(s, b, 1e-8);
+}
+
+TEST(StructureModes, StaticFlexibilityIsTheChainsClosedForm) {
+  const int n = 600;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUx});
+  const std::vector<int> rows = {599, 17, 300};
+  const Eigen::MatrixXd g = StaticFlexibility(s, rows);
+  for (int i = 0; i < 3; ++i) {
+    for (int l = 0; l < 3; ++l) {
+      EXPECT_NEAR(g(i, l) * kK / std::min(rows[i] + 1, rows[l] + 1), 1.0, 1e-10);
+    }
+  }
+  EXPECT_NEAR(LocalStiffness(s, n, Eigen::Vector3d::UnitX()) * n / kK, 1.0, 1e-10);
+}
+
+TEST(StructureModes, ResidualFlexibilityIsTheHigherModesShare) {
+  const int n = 120;
+  const FeStructure s = SpringChain(n, kK, kM, {DofComponent::kUx});
+  const ModalBasis all = LowestStructureModes(s, n);
+  const std::vector<int> rows = {n - 1, 40};
+  const ModalBasis low = FirstModes(all, 10);
+  Eigen::MatrixXd higher = Eigen::MatrixXd::Zero(2, 2);
+  for (int j = 10; j < n; ++j) {
+    const Eigen::Vector2d phi(all.shapes(rows[0], j), all.shapes(rows[1], j));
+    higher += phi * phi.transpose() / std::pow(all.omega_rad_s[j], 2);
+  }
+  const Eigen::MatrixXd residual = ResidualFlexibility(s, low, rows);
+  EXPECT_LT((residual - higher).cwiseAbs().maxCoeff() / higher.cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT(higher(0, 0), 0.0);
+}
+
+// A node with two copies of ux (as CalculiX names its expanded beams' nodes), each on its own
+// spring k to the ground: a force F shared equally moves each copy, and so their mean, by
+// F / (2 k): the local stiffness is 2 k.
+TEST(StructureModes, LocalStiffnessAveragesANodesCopies) {
+  FeStructure s;
+  s.name = "copies";
+  s.dofs = {{7, DofComponent::kUx}, {7, DofComponent::kUx}, {7, DofComponent::kUy}};
+  s.node_coordinates_m[7] = Eigen::Vector3d::Zero();
+  s.stiffness.resize(3, 3);
+  s.stiffness.insert(0, 0) = kK;
+  s.stiffness.insert(1, 1) = kK;
+  s.stiffness.insert(2, 2) = 5 * kK;
+  s.mass = s.stiffness / kK;
+  EXPECT_NEAR(LocalStiffness(s, 7, Eigen::Vector3d::UnitX()) / (2 * kK), 1.0, 1e-14);
+  EXPECT_NEAR(LocalStiffness(s, 7, Eigen::Vector3d::UnitY()) / (5 * kK), 1.0, 1e-14);
+  EXPECT_THROW(LocalStiffness(s, 7, Eigen::Vector3d::UnitZ()), InputError);
+}
+
+TEST(StructureModes, AnUnsupportedStructureIsRefused) {
+  FeStructure s = SpringChain(10, kK, kM, {DofComponent::kUx});
+  s.stiffness.coeffRef(0, 0) = kK;  // No spring to the ground: a rigid translation.
+  try {
+    LowestStructureModes(s, 3);
+    FAIL() << "expected a refusal";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not positive definite"), std::string::npos) << e.what();
+  }
+}
+
+class StructureFiles : public testing::TempDirTest {};
+
+TEST_F(StructureFiles, WrittenAndReadBackUnchanged) {
+  const FeStructure s = SpringChain(40, kK, kM, {DofComponent::kUz, DofComponent::kRx});
+  WriteMatrixMarketStructure(s, dir_.string());
+  const FeStructure back = ReadMatrixMarketStructure(Path("stiffness.mtx"), Path("mass.mtx"),
+                                                     Path("dofs.csv"), Path("nodes.csv"));
+  ASSERT_EQ(back.Size(), s.Size());
+  EXPECT_EQ(Eigen::MatrixXd(back.stiffness), Eigen::MatrixXd(s.stiffness));
+  EXPECT_EQ(Eigen::MatrixXd(back.mass), Eigen::MatrixXd(s.mass));
+  for (int i = 0; i < s.Size(); ++i) {
+    EXPECT_EQ(back.dofs[i].node, s.dofs[i].node);
+    EXPECT_EQ(back.dofs[i].component, s.dofs[i].component);
+  }
+  EXPECT_EQ(back.node_coordinates_m, s.node_coordinates_m);
+}
+
+}  // namespace
+}  // namespace shockmap
