@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -32,8 +33,11 @@ struct CompareFlags {
   bool plot = false;
 };
 
-std::string Scored(const std::optional<double>& v, const char* format) {
-  return v ? fmt::format(fmt::runtime(format), *v) : "not scored";
+// A score's value, or why it has none: its reference does not decide it, or it was not scored.
+std::string Scored(const ComparisonResult& r, std::string_view score) {
+  if (const std::optional<double> v = r.scores[score]) return fmt::format("{:.4f}", *v);
+  return std::ranges::find(r.undecided, score) != r.undecided.end() ? "undecided by the reference"
+                                                                    : "not scored";
 }
 
 void PrintShock(const char* label, const std::vector<Shock>& shocks) {
@@ -55,8 +59,8 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
   fmt::print("  status            {}{}\n", ToString(r.status),
              r.message.empty() ? "" : " (" + r.message + ")");
   for (const ScoreDefinition& score : Scores()) {
-    fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r.scores[score.name], "{:.4f}"),
-               score.source, score.meaning);
+    fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r, score.name), score.source,
+               score.meaning);
   }
   if (f.options.scheme == Scheme::kExplicitModal) {
     fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",

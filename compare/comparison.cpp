@@ -1,6 +1,7 @@
 #include "compare/comparison.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 
@@ -56,27 +57,46 @@ double LowerMedian(std::vector<double> v) {
 
 }  // namespace
 
-std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance) {
-  std::string message = fmt::format(
-      "the reference at R_fref = {:g} has an estimated error of {:.3g} (checked against "
-      "R_fref = {:g}: tip {:.3g} of the amplitude, first-shock impulse {:.3g}, induced Err "
-      "{:.3g}), above scoring.reference.tolerance = {:g}; ",
-      c.r_fref, c.difference, c.r_fref_check, c.tip.error, c.impulse.error, c.induced_err.error,
-      tolerance);
-  if (c.r_fref_needed) {
-    message += fmt::format("R_fref = {:.3g} would do by the observed order {:.2f}",
-                           *c.r_fref_needed, *c.Deciding().order);
-  } else if (c.r_fref_check < c.r_fref) {  // ReferenceCheck::kCoarser: no order, no raise.
-    message += fmt::format(
-        "checked against a coarser truncation alone (scoring.reference.check = \"coarser\"), "
-        "it is not raised: R_fref above {:g} is needed",
-        c.r_fref);
-  } else {
-    message +=
-        fmt::format("the convergence is not regular: R_fref above {:g} is needed", c.r_fref_check);
+std::string UndecidedMessage(const ReferenceProblem& reference, const ReferenceConvergence& c,
+                             const std::vector<std::string>& undecided, double tolerance) {
+  std::vector<std::string> each;
+  for (ReferencePart part : {ReferencePart::kWindowTip, ReferencePart::kFirstShock}) {
+    std::vector<std::string_view> labels;
+    for (const std::string& name : undecided) {
+      const ScoreDefinition* score = FindScore(name);
+      if (score->reads == part) labels.push_back(score->label);
+    }
+    if (labels.empty()) continue;
+    each.push_back(fmt::format("{} undecided: {}", fmt::join(labels, ", "),
+                               UndecidedPartMessage(reference, c, part, tolerance)));
   }
-  return message;
+  return fmt::format("{}", fmt::join(each, "; "));
 }
+
+std::string UnconvergedMessage(const ReferenceProblem& reference, const ReferenceConvergence& c,
+                               double tolerance) {
+  std::vector<std::string> every;
+  for (const ScoreDefinition& score : Scores()) every.emplace_back(score.name);
+  return "the reference decides no score: " + UndecidedMessage(reference, c, every, tolerance);
+}
+
+namespace {
+
+// Removes from `result` the scores its reference does not decide at `tolerance`, naming them
+// in result.undecided and why after the run's own message.
+void LeaveUndecided(ComparisonResult& result, const ReferenceProblem& reference, double tolerance) {
+  const ReferenceConvergence& c = result.reference->convergence;
+  for (const ScoreDefinition& score : Scores()) {
+    if (DecidesPart(c, score.reads, tolerance)) continue;
+    result.scores.Set(score.name, std::nullopt);
+    result.undecided.emplace_back(score.name);
+  }
+  if (result.undecided.empty()) return;
+  if (!result.message.empty()) result.message += "; ";
+  result.message += UndecidedMessage(reference, c, result.undecided, tolerance);
+}
+
+}  // namespace
 
 RunTiming TimeRepeatedly(const ImpactModel& model, Scheme scheme, const TransientOptions& run,
                          const RunSummary& first, const RepeatedTiming& timing) {
@@ -144,9 +164,12 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
   const ShockSegmentationOptions shocks = options.Shocks(problem.F1Hz());
   result.shocks_numerical =
       SegmentShocks(result.histories.contact_force_n[0], shocks, options.window_s);
-  if (result.reference->convergence.difference > options.reference_tolerance) {
+  const ReferenceConvergence& convergence = result.reference->convergence;
+  if (!DecidesPart(convergence, ReferencePart::kWindowTip, options.reference_tolerance) &&
+      !DecidesPart(convergence, ReferencePart::kFirstShock, options.reference_tolerance)) {
     result.status = RunStatus::kReferenceUnconverged;
-    result.message = UnconvergedMessage(result.reference->convergence, options.reference_tolerance);
+    result.message = UnconvergedMessage({problem, options.reference, options.window_s}, convergence,
+                                        options.reference_tolerance);
     return result;
   }
   const ReferenceRun& ref = *result.reference;
@@ -164,6 +187,8 @@ ComparisonResult ScoreAgainstReference(const CantileverImpact& problem,
                                  .reference_shocks = ref.shocks,
                                  .srf_definition = options.srf_definition,
                                  .segmentation = shocks});
+  LeaveUndecided(result, {problem, options.reference, options.window_s},
+                 options.reference_tolerance);
   return result;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compare/reference_decision.h"
 #include "compare/reference_run.h"
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
@@ -35,9 +36,9 @@ struct ComparisonOptions {
   double rest_duration_t1 = 0.1;
   // Which impulses SRf compares (paper eq. 9 admits several readings).
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;
-  // Score nothing when the reference's estimated error (ReferenceConvergence::difference)
-  // exceeds this; RunComparison raises the reference's truncation until it does not, within the
-  // reference budget.
+  // A score is decided when the reference's estimate on the part it reads is at most this
+  // (compare/reference_decision.h); RunComparison raises the reference's truncation until its
+  // whole estimate (ReferenceConvergence::difference) is, while a raise can decide a part.
   double reference_tolerance = 0.02;
 
   bool IsValid(std::string* error) const;
@@ -50,12 +51,18 @@ struct ComparisonOptions {
 enum class RecordedHistories { kScored, kAll };
 
 struct ComparisonResult {
-  // The numerical run's status, or kReferenceUnconverged when it ran but nothing is scored.
+  // The numerical run's status, or kReferenceUnconverged when it ran but the reference decides
+  // no score.
   RunStatus status = RunStatus::kOk;
+  // Why it failed or was not scored; for a run scored with scores left undecided, why the
+  // reference does not decide them.
   std::string message;
-  // Every registered score (validation/scores.h), set only when status is kOk or kUnstable:
-  // Err always, SRf when either side has a shock.
+  // Every registered score (validation/scores.h) the reference decides, set only when status is
+  // kOk or kUnstable: Err whenever decided, SRf when either side has a shock.
   ScoreValues scores;
+  // The registered scores the reference does not decide (no value in `scores`), by name in
+  // registry order; empty when it decides every one or the run was not scored.
+  std::vector<std::string> undecided;
   SrfDefinition srf_definition = SrfDefinition::kFirstShock;  // The one srf was computed with.
   int n_modes = 0;
   int n_elements = 0;
@@ -70,9 +77,17 @@ struct ComparisonResult {
   TransientResult histories;
 };
 
-// Why a point is not scored against reference `c` at `tolerance`: the estimate, its parts, the
-// tolerance and its key, and the truncation that would do.
-std::string UnconvergedMessage(const ReferenceConvergence& c, double tolerance);
+// Why the scores of `undecided` (names, in registry order) are not decided by reference c at
+// `tolerance`: "Err undecided: the reference's estimate on the window's tip is ..." for each
+// part of the reference they read (UndecidedPartMessage), joined by "; ".
+std::string UndecidedMessage(const ReferenceProblem& reference, const ReferenceConvergence& c,
+                             const std::vector<std::string>& undecided, double tolerance);
+
+// Why a point is not scored against reference c at `tolerance`: "the reference decides no
+// score: " and UndecidedMessage of every score (each part's estimate, the tolerance's key and
+// the truncation its truncations' order predicts, beyond the reference budget or not).
+std::string UnconvergedMessage(const ReferenceProblem& reference, const ReferenceConvergence& c,
+                               double tolerance);
 
 // Preconditions: problem.IsValid(), options.IsValid(). Throws InputError when the
 // reference cannot represent the problem.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "compare/coarser_checked_reference.h"
+#include "compare/reference_decision.h"
 #include "compare/reference_estimate.h"
 #include "core/cpu_timer.h"
 #include "reference/reference_cost.h"
@@ -47,8 +48,11 @@ ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const Referenc
     return EstimateReferenceError(ladder, window_s, options.target_error);
   };
   ReferenceConvergence convergence = estimate();
-  // Raise the truncation while the estimate misses the target and the next one fits the budget.
+  // Raise the truncation while the estimate misses the target, a part it leaves undecided
+  // converges toward a truncation the budget affords, and the next one fits the budget.
+  const ReferenceProblem budget{problem, options, window_s};
   while (options.target_error > 0.0 && convergence.difference > options.target_error) {
+    if (!RaiseCanDecide(budget, convergence, options.target_error)) break;
     ReferenceOptions next = options;
     next.r_fref = finer.r_fref;
     if (!ReferenceBudgetExcess(problem, next, window_s).empty()) break;

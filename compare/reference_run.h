@@ -44,7 +44,9 @@ struct ReferenceTruncationRule {
 
 // The reference at options.r_fref, its error estimated against 3 r_fref (and the order from
 // r_fref / 3; docs/physics.md §2); with options.target_error > 0, r_fref is raised threefold
-// until the estimate meets it or the next truncation would exceed the reference budget. With
+// until the estimate meets it, while a raise can decide a part of the reference left undecided
+// (RaiseCanDecide, compare/reference_decision.h: its convergence regular and its predicted
+// truncation within the reference budget) and the next truncation fits that budget. With
 // options.check = ReferenceCheck::kCoarser, ComputeCoarserCheckedReferenceRun instead.
 // Throws InputError when the reference cannot represent the problem.
 ReferenceRun ComputeReferenceRun(const CantileverImpact& problem, const ReferenceOptions& options,

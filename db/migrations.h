@@ -623,6 +623,33 @@ DROP TABLE migrating_zones;
 DROP TABLE zone_faces;
 DROP TABLE renamed_zones;
 )sql",
+    // 14 -> 15: the scores a point's reference does not decide (compare/reference_decision.h:
+    // each score is judged by the part of the reference's estimate it reads, the window's tip or
+    // the first shock), at the end of the results view. Rows stored before have none: their
+    // reference decided every score it scored.
+    R"sql(
+ALTER TABLE scores ADD COLUMN reference_undecided TEXT;
+DROP VIEW results;
+CREATE VIEW results AS
+SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
+       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
+       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
+       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
+       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
+       sc.first_shock_duration_s, sc.first_shock_rebounds,
+       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
+       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
+       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr,
+       sc.spread_runs, sc.err_spread_low, sc.err_spread_high, sc.srf_spread_low,
+       sc.srf_spread_high, sc.pfr_spread_low, sc.pfr_spread_high,
+       r.estimate_tip AS ref_estimate_tip, r.estimate_impulse AS ref_estimate_impulse,
+       r.estimate_err AS ref_estimate_err, sc.reference_undecided
+FROM points p
+JOIN studies st ON st.study_id = p.study_id
+LEFT JOIN scores sc ON sc.point_id = p.point_id
+LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
+LEFT JOIN runs ru ON ru.run_id = p.run_id;
+)sql",
 };
 
 inline constexpr int kSchemaVersion = static_cast<int>(std::size(kMigrations));

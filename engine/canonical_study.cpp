@@ -1,5 +1,7 @@
 #include "engine/canonical_study.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "compare/score_columns.h"
@@ -31,6 +33,7 @@ ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
   for (const auto& shock : r.shocks_numerical) shocks.push_back(ShockToJson(shock));
   s.shocks_json = shocks.dump();
   s.srf_definition = ToString(r.srf_definition);
+  if (!r.undecided.empty()) s.reference_undecided = fmt::format("{}", fmt::join(r.undecided, ","));
   if (!r.shocks_numerical.empty()) {
     const Shock& f = r.shocks_numerical.front();
     s.first_shock_start_s = f.start_s;

@@ -81,9 +81,10 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
   run.convergence.r_fref = row.r_fref;
   run.convergence.r_fref_check = row.r_fref_check;
   run.convergence.difference = row.convergence;
-  run.convergence.tip.error = row.estimate_tip.value_or(0.0);
-  run.convergence.impulse.error = row.estimate_impulse.value_or(0.0);
-  run.convergence.induced_err.error = row.estimate_err.value_or(0.0);
+  // A reference stored before its parts were has its whole estimate as each part's bound.
+  run.convergence.tip.error = row.estimate_tip.value_or(row.convergence);
+  run.convergence.impulse.error = row.estimate_impulse.value_or(row.convergence);
+  run.convergence.induced_err.error = row.estimate_err.value_or(row.convergence);
   run.wall_s = row.wall_s;
   return run;
 }

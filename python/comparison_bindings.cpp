@@ -121,6 +121,8 @@ void BindComparison(py::module_& m) {
                              [](const Comparison& c) { return ToString(c.result->status); })
       .def_property_readonly("message", [](const Comparison& c) { return c.result->message; })
       .def_property_readonly("scores", [](const Comparison& c) { return ScoreDict(*c.result); })
+      .def_property_readonly("reference_undecided",
+                             [](const Comparison& c) { return c.result->undecided; })
       .def_property_readonly("n_modes", [](const Comparison& c) { return c.result->n_modes; })
       .def_property_readonly("n_elements", [](const Comparison& c) { return c.result->n_elements; })
       .def_property_readonly("dt_used_s",

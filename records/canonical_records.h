@@ -67,6 +67,9 @@ struct ScoreRow {
   std::optional<int> spread_runs;
   std::optional<double> err_spread_low, err_spread_high, srf_spread_low, srf_spread_high,
       pfr_spread_low, pfr_spread_high;
+  // The scores the reference does not decide (compare/reference_decision.h), by name, comma
+  // separated ("err"); NULL when it decides every one.
+  std::optional<std::string> reference_undecided;
 };
 
 inline constexpr Column<ScoreRow> kScoreColumns[] = {
@@ -128,6 +131,10 @@ inline constexpr Column<ScoreRow> kScoreColumns[] = {
      ValueRange::kFraction},
     {"pfr_spread_high", &ScoreRow::pfr_spread_high, "", "the largest PFr over those runs",
      ValueRange::kFraction},
+    {"reference_undecided", &ScoreRow::reference_undecided, "",
+     "the scores the reference's estimate does not decide, by name, comma separated (`err`): "
+     "their values are NULL and the point's message gives the estimate that leaves each "
+     "undecided (docs/fidelity.md; NULL when it decides every score, and before schema 15)"},
 };
 
 // A semi-analytical reference: one per problem, window and reference settings.

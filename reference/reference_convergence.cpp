@@ -20,6 +20,20 @@ double FinerTruncation(double r_fref) { return kReferenceCheckRatio * r_fref; }
 
 double CoarserTruncation(double r_fref) { return std::max(1.0, r_fref / kReferenceCheckRatio); }
 
+namespace {
+
+std::optional<double> ProgressOrder(const std::vector<double>& differences) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < differences.size(); ++k) {
+    if (std::abs(differences[k]) < std::abs(differences[best])) best = k;
+  }
+  if (best == 0 || differences[best] == 0.0) return std::nullopt;
+  return std::log(std::abs(differences.front() / differences[best])) /
+         std::log(kReferenceCheckRatio) / static_cast<double>(best);
+}
+
+}  // namespace
+
 QuantityConvergence GridConvergenceIndex(const std::vector<double>& differences) {
   QuantityConvergence q;
   if (differences.empty()) return q;
@@ -35,6 +49,7 @@ QuantityConvergence GridConvergenceIndex(const std::vector<double>& differences)
   const double fs = q.order ? kSafetyFactorObserved : kSafetyFactorUnobserved;
   const double r_p = std::pow(kReferenceCheckRatio, q.order.value_or(kLowestRegularOrder));
   q.error = fs * q.difference * r_p / (r_p - 1.0);
+  q.progress_order = ProgressOrder(differences);
   return q;
 }
 

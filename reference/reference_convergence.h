@@ -51,6 +51,11 @@ struct QuantityConvergence {
   double difference = 0.0;      // d, from the finer truncation.
   std::optional<double> order;  // p, when observed in the asymptotic range.
   double error = 0.0;           // The grid convergence index.
+  // The order at which the truncations reduced the difference at best, asymptotic or not:
+  // log_3(|d_first| / |d_k|) / k for the smallest |d_k| after the first (k truncations finer),
+  // when it is below |d_first|; nullopt with fewer than two differences or without progress.
+  // What a raise of a reference may expect (compare/reference_decision.h).
+  std::optional<double> progress_order;
 };
 
 // The index from a quantity's differences X_b - X_a between successive truncations three
@@ -58,7 +63,7 @@ struct QuantityConvergence {
 // The convergence is taken as asymptotic when all differences have one sign and each observed
 // order log_3(d_k / d_k+1) is at least kLowestRegularOrder; the index then uses the smallest of
 // them. With fewer than three differences, or otherwise, the order is not observed (Fs = 3,
-// p = kLowestRegularOrder).
+// p = kLowestRegularOrder). The progress order is set from the same differences.
 QuantityConvergence GridConvergenceIndex(const std::vector<double>& differences);
 
 struct ReferenceConvergence {

@@ -360,5 +360,51 @@ TEST(DeriveCriteria, AnUndecidedPointPassesNowhereAndIsNamed) {
             "Err from 0.05 to 0.4 (max 0.1), SRf from 0.79 to 0.9 (min 0.8) over 5 runs");
 }
 
+// A point whose reference does not decide a thresholded score (its Err, at R_k 1e6 over 0.06 s,
+// where the first shock is converged and the chatter after it is not) is undecided unless a
+// decided score fails: it passes nowhere, is named with the reference's message, and a point
+// whose reference decides every thresholded score is judged as before.
+TEST(DeriveCriteria, AScoreTheReferenceDoesNotDecideLeavesThePointUndecided) {
+  ScoredPoint p;
+  p.point_id = 7;
+  p.r_k = 1e6;
+  p.r_ftrunc = 300.0;
+  p.status = RunStatus::kOk;
+  p.scores.Set("srf", 0.95);
+  p.scores.Set("pfr", 0.9);
+  p.reference_undecided = {"err"};
+  p.message = "Err undecided: the reference's estimate on the window's tip is 0.16";
+  p.dt_s = 1e-6;
+  p.dt_sharp_s = p.dt_paper_s = 1e-5;
+  const CriteriaOptions options;
+  EXPECT_TRUE(options.Undecided(p));
+  EXPECT_FALSE(options.Passes(p));
+  EXPECT_EQ(options.Straddling(p), "Err undecided by the reference (" + p.message + ")");
+  EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(p, options)].label, "undecided");
+  const ValidityCriteria c = DeriveCriteria({p}, options);
+  EXPECT_TRUE(c.unscored.empty());
+  ASSERT_EQ(c.undecided.size(), 1u);
+  EXPECT_NE(c.undecided[0].reason.find("point 7 (R_ftrunc 300, dt 0.1 dt_sharp): Err undecided "
+                                       "by the reference"),
+            std::string::npos)
+      << c.undecided[0].reason;
+
+  // A decided SRf below its threshold fails the point, whatever Err would be.
+  p.scores.Set("srf", 0.5);
+  EXPECT_FALSE(options.Undecided(p));
+  EXPECT_EQ(OutcomeCategories()[OutcomeCategoryOf(p, options)].label, "fails thresholds");
+  // A score the reference leaves undecided and no threshold judges decides nothing.
+  p.scores.Set("srf", 0.95);
+  p.scores.Set("err", 0.05);
+  p.reference_undecided = {"pfr"};
+  EXPECT_FALSE(options.Undecided(p));
+  EXPECT_TRUE(options.Passes(p));
+  // With a threshold on it, it does.
+  CriteriaOptions with_pfr;
+  with_pfr.thresholds["pfr"] = 0.8;
+  EXPECT_TRUE(with_pfr.Undecided(p));
+  EXPECT_FALSE(with_pfr.Passes(p));
+}
+
 }  // namespace
 }  // namespace shockmap

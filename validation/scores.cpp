@@ -43,6 +43,7 @@ constexpr ScoreDefinition kScores[] = {
      .required = true,
      .map_low = 0.0,
      .map_high = 0.6,
+     .reads = ReferencePart::kWindowTip,
      .compute = Err},
     {.name = "srf",
      .label = "SRf",
@@ -56,6 +57,7 @@ constexpr ScoreDefinition kScores[] = {
      .required = false,
      .map_low = 0.5,
      .map_high = 1.0,
+     .reads = ReferencePart::kFirstShock,
      .compute = Srf},
     {.name = "pfr",
      .label = "PFr",
@@ -68,10 +70,16 @@ constexpr ScoreDefinition kScores[] = {
      .required = false,
      .map_low = 0.5,
      .map_high = 1.0,
+     // Its peak is the first shock's: judged by the first shock's estimate, its impulse's.
+     .reads = ReferencePart::kFirstShock,
      .compute = Pfr},
 };
 
 }  // namespace
+
+std::string_view ToString(ReferencePart part) {
+  return part == ReferencePart::kWindowTip ? "the window's tip" : "the first shock";
+}
 
 std::string ScoreDefinition::ThresholdKey() const {
   return std::string(name) + (better == Better::kSmaller ? "_max" : "_min");

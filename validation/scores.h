@@ -40,6 +40,13 @@ struct ScoringInput {
   ShockSegmentationOptions segmentation{};
 };
 
+// The part of the reference a score reads, by whose estimate the reference decides it
+// (compare/reference_decision.h): the tip over the whole window, or the first shock alone.
+enum class ReferencePart { kWindowTip, kFirstShock };
+
+// "the window's tip", "the first shock".
+std::string_view ToString(ReferencePart part);
+
 // Which values of a score are better: smaller ones (its threshold is the largest acceptable
 // value, key <name>_max) or larger ones (the smallest acceptable, key <name>_min).
 enum class Better { kSmaller, kLarger };
@@ -60,6 +67,7 @@ struct ScoreDefinition {
   // is scored); false when a missing value passes it (SRf when neither run has a shock).
   bool required = false;
   double map_low = 0.0, map_high = 1.0;  // The colour range of validity maps.
+  ReferencePart reads = ReferencePart::kWindowTip;
   // Nothing when there is nothing to compare. May throw std::invalid_argument (as the signal
   // functions of validation/ do).
   std::optional<double> (*compute)(const ScoringInput& input) = nullptr;

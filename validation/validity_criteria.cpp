@@ -39,44 +39,65 @@ bool CriteriaOptions::Passes(const ScoredPoint& p) const {
   return true;
 }
 
+bool ScoredPoint::ReferenceUndecides(std::string_view score) const {
+  return std::ranges::find(reference_undecided, score) != reference_undecided.end();
+}
+
 namespace {
 
-// What the spread of score `name` says of `threshold`: nothing (no spread), met or failed in
-// every run, or both.
-enum class SpreadVerdict { kNone, kMet, kFailed, kStraddles };
+// What a point says of score `name` against `threshold`: met or failed (in every perturbed run
+// when it has a spread, else in its run), or open: its spread straddles the threshold, or its
+// reference does not decide it. A score without a spread at a point with spreads says nothing
+// (kNone).
+enum class Verdict { kNone, kMet, kFailed, kOpen };
 
-SpreadVerdict VerdictOfSpread(const ScoredPoint& p, std::string_view name, double threshold) {
-  const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
-  if (!low || !high) return SpreadVerdict::kNone;
+Verdict VerdictOf(const ScoredPoint& p, std::string_view name, double threshold) {
+  if (p.ReferenceUndecides(name)) return Verdict::kOpen;
   const ScoreDefinition* score = FindScore(name);
+  if (p.spread_runs == 0) {
+    const std::optional<double> value = p.scores[name];
+    const bool meets = value ? score->Meets(*value, threshold) : !score->required;
+    return meets ? Verdict::kMet : Verdict::kFailed;
+  }
+  const std::optional<double> low = p.spread_low[name], high = p.spread_high[name];
+  if (!low || !high) return Verdict::kNone;
   const bool low_meets = score->Meets(*low, threshold), high_meets = score->Meets(*high, threshold);
-  if (low_meets != high_meets) return SpreadVerdict::kStraddles;
-  return low_meets ? SpreadVerdict::kMet : SpreadVerdict::kFailed;
+  if (low_meets != high_meets) return Verdict::kOpen;
+  return low_meets ? Verdict::kMet : Verdict::kFailed;
 }
 
 }  // namespace
 
 bool CriteriaOptions::Undecided(const ScoredPoint& p) const {
-  if (p.status != RunStatus::kOk || p.spread_runs == 0) return false;
-  bool straddles = false;
+  if (p.status != RunStatus::kOk) return false;
+  bool open = false;
   for (const auto& [name, threshold] : thresholds) {
-    const SpreadVerdict v = VerdictOfSpread(p, name, threshold);
-    if (v == SpreadVerdict::kFailed) return false;  // Fails in every run: decided.
-    straddles = straddles || v == SpreadVerdict::kStraddles;
+    const Verdict v = VerdictOf(p, name, threshold);
+    if (v == Verdict::kFailed) return false;  // Fails decidedly: the point is decided.
+    open = open || v == Verdict::kOpen;
   }
-  return straddles;
+  return open;
 }
 
 std::string CriteriaOptions::Straddling(const ScoredPoint& p) const {
-  std::vector<std::string> each;
+  std::vector<std::string> straddling, by_reference;
   for (const auto& [name, threshold] : thresholds) {
-    if (VerdictOfSpread(p, name, threshold) != SpreadVerdict::kStraddles) continue;
+    if (VerdictOf(p, name, threshold) != Verdict::kOpen) continue;
     const ScoreDefinition* score = FindScore(name);
-    each.push_back(fmt::format("{} from {:.3g} to {:.3g} ({} {:g})", score->label,
-                               *p.spread_low[name], *p.spread_high[name],
-                               score->better == Better::kSmaller ? "max" : "min", threshold));
+    if (p.ReferenceUndecides(name)) {
+      by_reference.push_back(fmt::format("{} undecided by the reference", score->label));
+      continue;
+    }
+    straddling.push_back(fmt::format("{} from {:.3g} to {:.3g} ({} {:g})", score->label,
+                                     *p.spread_low[name], *p.spread_high[name],
+                                     score->better == Better::kSmaller ? "max" : "min", threshold));
   }
-  return fmt::format("{} over {} runs", fmt::join(each, ", "), p.spread_runs);
+  std::vector<std::string> each;
+  if (!straddling.empty())
+    each.push_back(fmt::format("{} over {} runs", fmt::join(straddling, ", "), p.spread_runs));
+  if (!by_reference.empty())
+    each.push_back(fmt::format("{} ({})", fmt::join(by_reference, ", "), p.message));
+  return fmt::format("{}", fmt::join(each, "; "));
 }
 
 std::string CriteriaOptions::Judged(const ScoredPoint& p) const {
@@ -294,9 +315,9 @@ std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& u
   if (undecided.empty()) return std::nullopt;
   const SetAsideText t = Describe(undecided);
   return fmt::format(
-      "the criteria's study left {} undecided, at R_k = {}: their scores' spread under "
-      "perturbations that leave the setting as it is straddles a threshold, so they make no "
-      "setting pass ({})",
+      "the criteria's study left {} undecided, at R_k = {}: a score's spread under "
+      "perturbations that leave the setting as it is straddles its threshold, or their reference "
+      "does not decide a thresholded score, so they make no setting pass ({})",
       t.count, t.at, t.first);
 }
 

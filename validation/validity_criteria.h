@@ -37,6 +37,11 @@ struct ScoredPoint {
   // (compare/score_spread.h), when its study took them (spread_runs > 0).
   int spread_runs = 0;
   ScoreValues spread_low, spread_high;
+  // The scores its reference does not decide, by name (their values absent; `message` says
+  // why: the reference's estimate on the part of it they read).
+  std::vector<std::string> reference_undecided;
+
+  bool ReferenceUndecides(std::string_view score) const;
 
   double DtRatio() const { return dt_s / dt_sharp_s; }
 };
@@ -52,11 +57,15 @@ struct CriteriaOptions {
   // Ended ok, its verdict decided, and meets every threshold: a score without a value fails
   // when it is required, passes otherwise (validation/scores.h).
   bool Passes(const ScoredPoint& p) const;
-  // Ended ok, a thresholded score's spread over the point's perturbed runs holds values on
-  // both sides of its threshold, and no score fails in every run: whether the setting passes
-  // is not a property of it.
+  // Ended ok, a thresholded score's verdict is open and no decided score fails: its spread
+  // over the point's perturbed runs holds values on both sides of its threshold (whether the
+  // setting passes is not a property of it), or its reference does not decide it
+  // (ScoredPoint::reference_undecided). A score fails decidedly when it fails in every
+  // perturbed run, or, without spreads, in the point's run.
   bool Undecided(const ScoredPoint& p) const;
-  // "Err from 0.071 to 0.13 (max 0.1) over 5 runs": the spreads that straddle a threshold.
+  // Why an undecided point's verdicts are open: "Err from 0.071 to 0.13 (max 0.1) over 5
+  // runs" for the spreads that straddle a threshold, "Err undecided by the reference (<its
+  // message>)" for the thresholded scores the reference does not decide.
   std::string Straddling(const ScoredPoint& p) const;
   // "Err = 0.12 (max 0.1), SRf = 0.9 (min 0.8)": the point's value of each thresholded score.
   std::string Judged(const ScoredPoint& p) const;
@@ -140,6 +149,7 @@ ValidityCriteria DeriveCriteria(const std::vector<ScoredPoint>& points,
 std::optional<std::string> UnscoredWarning(const ValidityCriteria& criteria);
 // "the criteria's study left 12 points undecided, at R_k = ...", as UnscoredWarning, for the
 // R_k of `undecided` (the criteria's, or those an advice rests on); empty when it is.
+// Undecided by a straddling spread or by a reference that does not decide a thresholded score.
 std::optional<std::string> UndecidedWarning(const std::vector<PointsSetAside>& undecided);
 
 struct Contradiction {

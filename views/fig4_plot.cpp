@@ -31,13 +31,15 @@ void AddCurves(const std::vector<ScoredPoint>& points, const std::string& scheme
 
 std::string Value(const std::optional<double>& v) { return v ? fmt::format("{}", *v) : "NaN"; }
 
-// The R_k at which some curve's point has no score because its reference did not converge:
-// drawn as dashed verticals, so that the curves' gaps there are not read as data.
+// The R_k at which some curve's point has no score, or lacks one, because its reference did not
+// converge or does not decide it: drawn as dashed verticals, so that the curves' gaps there are
+// not read as data.
 std::set<double> UnconvergedRk(const std::map<std::pair<std::string, double>, Curve>& curves) {
   std::set<double> r_k;
   for (const auto& [key, curve] : curves) {
     for (const auto& [rk, p] : curve.by_rk) {
-      if (p->status == RunStatus::kReferenceUnconverged) r_k.insert(rk);
+      if (p->status == RunStatus::kReferenceUnconverged || !p->reference_undecided.empty())
+        r_k.insert(rk);
     }
   }
   return r_k;
@@ -58,7 +60,7 @@ std::string UnconvergedMarks(const std::set<double>& r_k) {
 std::string UnconvergedKey(const std::set<double>& r_k) {
   return r_k.empty() ? ""
                      : ", NaN with lines dt 3 lw 2 lc rgb '#969696' title 'R_k left out: "
-                       "reference unconverged (not scored)'";
+                       "reference unconverged (not scored, or a score undecided)'";
 }
 
 // The smallest and largest R_k of the curves.

@@ -41,8 +41,9 @@ Frame FrameOf(const MapGrid& grid) {
   return f;
 }
 
-std::string Scored(const std::optional<double>& v) {
-  return v ? fmt::format("{:.4f}", *v) : "not scored";
+std::string Scored(const ScoredPoint& p, std::string_view score) {
+  if (const std::optional<double> v = p.scores[score]) return fmt::format("{:.4f}", *v);
+  return p.ReferenceUndecides(score) ? "undecided by the reference" : "not scored";
 }
 
 // One cell: filled with `fill`; its <title> opens with `shown` (the value the fill shows, or
@@ -54,8 +55,8 @@ std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th
   const std::string status = ToString(p.status);
   std::string scores, data;
   for (const ScoreDefinition& score : Scores()) {
-    scores += fmt::format("{} = {}, ", score.label, Scored(p.scores[score.name]));
-    data += fmt::format("data-{}=\"{}\" ", score.name, Scored(p.scores[score.name]));
+    scores += fmt::format("{} = {}, ", score.label, Scored(p, score.name));
+    data += fmt::format("data-{}=\"{}\" ", score.name, Scored(p, score.name));
   }
   const std::string spread = th.Undecided(p) ? "; " + th.Straddling(p) : "";
   const std::string tip = fmt::format(

@@ -1,6 +1,7 @@
 #include "views/scored_points.h"
 
 #include <limits>
+#include <ranges>
 #include <variant>
 
 #include "core/input_error.h"
@@ -15,6 +16,24 @@ namespace {
 
 // More runs than this under perturbations is a corrupt row (compare/score_spread.h makes 7).
 constexpr std::int64_t kMaxSpreadRuns = 1000;
+
+// The names of a stored reference_undecided cell ("err,pfr"); DbError naming the point unless
+// each is a registered score.
+std::vector<std::string> UndecidedScores(const std::string& cell, const std::string& database_path,
+                                         const std::string& what) {
+  std::vector<std::string> names;
+  for (const auto part : std::views::split(cell, ',')) {
+    std::string name(part.begin(), part.end());
+    if (FindScore(name) == nullptr) {
+      ThrowCorrupt(database_path, what,
+                   "reference_undecided holds \"" + cell +
+                       "\" (registered score names, comma "
+                       "separated)");
+    }
+    names.push_back(std::move(name));
+  }
+  return names;
+}
 
 }  // namespace
 
@@ -114,6 +133,8 @@ std::vector<ScoredPoint> LoadScoredPoints(const std::string& database_path,
                           std::numeric_limits<std::int64_t>::max());
     p.cpu_s = NumberIn(row["cpu_s"]).value_or(0.0);
     if (const auto* message = std::get_if<std::string>(&row["message"])) p.message = *message;
+    if (const auto* undecided = std::get_if<std::string>(&row["reference_undecided"]))
+      p.reference_undecided = UndecidedScores(*undecided, database_path, what);
     // Every stored value of its type and range, before the point is used.
     CheckStoredCells(database_path, what, r, i, kPointParameterColumns);
     CheckStoredCells(database_path, what, r, i, kScoreColumns);

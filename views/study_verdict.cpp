@@ -185,8 +185,10 @@ std::string Failures(const ValidityCriteria& c, const std::vector<ScoredPoint>& 
     by += fmt::format("{}{} by {}", by.empty() ? "" : ", ", n, scores);
   }
   if (undecided > 0) {
-    by += fmt::format("{}{} undecided: their scores over perturbed runs straddle a threshold",
-                      by.empty() ? "" : ", ", undecided);
+    by += fmt::format(
+        "{}{} undecided: a score's spread over perturbed runs straddles its threshold, or their "
+        "reference does not decide a thresholded score",
+        by.empty() ? "" : ", ", undecided);
   }
   if (!by.empty()) s += " (" + by + ")";
   for (const auto& [status, o] : others) {
