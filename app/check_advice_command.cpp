@@ -271,7 +271,7 @@ void AddCheckAdviceCommand(CLI::App& app) {
           ->capture_default_str();
   cmd->add_option("--members", flags->members,
                   "members per clearance state and rung (default: the study file's)")
-      ->check(CLI::Range(1, 100000));
+      ->check(WholeNumberIn(1, 100000));
   cmd->add_option("--window-s", flags->window_s,
                   "simulated seconds of every member, from the start (default: the study file's "
                   "window): the largest forces of the shock's first impacts at a fraction of the "
@@ -281,7 +281,7 @@ void AddCheckAdviceCommand(CLI::App& app) {
                   "the clearance states to check, by name (default: every state of the study)")
       ->delimiter(',');
   cmd->add_option("--jobs", flags->jobs, "worker threads (default: number of cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(WholeNumberIn(1, 1024));
   cmd->add_option("--quantile", flags->options.quantile, "the sizing quantile, in (0, 1)")
       ->capture_default_str()
       ->check(StrictlyBetween(0.0, 1.0));
@@ -293,7 +293,7 @@ void AddCheckAdviceCommand(CLI::App& app) {
   cmd->add_option("--max-rungs", flags->max_rungs,
                   "rungs at most (1/3, 1, 3, 9, ... times the advised truncations)")
       ->capture_default_str()
-      ->check(CLI::Range(kFirstRungs, 12));
+      ->check(WholeNumberIn(kFirstRungs, 12));
   cmd->add_option("--write-study", flags->write_study,
                   "write the ladder's study file here instead of running it (to run it under "
                   "MPI with `study run`)");

@@ -114,6 +114,7 @@ CLI::Validator FiniteIn(double lo, bool strict, double hi) {
         if (!std::isfinite(value) || value < lo || (strict && value == lo) || value > hi) {
           return "value " + text + " must be " + description;
         }
+        text = std::to_string(value);  // CLI11 would read a leading 0 as octal.
         return "";
       },
       description);
@@ -149,6 +150,7 @@ CLI::Validator WholeNumberIn(long long lo, long long hi) {
         if (error != std::errc() || value < lo || value > hi) {
           return "value " + text + " must be " + description;
         }
+        text = std::to_string(value);  // CLI11 would read a leading 0 as octal.
         return "";
       },
       description);

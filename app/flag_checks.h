@@ -27,7 +27,8 @@ inline CLI::Validator Positive() { return FiniteAbove(0.0, true); }
 CLI::Validator StrictlyBetween(double lo, double hi);
 // A whole number written in decimal digits (an optional leading '-'), from lo to hi: checked
 // on the text, so that a value out of the option's type is named instead of clamped or
-// refused as unconvertible, and "010" or "0x10" are not read as octal or hexadecimal.
+// refused as unconvertible, and "0x10" is refused and "010" read as 10, not as hexadecimal or
+// octal.
 CLI::Validator WholeNumberIn(long long lo, long long hi);
 
 }  // namespace shockmap

@@ -200,7 +200,7 @@ void AddSizingCommand(CLI::App& app) {
                    "a setting agrees with the refined one where their intervals, widened by "
                    "this fraction of the refined estimate, overlap")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(FiniteIn(0.0, false, 1.0));
   sizing->add_option("--hottest-among", flags->options.hottest_among,
                      "the hottest zone is the highest of the zones whose name holds this text, "
                      "e.g. -pin_ for the wires between pins (default: every zone)");

@@ -247,7 +247,7 @@ void AddStudyCommand(CLI::App& app) {
   run->add_option("--jobs", flags->run.jobs,
                   "worker threads (default: number of cores; under MPI: per worker rank, "
                   "default 1)")
-      ->check(CLI::Range(1, 1024));
+      ->check(WholeNumberIn(1, 1024));
   run->add_flag("--retry-failed", flags->run.retry_failed, "compute failed points again");
   run->add_option("--rank-timeout-s", flags->rank_timeout_s,
                   "under MPI: seconds a worker rank may send nothing (not even its heartbeat, "

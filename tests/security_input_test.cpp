@@ -346,6 +346,18 @@ TEST_F(Security, WholeNumberFlagsNameTheValueAsGiven) {
   EXPECT_FALSE(std::filesystem::exists(Path("p")));
 }
 
+// A leading zero is decimal: 013 is thirteen (refused above 12), not octal eleven.
+TEST_F(Security, WholeNumberFlagsWithALeadingZeroAreDecimal) {
+  const std::string study = kSource + "/studies/bundle_hex_ensemble.json";
+  Refused("check-advice " + study + " --db DIR/s.db --max-rungs 013",
+          {"--max-rungs", "value 013 must be a whole number from 3 to 12"});
+  Refused("study run " + study + " --db DIR/s.db --jobs 02000",
+          {"--jobs", "value 02000 must be a whole number from 1 to 1024"});
+  Refused("check-advice " + study + " --db DIR/s.db --members 0x10",
+          {"--members", "value '0x10' must be a whole number from 1 to 100000"});
+  EXPECT_FALSE(std::filesystem::exists(Path("s.db")));
+}
+
 TEST_F(Security, CompareWindowInsideOneStepIsRefusedWithTheStep) {
   const std::string out = Refused("compare --rk 100 --rftrunc 10 --window 1e-7 --out DIR/c",
                                   {"--window", "1e-07 s window is shorter than one time step",
