@@ -1,35 +1,35 @@
 #include "core/structure_modes.h"
 
-#include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "core/input_error.h"
+#include "core/stiffness_cholesky.h"
 #include "core/structure_factorization.h"
 
 namespace shockmap {
 namespace {
 
-// Spectra's operator y = (K - sigma M)^-1 x over a factorization made beforehand.
-class FactorizedShiftSolve {
+// Spectra's operator: the flexibility's symmetric standard form (StiffnessCholesky), whose
+// largest eigenvalues are the lowest modes' 1 / omega^2. Lanczos on it keeps the Euclidean
+// inner product, so it needs no product with M beyond the operator's own.
+class FlexibilityOperator {
  public:
   using Scalar = double;
-  explicit FactorizedShiftSolve(const ShiftedFactorization& factor) : factor_(factor) {}
-  Eigen::Index rows() const { return factor_.Size(); }
-  Eigen::Index cols() const { return factor_.Size(); }
-  void set_shift([[maybe_unused]] double sigma) const { assert(sigma == factor_.Shift()); }
-  void perform_op(const double* x, double* y) const { factor_.Solve(x, y); }
+  explicit FlexibilityOperator(const StiffnessCholesky& k) : k_(k) {}
+  Eigen::Index rows() const { return k_.Size(); }
+  Eigen::Index cols() const { return k_.Size(); }
+  void perform_op(const double* x, double* y) const { k_.ApplyFlexibilityForm(x, y); }
 
  private:
-  const ShiftedFactorization& factor_;
+  const StiffnessCholesky& k_;
 };
 
 // Ritz values are converged to this relative residual; Rayleigh-Ritz then squares the error.
@@ -40,30 +40,6 @@ constexpr int kDenseSize = 400;
 // Modes whose 1 / omega^2 is below this share of the largest are taken as the infinite
 // frequencies of a singular mass (its null combinations), never as modes.
 constexpr double kFiniteShare = 1e-13;
-
-std::string DofLabel(const FeStructure& s, int row) {
-  return "node " + std::to_string(s.dofs[row].node) + " " +
-         std::string(DofComponentName(s.dofs[row].component));
-}
-
-std::string ThreeDigits(double value) {
-  std::ostringstream text;
-  text.precision(3);
-  text << value;
-  return text.str();
-}
-
-// The factorization of K, refused when K is not positive definite.
-ShiftedFactorization StiffnessFactorization(const FeStructure& s) {
-  ShiftedFactorization factor(s, 0.0);
-  const auto [row, ratio] = factor.WeakestPivot();
-  if (!factor.Succeeded() || ratio <= 1e-13) {
-    throw InputError("structure '" + s.name + "': its stiffness is not positive definite (the " +
-                     "pivot of " + DofLabel(s, row) + " is " + ThreeDigits(ratio) +
-                     " of its diagonal): the supports must remove every rigid motion");
-  }
-  return factor;
-}
 
 // Rayleigh-Ritz in the span of `shapes`: the best omega^2 and a mass-orthonormal basis of
 // each cluster, ascending.
@@ -92,25 +68,21 @@ Eigen::MatrixXd DenseLowestShapes(const FeStructure& s, int count) {
   return dense.eigenvectors().rightCols(count).rowwise().reverse();
 }
 
-Eigen::MatrixXd LanczosLowestShapes(const FeStructure& s, const ShiftedFactorization& factor,
-                                    int count) {
-  FactorizedShiftSolve op(factor);
-  Spectra::SparseSymMatProd<double> mass(s.mass);
+Eigen::MatrixXd LanczosLowestShapes(const FeStructure& s, const StiffnessCholesky& k, int count) {
+  FlexibilityOperator op(k);
   const int subspace = std::min(s.Size(), std::max(2 * count + 1, count + 20));
-  Spectra::SymGEigsShiftSolver<FactorizedShiftSolve, Spectra::SparseSymMatProd<double>,
-                               Spectra::GEigsMode::ShiftInvert>
-      solver(op, mass, count, subspace, factor.Shift());
+  Spectra::SymEigsSolver<FlexibilityOperator> solver(op, count, subspace);
   solver.init();
-  solver.compute(Spectra::SortRule::LargestMagn, kLanczosIterations, kLanczosTolerance,
-                 Spectra::SortRule::SmallestAlge);
+  solver.compute(Spectra::SortRule::LargestAlge, kLanczosIterations, kLanczosTolerance,
+                 Spectra::SortRule::LargestAlge);
   if (solver.info() != Spectra::CompInfo::Successful) {
     throw std::runtime_error("structure '" + s.name +
                              "': the Lanczos iteration did not converge on its modes");
   }
-  return solver.eigenvectors();
+  return k.ShapesOf(solver.eigenvectors());
 }
 
-ModalBasis LowestModes(const FeStructure& s, const ShiftedFactorization& factor, int count) {
+ModalBasis LowestModes(const FeStructure& s, const StiffnessCholesky& k, int count) {
   count = std::min(count, s.Size());
   if (count <= 0) return {Eigen::VectorXd(0), Eigen::MatrixXd(s.Size(), 0)};
   const bool dense = s.Size() <= kDenseSize || 2 * count + 1 > s.Size();
@@ -119,8 +91,7 @@ ModalBasis LowestModes(const FeStructure& s, const ShiftedFactorization& factor,
                      std::to_string(s.Size()) +
                      " DOFs are too many: at most half its DOFs may be asked for");
   }
-  return RayleighRitz(s,
-                      dense ? DenseLowestShapes(s, count) : LanczosLowestShapes(s, factor, count));
+  return RayleighRitz(s, dense ? DenseLowestShapes(s, count) : LanczosLowestShapes(s, k, count));
 }
 
 double Omega2(double f_hz) { return std::pow(2.0 * std::numbers::pi * f_hz, 2); }
@@ -128,17 +99,17 @@ double Omega2(double f_hz) { return std::pow(2.0 * std::numbers::pi * f_hz, 2); 
 }  // namespace
 
 ModalBasis LowestStructureModes(const FeStructure& s, int count) {
-  return LowestModes(s, StiffnessFactorization(s), count);
+  return LowestModes(s, StiffnessCholesky(s), count);
 }
 
 ModalBasis StructureModesBelow(const FeStructure& s, double f_trunc_hz) {
-  const ShiftedFactorization stiffness = StiffnessFactorization(s);
+  const StiffnessCholesky stiffness(s);
   const int count = ShiftedFactorization(s, Omega2(f_trunc_hz)).NegativePivots();
   return ModesBelow(LowestModes(s, stiffness, count), f_trunc_hz);
 }
 
 Eigen::MatrixXd StaticFlexibility(const FeStructure& s, const std::vector<int>& rows) {
-  const ShiftedFactorization factor = StiffnessFactorization(s);
+  const StiffnessCholesky factor(s);
   Eigen::MatrixXd flexibility(rows.size(), rows.size());
   for (std::size_t j = 0; j < rows.size(); ++j) {
     const Eigen::VectorXd column = factor.Solve(Eigen::VectorXd::Unit(s.Size(), rows[j]));
@@ -165,7 +136,7 @@ double LocalStiffness(const FeStructure& s, int node, const Eigen::Vector3d& nor
     throw InputError("structure '" + s.name + "': node " + std::to_string(node) +
                      " has no free translation along the normal");
   }
-  return 1.0 / w.dot(StiffnessFactorization(s).Solve(w));
+  return 1.0 / w.dot(StiffnessCholesky(s).Solve(w));
 }
 
 }  // namespace shockmap

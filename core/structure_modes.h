@@ -1,8 +1,8 @@
 #pragma once
-// Modes, static and residual flexibility of an FE structure (docs/structures.md): shift-invert
-// Lanczos (Spectra) on one sparse LDL^T factorization of K, then Rayleigh-Ritz in the converged
-// subspace, so that each omega^2 is a Rayleigh quotient phi^T K phi (accurate to about eps
-// cond(K) times omega^2, squared in the shape's error).
+// Modes, static and residual flexibility of an FE structure (docs/structures.md): Lanczos
+// (Spectra) on the flexibility K^-1 M in the symmetric standard form L^-1 M L^-T given by one
+// sparse Cholesky factorization K = L L^T (shift-invert at zero shift), then Rayleigh-Ritz in
+// the converged subspace, so that each omega^2 is a Rayleigh quotient phi^T K phi / phi^T M phi.
 
 #include <Eigen/Dense>
 #include <vector>
@@ -15,7 +15,7 @@ namespace shockmap {
 // The modes of K phi = omega^2 M phi (paper eq. 6) with f <= f_trunc_hz, ascending,
 // mass-normalized (phi^T M phi = I), signs as NormalizeModeSigns; repeated frequencies give a
 // mass-orthonormal basis of their eigenspace (in no particular order). Their number is counted
-// first by Sylvester's inertia of K - (2 pi f_trunc)^2 M.
+// first by Sylvester's inertia of K - (2 pi f_trunc)^2 M (an LDL^T factorization).
 // Throws InputError when K is not positive definite (the supports leave a rigid motion).
 ModalBasis StructureModesBelow(const FeStructure& s, double f_trunc_hz);
 // The `count` lowest modes (all the finite ones when count is larger), as above.

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <fstream>
 #include <numbers>
 
 #include "core/input_error.h"
 #include "core/structure_modes.h"
+#include "formats/calculix_job.h"
 #include "formats/structure_files.h"
 #include "tests/structure_chain.h"
 #include "tests/temp_dir.h"
@@ -157,6 +159,19 @@ TEST_F(StructureFiles, WrittenAndReadBackUnchanged) {
     EXPECT_EQ(back.dofs[i].component, s.dofs[i].component);
   }
   EXPECT_EQ(back.node_coordinates_m, s.node_coordinates_m);
+}
+
+// The copy ccx runs on: the model before the first *STEP, that step's supports, the
+// matrix-storage step; an included deck's path made absolute; later steps left out.
+TEST_F(StructureFiles, TheMatrixStorageDeckKeepsTheModelAndTheFirstStepsSupports) {
+  std::ofstream(Path("model.inp"))
+      << "** comment\n*INCLUDE, INPUT=mesh.inp\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n"
+         "*BOUNDARY\n2, 2, 2, 0.001\n*CLOAD\n3, 2, 1.\n*END STEP\n*STEP\n"
+         "*BOUNDARY\n4, 1, 1\n*END STEP\n";
+  const std::string deck = MatrixStorageDeck(Path("model.inp"));
+  EXPECT_EQ(deck, "** comment\n*INCLUDE, INPUT=" + Path("mesh.inp") +
+                      "\n*BOUNDARY\n1, 1, 3\n*BOUNDARY\n2, 2, 2, 0.001\n"
+                      "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n");
 }
 
 }  // namespace
