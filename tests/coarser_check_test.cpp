@@ -58,7 +58,7 @@ TEST(CoarserCheck, IsTheDifferenceFromAThirdOfTheTruncationAndNeverRaises) {
   EXPECT_GT(c.difference, o.target_error);
   // Its refusal says how it was checked and that it is not raised, not "above R_fref / 3".
   const std::string message = UnconvergedMessage({p, o, kWindow}, c, o.target_error);
-  EXPECT_NE(message.find("checked against R_fref = 1000"), std::string::npos) << message;
+  EXPECT_NE(message.find("R_fref = 3000 checked against 1000"), std::string::npos) << message;
   EXPECT_NE(message.find("scoring.reference.check = \"coarser\""), std::string::npos) << message;
   EXPECT_NE(message.find("R_fref above 3000 is needed"), std::string::npos) << message;
 }

@@ -434,8 +434,8 @@ void CheckVerdict(const Place& at) {
   const auto points = LoadCriteriaPoints(at.db, "quick");
   const auto undecided =
       std::ranges::count_if(points, [&](const ScoredPoint& p) { return thresholds.Undecided(p); });
-  EXPECT_EQ(text.find(fmt::format("{} undecided: their scores over perturbed runs", undecided)) !=
-                std::string::npos,
+  EXPECT_EQ(text.find(fmt::format("{} undecided: a score's spread over perturbed runs",
+                                  undecided)) != std::string::npos,
             undecided > 0)
       << text;
   // The criteria are a table, one row per studied R_k.

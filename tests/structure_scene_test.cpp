@@ -169,8 +169,8 @@ TEST_F(StructureScene, CantileverFromMatricesGivesTheBeamsOutputs) {
 }
 
 // R_k = k_s n^T K^-1 n at the tip node is the beam's k_s / (3 EI / L^3) = 3000, from the
-// structure's static flexibility as from the beam's elements (measured: equal bit for bit,
-// 3000 + 3e-10), and the truncation advised is the same.
+// structure's static flexibility as from the beam's elements (measured: 3000 + 3e-10), and the
+// truncation advised is the same to rounding.
 TEST_F(StructureScene, AdvisedStiffnessRatioIsTheBeams) {
   const std::string baseline =
       std::string(SHOCKMAP_SOURCE_DIR) + "/studies/baselines/paper_fig4.json";
@@ -183,7 +183,7 @@ TEST_F(StructureScene, AdvisedStiffnessRatioIsTheBeams) {
   EXPECT_NEAR(structure.zones[0].r_k_a, beam.zones[0].r_k_a, 1e-10 * beam.zones[0].r_k_a);
   ASSERT_EQ(structure.beams.size(), 1u);
   EXPECT_EQ(structure.beams[0].name, "rod");
-  EXPECT_EQ(structure.beams[0].r_ftrunc, beam.beams[0].r_ftrunc);
+  EXPECT_NEAR(structure.beams[0].r_ftrunc, beam.beams[0].r_ftrunc, 1e-9 * beam.beams[0].r_ftrunc);
   EXPECT_NEAR(structure.dt_sharp_s, beam.dt_sharp_s, 1e-9 * beam.dt_sharp_s);
 }
 
