@@ -292,8 +292,10 @@ std::string HtmlMetricMaps(const std::vector<ScoredPoint>& points, const MapGrid
     const bool scored = std::ranges::any_of(
         grid.cells, [&](const MapCell& c) { return c.point->scores[score.name].has_value(); });
     if (!scored) continue;
-    const ValidityCriteria own = MetricCriteria(points, criteria, score.name)
-                                     .value_or(ValidityCriteria{.options = {.thresholds = {}}});
+    ValidityCriteria unjudged;  // Without a threshold no cell fails.
+    unjudged.options.thresholds = {};
+    const ValidityCriteria own =
+        MetricCriteria(points, criteria, score.name).value_or(std::move(unjudged));
     scales.emplace_back(ScoreScale(grid, score, own.options), own);
   }
   scales.emplace_back(CostScale(grid), criteria);

@@ -120,14 +120,14 @@ std::vector<SettingDifference> SettingDifferences(const DiffedStudy& a, const Di
 std::vector<CriteriaRow> CriteriaRows(const ValidityCriteria& a, const ValidityCriteria& b,
                                       double tolerance) {
   std::vector<CriteriaRow> rows;
-  for (const RkBoundary& boundary : a.boundary) rows.push_back({boundary.r_k, boundary, {}});
+  for (const RkBoundary& boundary : a.boundary) rows.push_back({boundary.r_k, boundary, {}, {}});
   for (const RkBoundary& boundary : b.boundary) {
     const auto same = std::ranges::find_if(
         rows, [&](const CriteriaRow& r) { return Close(r.r_k, boundary.r_k, tolerance); });
     if (same != rows.end()) {
       same->b = boundary;
     } else {
-      rows.push_back({boundary.r_k, {}, boundary});
+      rows.push_back({boundary.r_k, {}, boundary, {}});
     }
   }
   std::ranges::sort(rows, {}, &CriteriaRow::r_k);

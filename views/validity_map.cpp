@@ -260,7 +260,9 @@ void DrawValidityMap(const std::string& study, const std::vector<ScoredPoint>& p
   const auto data_file = std::filesystem::path(file).replace_extension(".dat");
   const std::optional<ValidityCriteria> drawn = MetricCriteria(points, criteria, options.metric);
   // Without a threshold no cell fails: the cells' categories are their runs' statuses alone.
-  const ValidityCriteria judged = drawn.value_or(ValidityCriteria{.options = {.thresholds = {}}});
+  ValidityCriteria unjudged;
+  unjudged.options.thresholds = {};
+  const ValidityCriteria judged = drawn.value_or(unjudged);
   WriteMapData(grid, judged, options.metric, data_file);
   const MetricStyle style = StyleOf(grid, options.metric, judged.options);
   const bool by_dt = options.y == MapAxis::kDt;
