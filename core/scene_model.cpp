@@ -111,6 +111,13 @@ BeamModes MakeModes(const SceneBeam& b, const Truncation& truncation,
   return m;
 }
 
+// Sorts `values` ascending and keeps one of each.
+template <typename T>
+void SortDistinct(std::vector<T>& values) {
+  std::sort(values.begin(), values.end());
+  values.erase(std::unique(values.begin(), values.end()), values.end());
+}
+
 // Distinct heights of the zones touching each beam, when static correction is asked.
 std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
   std::vector<std::vector<double>> heights(scene.beams.size());
@@ -119,10 +126,7 @@ std::vector<std::vector<double>> StaticHeights(const Scene& scene) {
     if (z.beam_a >= 0) heights[z.beam_a].push_back(z.height_m);
     if (z.beam_b >= 0) heights[z.beam_b].push_back(z.height_m);
   }
-  for (auto& h : heights) {
-    std::sort(h.begin(), h.end());
-    h.erase(std::unique(h.begin(), h.end()), h.end());
-  }
+  for (auto& h : heights) SortDistinct(h);
   return heights;
 }
 
@@ -134,10 +138,7 @@ std::vector<std::vector<int>> StaticNodes(const Scene& scene) {
     if (z.structure_a >= 0) nodes[z.structure_a].push_back(z.node_a);
     if (z.structure_b >= 0) nodes[z.structure_b].push_back(z.node_b);
   }
-  for (auto& n : nodes) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
+  for (auto& n : nodes) SortDistinct(n);
   return nodes;
 }
 
