@@ -1,7 +1,6 @@
 #include "views/scored_points.h"
 
 #include <limits>
-#include <ranges>
 #include <variant>
 
 #include "core/input_error.h"
@@ -22,8 +21,10 @@ constexpr std::int64_t kMaxSpreadRuns = 1000;
 std::vector<std::string> UndecidedScores(const std::string& cell, const std::string& database_path,
                                          const std::string& what) {
   std::vector<std::string> names;
-  for (const auto part : std::views::split(cell, ',')) {
-    std::string name(part.begin(), part.end());
+  if (cell.empty()) return names;
+  for (std::size_t begin = 0, end = 0; end != std::string::npos; begin = end + 1) {
+    end = cell.find(',', begin);
+    std::string name = cell.substr(begin, end == std::string::npos ? end : end - begin);
     if (FindScore(name) == nullptr) {
       ThrowCorrupt(database_path, what,
                    "reference_undecided holds \"" + cell +
