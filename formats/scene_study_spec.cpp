@@ -140,6 +140,11 @@ SceneStudySpec ParseWithScene(const Json& json, const std::string& file, Json sc
   CheckEveryPointsScene(spec);
   Json stored = json;
   stored["scene_json"] = spec.scene;
+  // Where the scene's own files (structures' matrices, acceleration tables) are found from any
+  // working directory: "scene" is relative to the study file as it was given.
+  if (!spec.scene_file.empty()) {
+    stored["scene_file"] = std::filesystem::absolute(spec.scene_file).lexically_normal().string();
+  }
   stored["settings"] = Json::parse(SceneSettingsKey(spec));
   spec.spec_json = stored.dump();
   return spec;
@@ -165,9 +170,11 @@ SceneStudySpec ParseStoredSceneStudySpec(const Json& stored, const std::string& 
   const Json scene = json.contains("scene_json") ? json["scene_json"] : Json();
   json.erase("scene_json");
   json.erase("settings");
-  const std::string scene_file = json.contains("scene") && json["scene"].is_string()
-                                     ? json["scene"].get<std::string>()
-                                     : std::string();
+  // Studies stored before "scene_file" name their scene relative to the study file only.
+  const char* key = json.contains("scene_file") ? "scene_file" : "scene";
+  const std::string scene_file =
+      json.contains(key) && json[key].is_string() ? json[key].get<std::string>() : std::string();
+  json.erase("scene_file");
   return ParseWithScene(json, label, scene, scene_file, {});
 }
 

@@ -14,6 +14,7 @@ namespace shockmap {
 namespace {
 
 using testing::ReadBytes;
+using testing::RunShell;
 using testing::RunShockmap;
 using testing::WriteText;
 using Json = nlohmann::json;
@@ -139,6 +140,35 @@ TEST_F(SceneStudy, ChangingTheSceneOrScoringOfAStoredStudyIsRefused) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("already exists"), std::string::npos) << r.output;
   EXPECT_EQ(ReadBytes(Path("s.db")), before);
+}
+
+// A scene that names files of its own (a structure's matrices beside it), its study run from
+// one folder and its report drawn from another: the stored study finds the scene's files.
+TEST_F(SceneStudy, ReportFindsTheScenesFilesFromAnyFolder) {
+  const std::filesystem::path work = Path("work");
+  std::filesystem::create_directories(work / "scenes");
+  std::filesystem::create_directories(work / "studies");
+  const std::filesystem::path scenes = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes";
+  std::filesystem::copy_file(scenes / "stepped_pin.json", work / "scenes/stepped_pin.json");
+  std::filesystem::copy(scenes / "stepped_pin", work / "scenes/stepped_pin");
+  const Json study = {{"kind", "scene_sweep"},
+                      {"name", "pin"},
+                      {"scene", "../scenes/stepped_pin.json"},
+                      {"sweep", {{"solver.r_ftrunc", {10}}}},
+                      {"reference", {{"solver.r_ftrunc", 30}}},
+                      {"scoring",
+                       {{"displacement", "head_y"},
+                        {"zone", "grid_+y"},
+                        {"window_s", 0.05},
+                        {"rest_duration_s", 0.005}}}};
+  WriteText((work / "studies/pin.json").string(), study.dump(2));
+  const auto run = RunShell("cd " + work.string() + " && " + SHOCKMAP_BIN +
+                            " study run --quiet studies/pin.json --db pin.db");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto report = RunShell("cd " + Path("") + " && " + SHOCKMAP_BIN +
+                               " report --db work/pin.db --out " + Path("report"));
+  EXPECT_EQ(report.exit_code, 0) << report.output;
+  EXPECT_TRUE(std::filesystem::exists(Path("report/index.html"))) << report.output;
 }
 
 }  // namespace
