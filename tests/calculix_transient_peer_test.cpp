@@ -220,18 +220,13 @@ TEST_F(CalculixTransientPeer, ModalRunsConvergeAndCcxApproachesTheirLimit) {
   EXPECT_LT(d20.first_shock, 0.1);
 }
 
-// ccx's step halved from 2e-5 to 2.5e-6 s (8.5 minutes of wall time on a shared machine): its
-// distance to shockmap's limit falls, from 1.5e-3 to 7.9e-5 of the total impulse (order 1.4 over
-// the span), from 6.3 % to 1.1 % of the first shock (0.84; at 1e-5 s chattering merges the contacts
-// into one shock, so that one is not asserted step by step) and from 1.3e-2 to 8.3e-4 of the
-// release deflection on the tip (1.3). It prints docs/fidelity.md's table. Peer check 4, two
-// imported structures across a clearance between their nodes: two copies of the plate, b above a,
-// their corners 2e-5 m apart along z (the copies share the files: the coordinates do not enter the
-// dynamics), each pulled back by 20 N and released. By symmetry u_b = -u_a along the normal, so the
-// zone's penetration n . (u_a - u_b) - g is 2 (u_a - g / 2): each plate moves as one plate against
-// a rigid stop at half the clearance with twice the contact stiffness, and the zone's force is that
-// stop's. Measured at the same step: corners equal to 1.1e-15 of their amplitude, force to 3.0e-14
-// of its 53.8 N peak.
+// Peer check 4, two imported structures across a clearance between their nodes: two copies of the
+// plate, b above a, their corners 2e-5 m apart along z (the copies share the files: the coordinates
+// do not enter the dynamics), each pulled back by 20 N and released. By symmetry u_b = -u_a along
+// the normal, so the zone's penetration n . (u_a - u_b) - g is 2 (u_a - g / 2): each plate moves as
+// one plate against a rigid stop at half the clearance with twice the contact stiffness, and the
+// zone's force is that stop's. Measured at the same step: corners equal to 1.1e-15 of their
+// amplitude, force to 3.0e-14 of its 53.8 N peak.
 TEST_F(CalculixTransientPeer, TwoPlatesReleasedSymmetricallyMeetAsOneOnAStopAtHalfTheGap) {
   const double gap = 2e-5, dt = 5e-7;
   const int node = plate_.observed_node;
@@ -289,6 +284,11 @@ TEST_F(CalculixTransientPeer, TwoPlatesReleasedSymmetricallyMeetAsOneOnAStopAtHa
   EXPECT_NEAR(both.total_impulse_n_s, stopped.total_impulse_n_s, 1e-12 * stopped.total_impulse_n_s);
 }
 
+// ccx's step halved from 2e-5 to 2.5e-6 s (8.5 minutes of wall time on a shared machine): its
+// distance to shockmap's limit falls, from 1.5e-3 to 7.9e-5 of the total impulse (order 1.4 over
+// the span), from 6.3 % to 1.1 % of the first shock (0.84; at 1e-5 s chattering merges the contacts
+// into one shock, so that one is not asserted step by step) and from 1.3e-2 to 8.3e-4 of the
+// release deflection on the tip (1.3). It prints docs/fidelity.md's table.
 class CalculixTransientPeerLong : public CalculixTransientPeer {};
 
 TEST_F(CalculixTransientPeerLong, CcxApproachesTheModalLimitAtFirstOrder) {
