@@ -131,7 +131,7 @@ class CalculixCantileverImpact : public TempDirTest {
 //   100        0.22833  0.94104      0.23055  0.94068    0.18401  0.95234    0.17918  0.95429
 //   300        0.02876  0.99339      0.00985  0.99765    0.11380  0.97286    0.12610  0.97015
 // At R_ftrunc 10 the solid, at any of its meshes, scores as the beam (1.6e-5 of Err, 6e-5 of
-// SRf). Above, the solid's scores converge with its mesh (the change from 40 to 80 bricks is 1/9
+// SRf). Above, the solid's scores converge with its mesh (the change from 40 to 80 bricks is 1/8
 // to 1/19 of the change from 20 to 40) to values that are not the beam's: the difference from
 // the beam is 8 to 21 times the last mesh change, so it is the solid's own model (it has modes
 // below R_ftrunc f1 that the Euler-Bernoulli beam and its reference lack, docs/fidelity.md), and
