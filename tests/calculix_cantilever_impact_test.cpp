@@ -116,8 +116,8 @@ class CalculixCantileverImpact : public TempDirTest {
     return Score(run);
   }
 
-  const CantileverImpact problem_;  // The paper's: R_k 3000, the first mode released 1 mm away.
-  const ComparisonOptions options_;
+  const CantileverImpact problem_{};  // The paper's: R_k 3000, the first mode released 1 mm away.
+  const ComparisonOptions options_{};
   std::shared_ptr<const ReferenceRun> reference_;
   std::map<int, int> tips_;  // Tip node of each imported mesh, by its element count.
 };
