@@ -8,8 +8,11 @@
 #include <map>
 #include <numbers>
 #include <sstream>
+#include <string>
 
 #include "core/beam_fe.h"
+#include "core/fe_structure.h"
+#include "core/input_error.h"
 #include "core/modal_basis.h"
 #include "core/modal_basis_cache.h"
 #include "core/preload_equilibrium.h"
@@ -373,13 +376,25 @@ double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
   return tip_m / m.At(height)[mode - 1];
 }
 
-// A structure's initial state: q_i = phi_i(node, d) F / omega_i^2, the static deflection under F
-// along d at the node in the retained basis (exact there with static correction), and a
-// uniform velocity along d.
+// A structure's initial state: a retained mode scaled so that the node moves tip_m along d
+// (none when the mode is not retained, as a beam's); q_i = phi_i(node, d) F / omega_i^2, the
+// static deflection under F along d at the node in the retained basis (exact there with static
+// correction); and a uniform velocity along d.
 void AddStructureInitialState(const InitialStateEffect& s, const Layout& layout,
                               SceneModel& model) {
   const SceneStructureModes& m = layout.structures[s.structure];
   const int offset = layout.structure_offset[s.structure];
+  if (s.tip_m != 0.0 && s.mode - 1 < m.N()) {
+    const double at_node = m.AtNode(s.node, s.direction_xyz)[s.mode - 1];
+    if (std::abs(at_node) <= 1e-9 * m.basis.shapes.col(s.mode - 1).cwiseAbs().maxCoeff()) {
+      throw InputError("effects.initial_state: mode " + std::to_string(s.mode) +
+                       " of structure \"" + m.fe->name + "\" does not move node " +
+                       std::to_string(s.node) +
+                       " along the direction given (less than 1e-9 of its largest DOF); give "
+                       "another node, direction or mode");
+    }
+    model.x0[offset + s.mode - 1] = s.tip_m / at_node;
+  }
   if (s.static_force_n != 0.0) {
     const Eigen::VectorXd phi = m.AtNode(s.node, s.direction_xyz);
     model.x0.segment(offset, m.N()) +=

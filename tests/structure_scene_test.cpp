@@ -342,6 +342,61 @@ TEST_F(StructureScene, StudyScoresTheStructureAsTheBeam) {
   }
 }
 
+// A structure released in a mode scaled at a node: the cantilever as matrices in its first mode
+// with the tip 1 mm up starts where the beam released in its first mode does (to 1e-12 m), and
+// a mode that does not move the node along the direction is refused: two uncoupled nodes (K =
+// diag(1, 4) kN/m, M = I kg), whose first mode moves node 1 only.
+TEST_F(StructureScene, ModeReleaseAtANodeIsTheBeamsAndAModeThatDoesNotMoveItIsRefused) {
+  Json beam = BeamScene({{"seconds", 1e-6}});
+  beam["effects"]["initial_state"][0] = {
+      {"beam", "beam"}, {"direction", "y"}, {"mode", 1}, {"amplitude_m", 1e-3}};
+  beam["solver"]["end_time_s"] = 1e-5;
+  Json structure = StructureSceneJson({{"seconds", 1e-6}}, "rod");
+  structure["effects"]["initial_state"][0] = {{"structure", "rod"},
+                                              {"node", 21},
+                                              {"direction", {0, 1, 0}},
+                                              {"mode", 1},
+                                              {"amplitude_m", 1e-3}};
+  structure["solver"]["end_time_s"] = 1e-5;
+  const SceneRun b = RunScene(Parse(beam)), s = RunScene(Parse(structure));
+  EXPECT_NEAR(s.result.displacement_m[0].values.front(), 1e-3, 1e-12);
+  EXPECT_NEAR(s.result.displacement_m[0].values.front(), b.result.displacement_m[0].values.front(),
+              1e-12);
+
+  FeStructure pair;
+  pair.name = "pair";
+  pair.stiffness.resize(2, 2);
+  pair.stiffness.insert(0, 0) = 1e3;
+  pair.stiffness.insert(1, 1) = 4e3;
+  pair.mass.resize(2, 2);
+  pair.mass.insert(0, 0) = 1.0;
+  pair.mass.insert(1, 1) = 1.0;
+  pair.dofs = {{1, DofComponent::kUy}, {2, DofComponent::kUy}};
+  pair.node_coordinates_m = {{1, Eigen::Vector3d(0.0, 0.0, 0.0)},
+                             {2, Eigen::Vector3d(1.0, 0.0, 0.0)}};
+  std::filesystem::create_directories(dir_ / "pair");
+  WriteMatrixMarketStructure(pair, Path("pair"));
+  const Json scene = {
+      {"name", "pair"},
+      {"structures", {{{"name", "pair"}, {"matrix_market", MatrixMarket("pair")}}}},
+      {"effects",
+       {{"initial_state",
+         {{{"structure", "pair"},
+           {"node", 2},
+           {"direction", {0, 1, 0}},
+           {"mode", 1},
+           {"amplitude_m", 1e-3}}}}}},
+      {"solver", Solver({{"seconds", 1e-4}}, 1e-3)},
+      {"outputs",
+       {{"displacements",
+         {{{"name", "two"}, {"structure", "pair"}, {"node", 2}, {"direction", {0, 1, 0}}}}}}}};
+  testing::WriteText(Path("bad.json"), scene.dump());
+  const auto o = RunShockmap("simulate " + Path("bad.json"));
+  EXPECT_EQ(o.exit_code, 2) << o.output;
+  EXPECT_NE(o.output.find("mode 1 of structure \"pair\" does not move node 2"), std::string::npos)
+      << o.output;
+}
+
 // Bad references: exit code 2, the file, the key and what is wrong.
 TEST_F(StructureScene, BadReferencesAreRefusedNamingTheKey) {
   auto refused = [&](Json scene, const std::string& key, const std::string& what) {
