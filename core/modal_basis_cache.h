@@ -18,8 +18,8 @@ inline constexpr double kModalBasisCacheBytes = 64e6;
 
 // Every mode of `model` (ComputeLowestModes(model, model.Size())), from the cache when
 // `model_key` is in it (thread-safe; what the solve throws, every thread waiting for it throws).
-// The key must name everything the model depends on: beam properties, elements, end conditions and
-// end springs.
+// The key must name everything the model depends on: beam properties (every section's, every
+// point mass's), elements, end conditions and end springs.
 std::shared_ptr<const ModalBasis> AllModesCached(const std::string& model_key,
                                                  const FeBeamModel& model);
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/beam_sections.h"
 #include "core/contact_law.h"
 #include "core/end_condition.h"
 #include "core/impact_statistics.h"
@@ -20,11 +21,16 @@ namespace shockmap {
 // Planar scenes bend in y only; full ones in y and z, with the same modes in both planes.
 enum class BendingPlanes { kPlanar, kBoth };
 
+// A uniform beam (ei_n_m2, rho_a_kg_per_m over length_m), or one of `sections` from the base up
+// (their lengths summing to length_m; ei_n_m2 and rho_a_kg_per_m then unused); either may carry
+// point masses (core/beam_sections.h).
 struct SceneBeam {
   std::string name;
   double length_m = 1.0;
   double ei_n_m2 = 0.0;
   double rho_a_kg_per_m = 0.0;
+  std::vector<BeamSection> sections;
+  std::vector<BeamPointMass> point_masses;
   int n_elements = 20;
   EndCondition at_zero = EndCondition::kClamped;
   EndCondition at_length = EndCondition::kFree;

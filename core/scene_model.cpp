@@ -55,13 +55,19 @@ struct Truncation {
   double Hz(double f1_hz) const { return hz ? *hz : ratio * f1_hz; }
 };
 
-// Beams with equal keys have one FE model.
+// Beams with equal keys have one FE model: the key names everything AssembleSceneBeam reads.
 std::string ModelKey(const SceneBeam& b) {
   std::ostringstream key;
   key.precision(17);
   key << b.length_m << ' ' << b.ei_n_m2 << ' ' << b.rho_a_kg_per_m << ' ' << b.n_elements << ' '
       << ToString(b.at_zero) << ' ' << ToString(b.at_length) << ' ' << b.spring_at_zero_n_per_m
       << ' ' << b.spring_at_length_n_per_m;
+  if (!b.sections.empty()) key << " sections";
+  for (const BeamSection& s : b.sections)
+    key << ' ' << s.length_m << ' ' << s.ei_n_m2 << ' ' << s.rho_a_kg_per_m;
+  if (!b.point_masses.empty()) key << " point_masses";
+  for (const BeamPointMass& m : b.point_masses)
+    key << ' ' << m.height_m << ' ' << m.mass_kg << ' ' << m.rotary_inertia_kg_m2;
   return key.str();
 }
 
@@ -371,9 +377,7 @@ double ModeCoordinate(const BeamModes& m, int mode, double tip_m) {
       node = m.fe.global_dof[i] / 2;
     }
   }
-  const double length = m.fe.beam.length_m;
-  const double height = node == m.fe.n_elements ? length : length * node / m.fe.n_elements;
-  return tip_m / m.At(height)[mode - 1];
+  return tip_m / m.At(m.fe.NodeHeightM(node))[mode - 1];
 }
 
 // A structure's initial state: a retained mode scaled so that the node moves tip_m along d
@@ -484,9 +488,13 @@ double SharpOmegaSquared(const SceneModalSystem& system, std::span<const double>
   return eig.eigenvalues().maxCoeff();
 }
 
+SectionedBeam SectionsOf(const SceneBeam& b) {
+  if (!b.sections.empty()) return {b.length_m, b.sections, b.point_masses};
+  return {b.length_m, {{b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}}, b.point_masses};
+}
+
 FeBeamModel AssembleSceneBeam(const SceneBeam& b) {
-  FeBeamModel fe =
-      AssembleBeam({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m}, b.n_elements, b.at_zero, b.at_length);
+  FeBeamModel fe = AssembleBeam(SectionsOf(b), b.n_elements, b.at_zero, b.at_length);
   AddDeflectionSpring(fe, 0, b.spring_at_zero_n_per_m);
   AddDeflectionSpring(fe, b.n_elements, b.spring_at_length_n_per_m);
   return fe;

@@ -28,12 +28,16 @@ struct SceneModel {
   StabilityBounds bounds;  // paper: 1/(4 max f_trunc); sharp: every zone closed.
 };
 
-// The FE model of one scene beam: its elements, ends and end springs.
+// The make-up of one scene beam: its sections (one when uniform) and point masses.
+SectionedBeam SectionsOf(const SceneBeam& beam);
+
+// The FE model of one scene beam: its sections, point masses, elements, ends and end springs.
 FeBeamModel AssembleSceneBeam(const SceneBeam& beam);
 
 // The static stiffness of the beam at a height (N/m): the force at that height over the
 // deflection it causes there, 1 / (r . K^-1 r) with r the FE deflection row; 3 EI / h^3 on a
-// clamped-free beam. Precondition: the beam is supported (no rigid-body mode).
+// uniform clamped-free beam, on sections the inverse of Mohr's integral of M m / EI.
+// Precondition: the beam is supported (no rigid-body mode).
 double LocalBendingStiffness(const SceneBeam& beam, double height_m);
 
 // The largest eigenvalue of the modal stiffness with every zone closed, each with the normal

@@ -20,8 +20,10 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "core/beam_fe.h"
 #include "core/fe_structure.h"
 #include "core/modal_basis.h"
+#include "core/scene_model.h"
 #include "core/transient_run.h"
 #include "formats/acceleration_csv.h"
 #include "formats/json_reader.h"
@@ -67,15 +69,16 @@ std::string HeightLabel(double height_m) {
 // are solved (once each: one eigensolution gives the first elastic frequency and the basis),
 // the estimate; else "".
 std::string BasesExcess(const std::vector<SceneBeam>& beams) {
-  std::set<std::tuple<double, double, double, int, EndCondition, EndCondition, double, double,
-                      std::optional<double>, std::optional<double>>>
+  std::set<std::tuple<double, double, double, std::vector<BeamSection>, std::vector<BeamPointMass>,
+                      int, EndCondition, EndCondition, double, double, std::optional<double>,
+                      std::optional<double>>>
       distinct;
   std::vector<int> unknowns;
   for (const SceneBeam& b : beams) {
     if (distinct
-            .insert({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m, b.n_elements, b.at_zero, b.at_length,
-                     b.spring_at_zero_n_per_m, b.spring_at_length_n_per_m, b.f_trunc_hz,
-                     b.r_ftrunc})
+            .insert({b.length_m, b.ei_n_m2, b.rho_a_kg_per_m, b.sections, b.point_masses,
+                     b.n_elements, b.at_zero, b.at_length, b.spring_at_zero_n_per_m,
+                     b.spring_at_length_n_per_m, b.f_trunc_hz, b.r_ftrunc})
             .second)
       unknowns.push_back(BeamUnknowns(b.n_elements));
   }
@@ -138,14 +141,117 @@ std::pair<EndCondition, EndCondition> Ends(JsonObjectReader& r) {
   return {e[0], e[1]};
 }
 
+template <typename F>
+void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
+  const Json* list = parent.Get(key);
+  if (list == nullptr) return;
+  if (!list->is_array()) parent.Fail(key, "expected a list, got " + Shown(*list));
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    JsonObjectReader item((*list)[i], parent.File(),
+                          parent.PathOf(key) + "[" + std::to_string(i) + "]");
+    parse(item);
+    item.Finish();
+  }
+}
+
+// A beam's sections and point masses beyond these are typing mistakes: a pin has a handful.
+constexpr std::size_t kMaxSections = 1000;
+constexpr std::size_t kMaxPointMasses = 1000;
+// The sections' lengths sum to the beam's length to this fraction of it.
+constexpr double kSectionsSumTolerance = 1e-9;
+
+// A beam's sections from the base up (docs/scenes.md, "Non-uniform beams"): each length_m,
+// ei_n_m2 and rho_a_kg_per_m > 0, no section shorter than kSameNodeFraction of the beam, and
+// their lengths summing to the beam's length_m.
+std::vector<BeamSection> ParseSections(JsonObjectReader& r, double length_m) {
+  const Json* list = r.Get("sections");
+  if (!list->is_array() || list->empty() || list->size() > kMaxSections) {
+    r.Fail("sections", "expected a list of 1 to " + std::to_string(kMaxSections) +
+                           " sections {length_m, ei_n_m2, rho_a_kg_per_m} from the base up, got " +
+                           Shown(*list));
+  }
+  std::vector<BeamSection> sections;
+  double sum = 0.0;
+  EachItem(r, "sections", [&](JsonObjectReader& item) {
+    BeamSection section;
+    section.length_m = Positive(item, "length_m", 1e3);
+    if (section.length_m < kSameNodeFraction * length_m) {
+      item.Fail("length_m", "value " + Shown(Json(section.length_m)) + " m is shorter than " +
+                                Shown(Json(kSameNodeFraction)) + " of the beam's length_m (" +
+                                Shown(Json(length_m)) + " m)");
+    }
+    section.ei_n_m2 = Positive(item, "ei_n_m2");
+    section.rho_a_kg_per_m = Positive(item, "rho_a_kg_per_m", 1e6);
+    sum += section.length_m;
+    sections.push_back(section);
+  });
+  if (std::abs(sum - length_m) > kSectionsSumTolerance * length_m) {
+    r.Fail("sections", fmt::format("the sections' lengths sum to {:.12g} m, not to the beam's "
+                                   "length_m ({:.12g} m): they must sum to it, to {:g} relative",
+                                   sum, length_m, kSectionsSumTolerance));
+  }
+  return sections;
+}
+
+// A beam's point masses: each at height_m in [0, length_m], mass_kg > 0, rotary_inertia_kg_m2
+// >= 0 (default 0).
+std::vector<BeamPointMass> ParsePointMasses(JsonObjectReader& r, double length_m) {
+  const Json* list = r.Get("point_masses");
+  if (list == nullptr) return {};
+  if (!list->is_array() || list->size() > kMaxPointMasses) {
+    r.Fail("point_masses", "expected a list of at most " + std::to_string(kMaxPointMasses) +
+                               " point masses {height_m, mass_kg, rotary_inertia_kg_m2}, got " +
+                               Shown(*list));
+  }
+  std::vector<BeamPointMass> masses;
+  EachItem(r, "point_masses", [&](JsonObjectReader& item) {
+    BeamPointMass m;
+    m.height_m = item.RequiredNumber("height_m");
+    if (m.height_m < 0.0 || m.height_m > length_m) {
+      item.Fail("height_m", "value " + Shown(Json(m.height_m)) +
+                                " m lies outside the beam: a point mass sits at a height in [0, " +
+                                Shown(Json(length_m)) + "] m");
+    }
+    m.mass_kg = Positive(item, "mass_kg", 1e6);
+    m.rotary_inertia_kg_m2 = InRange(item, "rotary_inertia_kg_m2", 0.0, 0.0, 1e6);
+    masses.push_back(m);
+  });
+  return masses;
+}
+
+// A beam's EI and rho A: uniform (ei_n_m2, rho_a_kg_per_m) or by sections, not both; and its
+// point masses.
+void ParseBeamMakeUp(JsonObjectReader& r, SceneBeam& b) {
+  if (r.Has("sections")) {
+    for (const char* key : {"ei_n_m2", "rho_a_kg_per_m"}) {
+      if (r.Has(key))
+        r.Fail(key,
+               "give sections (each with its EI and rho A) or ei_n_m2 and rho_a_kg_per_m "
+               "(a uniform beam), not both");
+    }
+    b.sections = ParseSections(r, b.length_m);
+  } else {
+    b.ei_n_m2 = Positive(r, "ei_n_m2");
+    b.rho_a_kg_per_m = Positive(r, "rho_a_kg_per_m", 1e6);
+  }
+  b.point_masses = ParsePointMasses(r, b.length_m);
+}
+
 SceneBeam ParseBeamProperties(JsonObjectReader& r) {
   SceneBeam b;
   b.length_m = Positive(r, "length_m", 1e3);
-  b.ei_n_m2 = Positive(r, "ei_n_m2");
-  b.rho_a_kg_per_m = Positive(r, "rho_a_kg_per_m", 1e6);
+  ParseBeamMakeUp(r, b);
   b.n_elements = r.Integer("elements", b.n_elements);
   if (b.n_elements < 1)
     r.Fail("elements", "value " + std::to_string(b.n_elements) + " must be >= 1");
+  if (const auto pieces = static_cast<int>(MeshBreaks(SectionsOf(b)).size()) - 1;
+      b.n_elements < pieces) {
+    r.Fail("elements",
+           "value " + std::to_string(b.n_elements) +
+               ": the sections' ends and the point masses split the beam into " +
+               std::to_string(pieces) +
+               " pieces of at least one element each; give elements >= " + std::to_string(pieces));
+  }
   if (const std::string excess = BasesExcess({b}); !excess.empty())
     r.Fail("elements", "value " + std::to_string(b.n_elements) + ": " + excess);
   std::tie(b.at_zero, b.at_length) = Ends(r);
@@ -657,19 +763,6 @@ double Height(const Scene& scene, JsonObjectReader& r, int beam) {
                            Shown(Json(scene.beams[beam].length_m)) + "]");
   }
   return h;
-}
-
-template <typename F>
-void EachItem(JsonObjectReader& parent, const std::string& key, F parse) {
-  const Json* list = parent.Get(key);
-  if (list == nullptr) return;
-  if (!list->is_array()) parent.Fail(key, "expected a list, got " + Shown(*list));
-  for (std::size_t i = 0; i < list->size(); ++i) {
-    JsonObjectReader item((*list)[i], parent.File(),
-                          parent.PathOf(key) + "[" + std::to_string(i) + "]");
-    parse(item);
-    item.Finish();
-  }
 }
 
 // The names given so far, each with where it was given ("given at zones[0].name", "of a zone

@@ -293,7 +293,7 @@ TEST(ModalBasis, KeepsExactlyTheModesBelowTruncation) {
 struct FourModeProblem {
   FeBeamModel fe = AssembleBeam(BeamProperties{}, 20, EndCondition::kClamped, EndCondition::kFree);
   ModalBasis modes = ComputeLowestModes(fe, 4);
-  Eigen::VectorXd tip_fe = fe.DeflectionRow(fe.beam.length_m);
+  Eigen::VectorXd tip_fe = fe.DeflectionRow(fe.LengthM());
   Eigen::VectorXd tip_modal = modes.shapes.transpose() * tip_fe;
   Eigen::VectorXd q0 = InitialAmplitudes();
 
