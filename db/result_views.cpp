@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <iterator>
 
 #include "db/point_tables.h"
 #include "records/canonical_records.h"
