@@ -1,5 +1,6 @@
 #pragma once
 // The columns of the values a run gives out (records/output_columns.h), each declared once: a
+// scene run's summary (`simulate --json`, summary.json, Python's SceneRun.summary), a
 // comparison of the paper's problem (`compare --json`, Python's Comparison.summary), a shock
 // (shocks.csv, the comparison's first shocks, Python's shock dicts), a zone's impact statistics
 // (impact_statistics.csv, summary.json's zone results) and one impact of a zone (impacts.csv).
@@ -9,6 +10,7 @@
 #include <optional>
 
 #include "compare/comparison.h"
+#include "compare/scene_run.h"
 #include "core/impact_statistics.h"
 #include "core/wear.h"
 #include "records/output_columns.h"
@@ -171,6 +173,64 @@ inline constexpr OutputColumn<ImpactRecord> kImpactRecordColumns[] = {
      "", "its contacts after the first"},
     {"truncated", [](const ImpactRecord& r) -> OutputValue { return r.truncated; }, "",
      "cut by the window's start or end"},
+};
+
+// A scene run with its scene.
+struct SceneRunOutput {
+  const Scene& scene;
+  const SceneRun& run;
+};
+
+// The scalar members of a scene run's summary; beside them, where the scene has them, its
+// structures, wear law, power laws' bound, largest contact force and zone results
+// (formats/scene_outputs.h).
+inline constexpr OutputColumn<SceneRunOutput> kSceneRunColumns[] = {
+    {"scene", [](const SceneRunOutput& o) -> OutputValue { return o.scene.name; }, "",
+     "the scene's name"},
+    {"status",
+     [](const SceneRunOutput& o) -> OutputValue { return ToString(o.run.result.summary.status); },
+     "", "the run's status"},
+    {"message", [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.message; },
+     "", "why it failed or diverged"},
+    {"end_time_s", [](const SceneRunOutput& o) -> OutputValue { return o.scene.solver.end_time_s; },
+     "s", "the time simulated"},
+    {"dt_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.dt_used_s; },
+     "s", "time step used"},
+    {"dt_requested_s",
+     [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.dt_requested_s; },
+     "s", "time step asked"},
+    {"dt_paper_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.bounds.dt_paper_s; },
+     "s", "the bound 1/(4 f_trunc)"},
+    {"dt_sharp_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.bounds.dt_sharp_s; },
+     "s", "the bound 2/ω_max"},
+    {"steps",
+     [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.steps_taken; }, "",
+     "time steps taken"},
+    {"beams",
+     [](const SceneRunOutput& o) -> OutputValue {
+       return static_cast<std::int64_t>(o.scene.beams.size());
+     },
+     "", "beams of the scene"},
+    {"zones",
+     [](const SceneRunOutput& o) -> OutputValue {
+       return static_cast<std::int64_t>(o.scene.zones.size());
+     },
+     "", "contact zones of the scene"},
+    {"coordinates",
+     [](const SceneRunOutput& o) -> OutputValue { return std::int64_t{o.run.coordinates}; }, "",
+     "modal coordinates integrated"},
+    {"distinct_bases",
+     [](const SceneRunOutput& o) -> OutputValue { return std::int64_t{o.run.distinct_bases}; }, "",
+     "modal bases computed"},
+    {"max_energy_ratio",
+     [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.max_energy_ratio; },
+     "", "largest total energy over the initial energy"},
+    {"build_wall_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.build_wall_s; }, "s",
+     "wall time of the model's assembly"},
+    {"wall_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.wall_s; },
+     "s", "wall time of the run"},
+    {"cpu_s", [](const SceneRunOutput& o) -> OutputValue { return o.run.result.summary.cpu_s; },
+     "s", "CPU time of the run"},
 };
 
 // One run of the paper's problem scored against its reference, with what it was asked.

@@ -72,24 +72,7 @@ Json ImpactStatisticsToJson(const ZoneImpactStatistics& zone) {
 }
 
 Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
-  const RunSummary& s = run.result.summary;
-  Json json = {{"scene", scene.name},
-               {"status", ToString(s.status)},
-               {"message", s.message},
-               {"end_time_s", scene.solver.end_time_s},
-               {"dt_s", s.dt_used_s},
-               {"dt_requested_s", s.dt_requested_s},
-               {"dt_paper_s", run.bounds.dt_paper_s},
-               {"dt_sharp_s", run.bounds.dt_sharp_s},
-               {"steps", s.steps_taken},
-               {"beams", scene.beams.size()},
-               {"zones", scene.zones.size()},
-               {"coordinates", run.coordinates},
-               {"distinct_bases", run.distinct_bases},
-               {"max_energy_ratio", s.max_energy_ratio},
-               {"build_wall_s", run.build_wall_s},
-               {"wall_s", s.wall_s},
-               {"cpu_s", s.cpu_s}};
+  Json json = JsonObjectOf(SceneRunOutput{scene, run}, kSceneRunColumns);
   if (!scene.structures.empty()) json["structures"] = scene.structures.size();
   if (scene.wear) {
     json["wear"] = {{"coefficient_m2_per_n", scene.wear->coefficient_m2_per_n},

@@ -17,7 +17,8 @@ namespace shockmap {
 // has a wear law; wear_available and impacts_listed beside them.
 nlohmann::json ImpactStatisticsToJson(const ZoneImpactStatistics& zone);
 
-// Status, time step and bounds, model size, timings, the wear law and the power laws' bound at
+// A member per column of kSceneRunColumns (compare/output_columns.h: status, time step and
+// bounds, model size, timings), then the wear law and the power laws' bound at
 // the penetrations reached when the scene has them, and per zone the maximum force, shock
 // statistics and impact statistics (with the wear volume) when they were requested.
 nlohmann::json SceneRunToJson(const Scene& scene, const SceneRun& run);

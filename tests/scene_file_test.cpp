@@ -576,7 +576,12 @@ TEST_F(SceneFiles, ImpactStatisticsAgreeWithTheShocksOfTheHistory) {
   EXPECT_EQ(impacts["contacts"].get<int>(),
             zone["shocks"]["count"].get<int>() + zone["shocks"]["rebounds"].get<int>());
   EXPECT_TRUE(impacts["wear_work_rate_w"].is_null());
-  // The CSV files' headers are their column tables' names, after the zone's.
+  // The summary has a member per column of its table; the CSV files' headers are their column
+  // tables' names, after the zone's.
+  const Json summary = Json::parse(r.output);
+  for (const std::string& name : ColumnNames(kSceneRunColumns)) {
+    EXPECT_TRUE(summary.contains(name)) << name;
+  }
   EXPECT_EQ(FirstLine(Path("impacts") + "/impact_statistics.csv"),
             "zone," + Joined(ColumnNames(kImpactStatisticsColumns)));
   EXPECT_EQ(FirstLine(Path("impacts") + "/shocks.csv"),
