@@ -3,7 +3,10 @@
 // to i + 1, and the schema's version is their count. Append-only: a migration once released is
 // never edited (a file migrated by it exists somewhere); a change of the schema is a new one at
 // the end, and docs/database.md follows (tests/records_test.cpp checks the tables against the
-// records' column tables, docs/architecture.md "Add a field").
+// records' column tables, docs/architecture.md "Add a field"). The migrations change tables
+// only: the views hold no data and are declared once (db/result_views.h), dropped before
+// migrating and written again after (db/schema.cpp); their statements, which earlier versions
+// wrote here, were taken out of the migrations that held them.
 
 #include <iterator>
 
@@ -96,21 +99,6 @@ CREATE TABLE scores (
   first_shock_rebounds     INTEGER,
   shocks_json              TEXT NOT NULL
 );
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, ru.host, p.updated_utc
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 1 -> 2: studies of scene files. A point is the scene with some numeric parameters set
     // (parameters_json: {"solver.r_ftrunc": 30, ...}); it is scored against the same scene run
@@ -162,17 +150,6 @@ CREATE TABLE scene_points (
   UNIQUE (study_id, point_key)
 );
 CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
-CREATE VIEW scene_results AS
-SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
-       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
-       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
-       p.first_shock_peak_n, p.first_shock_impulse_n_s,
-       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
-       ru.code_version, ru.host, p.updated_utc
-FROM scene_points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scene_references r ON r.reference_id = p.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 2 -> 3: the writer's lease. A run holds the database while its heartbeat is recent
     // (db/study_database.h); how each run ended.
@@ -195,73 +172,24 @@ WHERE run_id IS NOT NULL AND status NOT IN ('pending', 'running');
 UPDATE scene_points SET host = (SELECT host FROM runs WHERE runs.run_id = scene_points.run_id),
   rank = 0
 WHERE run_id IS NOT NULL AND status NOT IN ('pending', 'running');
-DROP VIEW results;
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
-DROP VIEW scene_results;
-CREATE VIEW scene_results AS
-SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
-       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
-       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
-       p.first_shock_peak_n, p.first_shock_impulse_n_s,
-       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc
-FROM scene_points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scene_references r ON r.reference_id = p.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 4 -> 5: the SRf definition each score was computed with (paper eq. 9 admits several
     // readings); scores stored before used the first shock.
     R"sql(
 ALTER TABLE scores ADD COLUMN srf_definition TEXT NOT NULL DEFAULT 'first_shock';
-DROP VIEW results;
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 5 -> 6: scene study parameters as columns, params_<path> beside scene_results (as
-    // Optuna's params_*). The view is written again whenever scene points are added, with one
-    // column per parameter path of any scene study (db/scene_points.h); until then it has none.
-    R"sql(
-CREATE VIEW scene_params AS SELECT * FROM scene_results;
-)sql",
+    // Optuna's params_*): the view scene_params (db/point_tables.h), written again whenever scene
+    // points are added, with one column per parameter path of any scene study. No table changes.
+    R"sql()sql",
     // 6 -> 7: the status 'unstable' (core/run_status.h, docs/physics.md §3.1). SQLite cannot
     // change a CHECK constraint in place: both point tables are rebuilt with the same columns in
-    // the same order (foreign keys are off while migrating, so the scores keep their rows), and
-    // the views that read them (scene_params too) are dropped first and made again.
-    // Stored canonical points that ended 'ok' undamped with an energy ratio above the limit
-    // become 'unstable', as a new run classifies them; scene points keep their status until
-    // recomputed (their damping is in their scene, not in a column).
+    // the same order (foreign keys are off while migrating, so the scores keep their rows; the
+    // views that read them are dropped before migrating). Stored canonical points that ended 'ok'
+    // undamped with an energy ratio above the limit become 'unstable', as a new run classifies
+    // them; scene points keep their status until recomputed (their damping is in their scene, not
+    // in a column).
     R"sql(
-DROP VIEW scene_params;
-DROP VIEW results;
-DROP VIEW scene_results;
 CREATE TABLE points_v7 (
   point_id           INTEGER PRIMARY KEY,
   study_id           INTEGER NOT NULL REFERENCES studies(study_id),
@@ -339,33 +267,6 @@ FROM scene_points;
 DROP TABLE scene_points;
 ALTER TABLE scene_points_v7 RENAME TO scene_points;
 CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
-CREATE VIEW scene_results AS
-SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
-       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
-       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
-       p.first_shock_peak_n, p.first_shock_impulse_n_s,
-       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc
-FROM scene_points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scene_references r ON r.reference_id = p.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
-CREATE VIEW scene_params AS SELECT * FROM scene_results;
 )sql",
     // 7 -> 8: ensemble studies of a scene (formats/ensemble_study_spec.h). A point is one
     // member: a clearance state, a numerical setting and the member's index; its zones' rows
@@ -429,15 +330,6 @@ CREATE TABLE ensemble_member_zones (
   wear_work_rate_w          REAL,
   PRIMARY KEY (point_id, zone)
 ) WITHOUT ROWID;
-CREATE VIEW ensemble_results AS
-SELECT st.name AS study, p.point_id, p.state, p.setting_json, p.member, p.status, p.message,
-       p.member_seed, p.coordinates, p.dt_used_s, p.steps, p.wall_s, p.cpu_s, p.max_energy_ratio,
-       (SELECT max(z.max_force_n) FROM ensemble_member_zones z WHERE z.point_id = p.point_id)
-         AS largest_force_n,
-       ru.code_version, p.host, p.rank, p.updated_utc
-FROM ensemble_members p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 8 -> 9: a member refers to its nominal run by its state's name, not by the nominal run's
     // key, which holds the whole scene: a million members repeated it into gigabytes. The key
@@ -451,36 +343,6 @@ UPDATE ensemble_members SET reference_key = state;
     R"sql(
 ALTER TABLE scores ADD COLUMN pfr REAL;
 ALTER TABLE scene_points ADD COLUMN pfr REAL;
-DROP VIEW scene_params;
-DROP VIEW results;
-DROP VIEW scene_results;
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
-CREATE VIEW scene_results AS
-SELECT st.name AS study, p.point_id, p.parameters_json, p.status, p.message, p.err, p.srf,
-       p.coordinates, p.zones, p.dt_used_s, p.dt_paper_s, p.dt_sharp_s, p.steps, p.wall_s,
-       p.cpu_s, p.max_energy_ratio, p.largest_force_n, p.largest_force_zone, p.n_shocks,
-       p.first_shock_peak_n, p.first_shock_impulse_n_s,
-       r.parameters_json AS reference_parameters_json, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, p.pfr
-FROM scene_points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scene_references r ON r.reference_id = p.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
-CREATE VIEW scene_params AS SELECT * FROM scene_results;
 )sql",
     // 10 -> 11: a member zone's Archard wear volume over the scene's wear life and its friction
     // power, and one row per impact of the zones a member's scene lists
@@ -519,26 +381,6 @@ ALTER TABLE scores ADD COLUMN pfr_spread_high REAL;
 ALTER TABLE reference_runs ADD COLUMN estimate_tip REAL;
 ALTER TABLE reference_runs ADD COLUMN estimate_impulse REAL;
 ALTER TABLE reference_runs ADD COLUMN estimate_err REAL;
-DROP VIEW results;
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr,
-       sc.spread_runs, sc.err_spread_low, sc.err_spread_high, sc.srf_spread_low,
-       sc.srf_spread_high, sc.pfr_spread_low, sc.pfr_spread_high,
-       r.estimate_tip AS ref_estimate_tip, r.estimate_impulse AS ref_estimate_impulse,
-       r.estimate_err AS ref_estimate_err
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
     // 12 -> 13: a scene point refers to its reference by the reference's parameters as JSON
     // (the "parameters" member of the reference's key, as ParametersJson wrote it there), not by
@@ -629,26 +471,6 @@ DROP TABLE renamed_zones;
     // reference decided every score it scored.
     R"sql(
 ALTER TABLE scores ADD COLUMN reference_undecided TEXT;
-DROP VIEW results;
-CREATE VIEW results AS
-SELECT st.name AS study, p.point_id, p.r_k, p.r_ftrunc, p.scheme, p.dt_rule, p.dt_factor,
-       p.dt_asked_s, p.window_s, p.mass_damping_per_s, p.status, p.message,
-       sc.err, sc.srf, sc.n_modes, sc.n_elements, sc.n_dofs, sc.dt_requested_s, sc.dt_used_s,
-       sc.dt_paper_s, sc.dt_sharp_s, sc.steps, sc.wall_s, sc.cpu_s, sc.max_energy_ratio,
-       sc.n_shocks, sc.first_shock_start_s, sc.first_shock_impulse_n_s, sc.first_shock_peak_n,
-       sc.first_shock_duration_s, sc.first_shock_rebounds,
-       r.r_fref, r.r_fref_check, r.convergence AS ref_convergence,
-       r.n_transitions AS ref_transitions, r.wall_s AS ref_wall_s,
-       ru.code_version, p.host, p.rank, p.updated_utc, sc.srf_definition, sc.pfr,
-       sc.spread_runs, sc.err_spread_low, sc.err_spread_high, sc.srf_spread_low,
-       sc.srf_spread_high, sc.pfr_spread_low, sc.pfr_spread_high,
-       r.estimate_tip AS ref_estimate_tip, r.estimate_impulse AS ref_estimate_impulse,
-       r.estimate_err AS ref_estimate_err, sc.reference_undecided
-FROM points p
-JOIN studies st ON st.study_id = p.study_id
-LEFT JOIN scores sc ON sc.point_id = p.point_id
-LEFT JOIN reference_runs r ON r.reference_id = sc.reference_id
-LEFT JOIN runs ru ON ru.run_id = p.run_id;
 )sql",
 };
 

@@ -16,7 +16,7 @@ const PointTable kScenePoints{"scene_points",
                               ColumnNames(kScenePointParameterColumns),
                               "scene_results",
                               {},
-                              ParameterView{"scene_params", "parameters_json"}};
+                              ParameterView{"scene_params", "parameters_json", 6}};
 
 const PointTable kEnsembleMembers{
     "ensemble_members", "scene_ensemble",          ColumnNames(kEnsembleMemberParameterColumns),

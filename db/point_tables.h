@@ -22,6 +22,7 @@ namespace shockmap {
 struct ParameterView {
   std::string_view name;
   std::string_view json_column;
+  int since = 0;  // The schema version that added it.
 };
 
 // A table of study points. Its lifecycle columns are the same for every kind: point_id,

@@ -8,6 +8,7 @@
 
 #include "db/migrations.h"
 #include "db/point_tables.h"
+#include "db/result_views.h"
 
 namespace shockmap {
 namespace {
@@ -39,26 +40,42 @@ SchemaObjects ObjectsOf(Connection& db) {
   return objects;
 }
 
+// The names of the declared views (db/result_views.h, db/point_tables.h) a database of schema
+// `version` holds.
+std::vector<std::string> DeclaredViewsOf(int version) {
+  std::vector<std::string> names;
+  for (const ResultView& view : ResultViews()) {
+    if (view.since <= version) names.emplace_back(view.name);
+  }
+  for (const PointTable* table : PointTables()) {
+    if (table->parameter_view && table->parameter_view->since <= version) {
+      names.emplace_back(table->parameter_view->name);
+    }
+  }
+  return names;
+}
+
 // What a new database is made of: the migrations applied in turn to an empty database in
-// memory, once per process.
+// memory, once per process, and the declared views.
 struct FreshSchema {
   std::vector<SchemaObjects> objects;  // Of each version, index = version.
-  // The definition of every view and trigger (none) of the current version, by name, as SQLite
-  // stores them.
-  std::map<std::string, std::string> views_and_triggers;
+  // The definition of every results view without its layout (WithoutLayout), by name.
+  std::map<std::string, std::string> results_views;
 };
 
 const FreshSchema& Fresh() {
   static const FreshSchema fresh = [] {
     Connection scratch(std::string(kInMemoryDatabaseName), Connection::Mode::kInMemory);
     FreshSchema f{{ObjectsOf(scratch)}, {}};
-    for (const char* migration : kMigrations) {
-      scratch.Execute(migration);
-      f.objects.push_back(ObjectsOf(scratch));
+    for (int version = 1; version <= kSchemaVersion; ++version) {
+      scratch.Execute(kMigrations[version - 1]);
+      SchemaObjects objects = ObjectsOf(scratch);
+      for (const std::string& view : DeclaredViewsOf(version)) objects.insert("view " + view);
+      f.objects.push_back(std::move(objects));
     }
-    Statement s =
-        scratch.Prepare("SELECT name, sql FROM sqlite_schema WHERE type IN ('view', 'trigger')");
-    while (s.Step()) f.views_and_triggers[s.GetText(0)] = s.GetText(1);
+    for (const ResultView& view : ResultViews()) {
+      f.results_views[std::string(view.name)] = WithoutLayout(CreateViewSql(view));
+    }
     return f;
   }();
   return fresh;
@@ -96,16 +113,20 @@ void CheckTablesMatch(Connection& db, int version) {
   }
 }
 
-// True when `sql` is how this build defines `name` in `file`: as in a new database or, for a
-// kind's parameter view (scene_params), with the columns of the parameter paths stored in the
-// file.
+// True when `sql` is how this build defines the view `name` in `file`: a results view as its
+// declaration writes it, whatever the layout of its text (earlier versions wrote it by hand), or
+// a kind's parameter view (scene_params) with the columns of the parameter paths stored in the
+// file, or with none as earlier versions wrote it until they stored a point
+// (`SELECT * FROM scene_results`).
 bool IsOurs(Connection& file, const std::string& name, const std::string& sql) {
-  const auto& fresh = Fresh().views_and_triggers;
+  const auto& fresh = Fresh().results_views;
   const auto our = fresh.find(name);
-  if (our != fresh.end() && our->second == sql) return true;
+  if (our != fresh.end()) return our->second == WithoutLayout(sql);
   for (const PointTable* table : PointTables()) {
     if (table->parameter_view && table->parameter_view->name == name) {
-      return sql == ParameterViewSql(file, *table);
+      return sql == ParameterViewSql(file, *table) ||
+             WithoutLayout(sql) ==
+                 "CREATE VIEW " + name + " AS SELECT * FROM " + std::string(table->results_view);
     }
   }
   return false;
@@ -194,12 +215,9 @@ void MigrateToCurrent(Connection& db) {
   // serialized, and the second reads the version again under the lock and finds nothing to do.
   Transaction t(db);
   const int from = CheckedVersion(db);
+  DropDeclaredViews(db);
   for (int version = from; version < kSchemaVersion; ++version) db.Execute(kMigrations[version]);
-  // The migrations write the parameter views (scene_params) without parameter columns: points
-  // already stored get theirs at once.
-  if (from > 0 && from < kSchemaVersion) {
-    for (const PointTable* table : PointTables()) RefreshParameterView(db, *table);
-  }
+  CreateDeclaredViews(db);
   CheckEntriesAreOurs(db, "view");
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId));
   db.Execute("PRAGMA user_version = " + std::to_string(kSchemaVersion));

@@ -7,13 +7,12 @@
 
 namespace shockmap {
 
+// A shock as one JSON object, a member per column of kShockColumns (compare/output_columns.h).
 nlohmann::json ShockToJson(const Shock& shock);
 
-// Keys: rk, rftrunc, scheme, status, message, one per score of the registry (err, srf, ...;
-// null when not scored), n_modes,
-// n_elements, n_dofs, dt_s, dt_requested_s, dt_paper_s, dt_sharp_s, steps, window_s,
-// ref_convergence, r_fref, r_fref_check, ref_transitions, wall_ref_s, wall_num_s, cpu_num_s,
-// max_energy_ratio, first_shock_num, first_shock_ref (null when none).
+// A member per column of kComparisonColumns (compare/output_columns.h), one per score of the
+// registry (err, srf, ...; null when not scored), reference_undecided (the names of the scores
+// the reference leaves undecided), first_shock_num and first_shock_ref (null when none).
 nlohmann::json ComparisonToJson(const CantileverImpact& problem, const ComparisonOptions& options,
                                 const ComparisonResult& result);
 

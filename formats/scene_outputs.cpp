@@ -1,28 +1,16 @@
 #include "formats/scene_outputs.h"
 
 #include <algorithm>
-#include <cmath>
-#include <optional>
 #include <tuple>
 
 #include "formats/comparison_json.h"
 #include "formats/output_file.h"
+#include "formats/output_values.h"
 
 namespace shockmap {
 namespace {
 
 using Json = nlohmann::json;
-
-// How a zone's wear work rate was measured: at every step from its two sides' tangential speed
-// (no friction), or only while it slides (friction).
-const char* WearBasis(const ImpactStatistics& s) {
-  return s.sliding_only ? "sliding_only" : "tangential_speed";
-}
-
-// Archard's volume over the life, null where the wear work rate is unavailable.
-Json WearVolumeJson(const WearLaw& law, const ImpactStatistics& s) {
-  return s.wear_available ? Json(ArchardWearVolume(law, s.wear_work_rate_w)) : Json(nullptr);
-}
 
 Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
   const SceneZone& z = scene.zones[i];
@@ -51,50 +39,9 @@ Json ZoneJson(const Scene& scene, const SceneRun& run, std::size_t i) {
                       {"first", shocks.empty() ? Json(nullptr) : ShockToJson(shocks.front())}};
   }
   if (!run.impact_statistics.empty()) {
-    Json statistics = ImpactStatisticsToJson(run.impact_statistics[i]);
-    if (scene.wear)
-      statistics["wear_volume_m3"] = WearVolumeJson(*scene.wear, run.impact_statistics[i]);
-    zone["impact_statistics"] = std::move(statistics);
+    zone["impact_statistics"] = ImpactStatisticsToJson({run.impact_statistics[i], scene.wear});
   }
   return zone;
-}
-
-// The columns of impact_statistics.csv after the zone's name: those of the first version, then
-// those added with the conventions, friction and wear (docs/scenes.md). An unavailable wear
-// work rate, friction power or wear volume is an empty field.
-constexpr const char* kImpactColumns =
-    "impacts,impacts_per_s,rebounds_per_impact,mean_impact_duration_s,"
-    "longest_impact_duration_s,contact_time_fraction,mean_force_n,mean_force_in_contact_n,"
-    "rms_force_n,max_force_n,impulse_n_s,wear_work_rate_w,contacts,truncated,convention,"
-    "window_start_s,window_end_s,mean_contact_duration_s,rms_force_in_contact_n,wear_basis,"
-    "friction_power_w,wear_volume_m3";
-
-void WriteImpactRow(std::ostream& out, const ImpactStatistics& s,
-                    const std::optional<WearLaw>& wear) {
-  out << s.impacts << ',' << s.impacts_per_s << ',' << s.rebounds_per_impact << ','
-      << s.mean_impact_duration_s << ',' << s.longest_impact_duration_s << ','
-      << s.contact_time_fraction << ',' << s.mean_force_n << ',' << s.mean_force_in_contact_n << ','
-      << s.rms_force_n << ',' << s.max_force_n << ',' << s.impulse_n_s << ',';
-  if (s.wear_available) out << s.wear_work_rate_w;
-  out << ',' << s.contacts << ',' << (s.truncated ? 1 : 0) << ',' << ToString(s.convention) << ','
-      << s.window_start_s << ',' << s.window_end_s << ',' << s.mean_contact_duration_s << ','
-      << s.rms_force_in_contact_n << ',' << WearBasis(s) << ',';
-  if (s.wear_available && s.sliding_only) out << s.friction_power_w;
-  out << ',';
-  if (s.wear_available && wear) out << ArchardWearVolume(*wear, s.wear_work_rate_w);
-  out << '\n';
-}
-
-// The columns of impacts.csv after the zone's name and the impact's number (from 1).
-constexpr const char* kImpactRecordColumns =
-    "start_s,duration_s,peak_force_n,peak_time_s,impulse_n_s,impact_speed_m_s,contacts,rebounds,"
-    "truncated";
-
-void WriteImpactRecord(std::ostream& out, const ImpactRecord& r) {
-  out << r.start_s << ',' << r.duration_s << ',' << r.peak_force_n << ',' << r.peak_time_s << ','
-      << r.impulse_n_s << ',';
-  if (std::isfinite(r.impact_speed_m_s)) out << r.impact_speed_m_s;
-  out << ',' << r.contacts << ',' << r.contacts - 1 << ',' << (r.truncated ? 1 : 0) << '\n';
 }
 
 template <typename Row>
@@ -109,51 +56,23 @@ void WriteCsv(const std::filesystem::path& file, const std::string& header, std:
 
 }  // namespace
 
-Json ImpactStatisticsToJson(const ImpactStatistics& s) {
-  return {{"convention", ToString(s.convention)},
-          {"window_s", {s.window_start_s, s.window_end_s}},
-          {"impacts", s.impacts},
-          {"impacts_per_s", s.impacts_per_s},
-          {"rebounds_per_impact", s.rebounds_per_impact},
-          {"mean_impact_duration_s", s.mean_impact_duration_s},
-          {"longest_impact_duration_s", s.longest_impact_duration_s},
-          {"contact_time_fraction", s.contact_time_fraction},
-          {"mean_force_n", s.mean_force_n},
-          {"mean_force_in_contact_n", s.mean_force_in_contact_n},
-          {"rms_force_n", s.rms_force_n},
-          {"rms_force_in_contact_n", s.rms_force_in_contact_n},
-          {"max_force_n", s.max_force_n},
-          {"impulse_n_s", s.impulse_n_s},
-          {"mean_contact_duration_s", s.mean_contact_duration_s},
-          {"wear_available", s.wear_available},
-          {"wear_work_rate_w", s.wear_available ? Json(s.wear_work_rate_w) : Json(nullptr)},
-          {"wear_basis", WearBasis(s)},
-          {"friction_power_w",
-           s.wear_available && s.sliding_only ? Json(s.friction_power_w) : Json(nullptr)},
-          {"contacts", s.contacts},
-          {"truncated", s.truncated},
-          {"impacts_listed", s.records.size()}};
+Json ImpactStatisticsToJson(const ZoneImpactStatistics& zone) {
+  // The columns of impact_statistics.csv, but the window as one pair and the wear volume only
+  // where the scene has a wear law; whether a wear work rate was measured and how many impacts
+  // the run lists.
+  const ImpactStatistics& s = zone.statistics;
+  Json json = JsonObjectOf(zone, kImpactStatisticsColumns);
+  json.erase("window_start_s");
+  json.erase("window_end_s");
+  if (!zone.wear) json.erase("wear_volume_m3");
+  json["window_s"] = {s.window_start_s, s.window_end_s};
+  json["wear_available"] = s.wear_available;
+  json["impacts_listed"] = s.records.size();
+  return json;
 }
 
 Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
-  const RunSummary& s = run.result.summary;
-  Json json = {{"scene", scene.name},
-               {"status", ToString(s.status)},
-               {"message", s.message},
-               {"end_time_s", scene.solver.end_time_s},
-               {"dt_s", s.dt_used_s},
-               {"dt_requested_s", s.dt_requested_s},
-               {"dt_paper_s", run.bounds.dt_paper_s},
-               {"dt_sharp_s", run.bounds.dt_sharp_s},
-               {"steps", s.steps_taken},
-               {"beams", scene.beams.size()},
-               {"zones", scene.zones.size()},
-               {"coordinates", run.coordinates},
-               {"distinct_bases", run.distinct_bases},
-               {"max_energy_ratio", s.max_energy_ratio},
-               {"build_wall_s", run.build_wall_s},
-               {"wall_s", s.wall_s},
-               {"cpu_s", s.cpu_s}};
+  Json json = JsonObjectOf(SceneRunOutput{scene, run}, kSceneRunColumns);
   if (!scene.structures.empty()) json["structures"] = scene.structures.size();
   if (scene.wear) {
     json["wear"] = {{"coefficient_m2_per_n", scene.wear->coefficient_m2_per_n},
@@ -246,23 +165,24 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
       for (const Shock& s : run.shocks[i]) rows.emplace_back(run.recorded_zones[i], &s);
     }
     WriteCsv(
-        dir / "shocks.csv",
-        "zone,start_s,end_s,duration_s,peak_force_n,peak_time_s,impulse_n_s,rebounds,truncated",
-        rows.size(),
+        dir / "shocks.csv", "zone," + CsvHeaderOf(kShockColumns), rows.size(),
         [&](std::ostream& out, std::size_t i) {
-          const Shock& s = *rows[i].second;
-          out << CsvField(scene.zones[rows[i].first].name) << ',' << s.start_s << ',' << s.end_s
-              << ',' << s.Duration() << ',' << s.peak_force_n << ',' << s.peak_time_s << ','
-              << s.impulse_n_s << ',' << s.Rebounds() << ',' << (s.truncated ? 1 : 0) << '\n';
+          out << CsvField(scene.zones[rows[i].first].name) << ',';
+          WriteCsvFields(out, OutputValuesOf(*rows[i].second, kShockColumns));
+          out << '\n';
         },
         written);
   }
   if (!run.impact_statistics.empty()) {
     WriteCsv(
-        dir / "impact_statistics.csv", std::string("zone,") + kImpactColumns, scene.zones.size(),
+        dir / "impact_statistics.csv", "zone," + CsvHeaderOf(kImpactStatisticsColumns),
+        scene.zones.size(),
         [&](std::ostream& out, std::size_t i) {
           out << CsvField(scene.zones[i].name) << ',';
-          WriteImpactRow(out, run.impact_statistics[i], scene.wear);
+          WriteCsvFields(out,
+                         OutputValuesOf(ZoneImpactStatistics{run.impact_statistics[i], scene.wear},
+                                        kImpactStatisticsColumns));
+          out << '\n';
         },
         written);
   }
@@ -274,11 +194,12 @@ std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const S
         rows.emplace_back(z, static_cast<int>(k) + 1, &records[k]);
     }
     WriteCsv(
-        dir / "impacts.csv", std::string("zone,impact,") + kImpactRecordColumns, rows.size(),
+        dir / "impacts.csv", "zone,impact," + CsvHeaderOf(kImpactRecordColumns), rows.size(),
         [&](std::ostream& out, std::size_t i) {
           const auto& [zone, number, record] = rows[i];
           out << CsvField(scene.zones[static_cast<std::size_t>(zone)].name) << ',' << number << ',';
-          WriteImpactRecord(out, *record);
+          WriteCsvFields(out, OutputValuesOf(*record, kImpactRecordColumns));
+          out << '\n';
         },
         written);
   }

@@ -7,15 +7,18 @@
 
 #include <nlohmann/json.hpp>
 
+#include "compare/output_columns.h"
 #include "compare/scene_run.h"
 
 namespace shockmap {
 
-// One zone's impact statistics under the field names of ImpactStatistics; the wear work rate
-// is null where it is unavailable (wear_available false).
-nlohmann::json ImpactStatisticsToJson(const ImpactStatistics& statistics);
+// One zone's impact statistics: the columns of impact_statistics.csv (kImpactStatisticsColumns,
+// none as null), but the window as one pair window_s and the wear volume only where the scene
+// has a wear law; wear_available and impacts_listed beside them.
+nlohmann::json ImpactStatisticsToJson(const ZoneImpactStatistics& zone);
 
-// Status, time step and bounds, model size, timings, the wear law and the power laws' bound at
+// A member per column of kSceneRunColumns (compare/output_columns.h: status, time step and
+// bounds, model size, timings), then the wear law and the power laws' bound at
 // the penetrations reached when the scene has them, and per zone the maximum force, shock
 // statistics and impact statistics (with the wear volume) when they were requested.
 nlohmann::json SceneRunToJson(const Scene& scene, const SceneRun& run);

@@ -9,27 +9,41 @@
 
 #include "compare/comparison.h"
 #include "compare/comparison_limits.h"
+#include "compare/output_columns.h"
 #include "engine/point_replay.h"
+#include "formats/comparison_json.h"
 #include "python/bindings.h"
 #include "python/signal_arrays.h"
 
 namespace shockmap::python {
 namespace {
 
-// A result shared by the Python object and every array taken from it.
+// A result shared by the Python object and every array taken from it, with what it was asked.
 struct Comparison {
   std::shared_ptr<const ComparisonResult> result;
+  CantileverImpact problem;
+  ComparisonOptions options;
 };
 
+// A value of an output column as Python holds it: None, a bool, an int, a float or a str.
+py::object PythonOf(const OutputValue& value) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) {
+          return py::none();
+        } else {
+          return py::cast(v);
+        }
+      },
+      value);
+}
+
+// A member per column of kShockColumns, as ShockToJson writes it.
 py::dict ShockDict(const Shock& s) {
   py::dict d;
-  d["start_s"] = s.start_s;
-  d["end_s"] = s.end_s;
-  d["impulse_n_s"] = s.impulse_n_s;
-  d["peak_force_n"] = s.peak_force_n;
-  d["peak_time_s"] = s.peak_time_s;
-  d["rebounds"] = s.Rebounds();
-  d["truncated"] = s.truncated;
+  for (const OutputColumn<Shock>& c : kShockColumns) {
+    d[py::str(std::string(c.name))] = PythonOf(c.value(s));
+  }
   return d;
 }
 
@@ -102,14 +116,16 @@ Comparison Compare(double r_k, double r_ftrunc, std::optional<double> dt_s, doub
   CheckComparisonAffordable(problem, options,
                             {"rftrunc", "rfref", "window_s", "elements", "dt", "dt_factor"});
   py::gil_scoped_release release;
-  return {std::make_shared<const ComparisonResult>(RunComparison(problem, options))};
+  return {std::make_shared<const ComparisonResult>(RunComparison(problem, options)), problem,
+          options};
 }
 
 Comparison Point(const std::string& database_path, const std::string& study,
                  std::int64_t point_id) {
   py::gil_scoped_release release;
   ReplayedPoint replay = ReplayCanonicalPoint(database_path, study, point_id);
-  return {std::make_shared<const ComparisonResult>(std::move(replay.result))};
+  return {std::make_shared<const ComparisonResult>(std::move(replay.result)), replay.problem,
+          replay.options};
 }
 
 }  // namespace
@@ -120,6 +136,10 @@ void BindComparison(py::module_& m) {
       .def_property_readonly("status",
                              [](const Comparison& c) { return ToString(c.result->status); })
       .def_property_readonly("message", [](const Comparison& c) { return c.result->message; })
+      .def_property_readonly("summary_json",
+                             [](const Comparison& c) {
+                               return ComparisonToJson(c.problem, c.options, *c.result).dump();
+                             })
       .def_property_readonly("scores", [](const Comparison& c) { return ScoreDict(*c.result); })
       .def_property_readonly("reference_undecided",
                              [](const Comparison& c) { return c.result->undecided; })

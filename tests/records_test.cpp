@@ -17,6 +17,7 @@
 
 #include "db/migrations.h"
 #include "db/point_tables.h"
+#include "db/result_views.h"
 #include "db/schema.h"
 #include "db/stored_record.h"
 #include "engine/record_codec.h"
@@ -260,6 +261,97 @@ TEST(RecordTable, ARecordsCellsAreItsColumnsInOrderWithNullForAnEmptyOptional) {
   EXPECT_EQ(row["steps"], TableCell(std::int64_t{123456789012}));
   EXPECT_EQ(row["srf_definition"], TableCell(std::string("reference_window")));
   EXPECT_THROW(row["no_such_column"], std::out_of_range);
+}
+
+// The names of a table's or view's columns, in order.
+std::vector<std::string> ColumnsOf(Connection& db, std::string_view table) {
+  std::vector<std::string> names;
+  Statement s = db.Prepare("SELECT name FROM pragma_table_info(?)");
+  s.Bind(1, table);
+  while (s.Step()) names.push_back(s.GetText(0));
+  return names;
+}
+
+// The statement that defines `view`, as SQLite stores it.
+std::string ViewSqlOf(Connection& db, std::string_view view) {
+  Statement s = db.Prepare("SELECT sql FROM sqlite_schema WHERE type = 'view' AND name = ?");
+  s.Bind(1, view);
+  return s.Step() ? s.GetText(0) : "";
+}
+
+std::string Source(const std::string& path) {
+  return std::string(SHOCKMAP_SOURCE_DIR) + "/" + path;
+}
+
+TEST(ResultViews, NoMigrationWritesAView) {
+  for (const char* migration : kMigrations) {
+    EXPECT_EQ(std::string(migration).find("VIEW"), std::string::npos) << migration;
+  }
+}
+
+// Each view shows every column of the records it reads but those it leaves out, and what it
+// leaves out are columns of those records (a name mistyped would show the column).
+TEST(ResultViews, EachViewShowsEveryColumnOfItsRecordsButThoseItLeavesOut) {
+  for (const ResultView& view : ResultViews()) {
+    SCOPED_TRACE(view.name);
+    const std::vector<std::string> columns = ViewColumns(view);
+    for (const ViewSource& source : view.sources) {
+      for (std::string_view left_out : source.left_out) {
+        EXPECT_EQ(std::ranges::count(source.columns, left_out), 1) << left_out;
+      }
+      for (const std::string& column : source.columns) {
+        const std::string expression = std::string(source.alias) + "." + column;
+        const bool shown = std::ranges::any_of(columns, [&](const std::string& c) {
+          return c == expression || c.starts_with(expression + " AS ");
+        });
+        EXPECT_EQ(shown, std::ranges::count(source.left_out, column) == 0) << expression;
+      }
+    }
+  }
+}
+
+// A database of schema 2 (tests/data/schema_v2.db, written by that version) is migrated with
+// the views of a new database: the same definitions and columns, and scene_params with the
+// stored parameter paths after the columns of scene_results.
+TEST_F(RecordsTest, AnOldSchemaDatabaseOpensWithTheViewsOfANewOne) {
+  std::filesystem::copy_file(Source("tests/data/schema_v2.db"), Path("v2.db"));
+  Connection old(Path("v2.db"), Connection::Mode::kReadWriteCreate);
+  Connection fresh(Path("fresh.db"), Connection::Mode::kReadWriteCreate);
+  const std::vector<std::string> v2_results = ColumnsOf(old, "results");
+  ASSERT_EQ(std::ranges::count(v2_results, "pfr"), 0);  // Added to the view by schema 10.
+  MigrateToCurrent(old);
+  MigrateToCurrent(fresh);
+  for (const ResultView& view : ResultViews()) {
+    SCOPED_TRACE(view.name);
+    EXPECT_EQ(ViewSqlOf(old, view.name), ViewSqlOf(fresh, view.name));
+    EXPECT_EQ(ColumnsOf(old, view.name), ColumnsOf(fresh, view.name));
+    EXPECT_EQ(ColumnsOf(fresh, view.name).size(), ViewColumns(view).size());
+  }
+  EXPECT_EQ(ColumnsOf(fresh, "scene_params"), ColumnsOf(fresh, "scene_results"));
+  const std::vector<std::string> params = ColumnsOf(old, "scene_params");
+  const std::vector<std::string> results = ColumnsOf(old, "scene_results");
+  ASSERT_GT(params.size(), results.size());
+  EXPECT_TRUE(std::equal(results.begin(), results.end(), params.begin()));
+  for (auto p = params.begin() + static_cast<std::ptrdiff_t>(results.size()); p != params.end();
+       ++p) {
+    EXPECT_TRUE(p->starts_with("params_")) << *p;
+  }
+}
+
+// A database of the current schema whose views earlier versions wrote by hand (the fuzzer's
+// seeds, written before the views were declared) reads as it did: its views differ from the
+// declared ones in layout only, and show the same columns.
+TEST_F(RecordsTest, ViewsWrittenByHandByEarlierVersionsAreAcceptedWithTheirLayout) {
+  std::filesystem::copy_file(Source("fuzz/corpus/database/canonical.db"), Path("seed.db"));
+  Connection fresh(Path("fresh.db"), Connection::Mode::kReadWriteCreate);
+  MigrateToCurrent(fresh);
+  Connection seed(Path("seed.db"), Connection::Mode::kReadOnly);
+  EXPECT_NO_THROW(CheckSchema(seed));
+  for (const ResultView& view : ResultViews()) {
+    SCOPED_TRACE(view.name);
+    EXPECT_EQ(WithoutLayout(ViewSqlOf(seed, view.name)), WithoutLayout(CreateViewSql(view)));
+    EXPECT_EQ(ColumnsOf(seed, view.name), ColumnsOf(fresh, view.name));
+  }
 }
 
 }  // namespace

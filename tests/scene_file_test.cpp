@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "compare/comparison.h"
+#include "compare/output_columns.h"
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "formats/scene_file.h"
@@ -30,6 +31,21 @@ using testing::WriteText;
 using Json = nlohmann::json;
 
 const std::string kScenes = std::string(SHOCKMAP_SOURCE_DIR) + "/scenes/";
+
+// The first line of a text file, without its end.
+std::string FirstLine(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+// The names joined by commas, as a CSV header holds them.
+std::string Joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ",") + n;
+  return text;
+}
 
 class SceneFiles : public testing::TempDirTest {
  protected:
@@ -560,7 +576,16 @@ TEST_F(SceneFiles, ImpactStatisticsAgreeWithTheShocksOfTheHistory) {
   EXPECT_EQ(impacts["contacts"].get<int>(),
             zone["shocks"]["count"].get<int>() + zone["shocks"]["rebounds"].get<int>());
   EXPECT_TRUE(impacts["wear_work_rate_w"].is_null());
-  EXPECT_TRUE(std::filesystem::exists(Path("impacts") + "/impact_statistics.csv"));
+  // The summary has a member per column of its table; the CSV files' headers are their column
+  // tables' names, after the zone's.
+  const Json summary = Json::parse(r.output);
+  for (const std::string& name : ColumnNames(kSceneRunColumns)) {
+    EXPECT_TRUE(summary.contains(name)) << name;
+  }
+  EXPECT_EQ(FirstLine(Path("impacts") + "/impact_statistics.csv"),
+            "zone," + Joined(ColumnNames(kImpactStatisticsColumns)));
+  EXPECT_EQ(FirstLine(Path("impacts") + "/shocks.csv"),
+            "zone," + Joined(ColumnNames(kShockColumns)));
 }
 
 // The rubbing bundle (scenes/bundle_hex_7_friction.json) over 0.05 s: its zones' wear work rate
@@ -595,7 +620,8 @@ TEST_F(SceneFiles, RubbingBundleWritesItsWearAndItsImpacts) {
   }
   EXPECT_GT(worn, 10);
   const std::string impacts = testing::ReadBytes(Path("rubbing") + "/impacts.csv");
-  EXPECT_EQ(impacts.rfind("zone,impact,start_s,duration_s,peak_force_n,peak_time_s,", 0), 0u);
+  EXPECT_EQ(FirstLine(Path("rubbing") + "/impacts.csv"),
+            "zone,impact," + Joined(ColumnNames(kImpactRecordColumns)));
   EXPECT_NE(impacts.find("\nduct-pad,1,"), std::string::npos) << impacts;
   const std::string csv = testing::ReadBytes(Path("rubbing") + "/impact_statistics.csv");
   EXPECT_NE(csv.find(",wear_basis,friction_power_w,wear_volume_m3\n"), std::string::npos);

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "db/result_views.h"
 #include "db/schema.h"
 #include "db/sqlite_handle.h"
 #include "tests/database_rows.h"
@@ -110,10 +111,11 @@ TEST_F(Resources, RedefinedViewIsRefusedInsteadOfFollowed) {
   EXPECT_TRUE(ReadBytes(db) == before) << db << " changed";
 }
 
-// A database of the previous schema version, as that version's migrations left it.
+// A database of the previous schema version: its migrations, and the views as declared now.
 std::string PreviousVersionDatabase(const std::string& path) {
   Connection db(path, Connection::Mode::kReadWriteCreate);
   for (int i = 0; i + 1 < kSchemaVersion; ++i) db.Execute(kMigrations[i]);
+  CreateDeclaredViews(db);
   db.Execute("PRAGMA application_id = " + std::to_string(kApplicationId) +
              "; PRAGMA user_version = " + std::to_string(kSchemaVersion - 1));
   return path;

@@ -81,6 +81,8 @@ def _score(self, name):
 Comparison.err = property(lambda self: _score(self, "err"), doc="Err, paper eq. 8")
 Comparison.srf = property(lambda self: _score(self, "srf"), doc="SRf, paper eq. 9")
 Comparison.pfr = property(lambda self: _score(self, "pfr"), doc="PFr, first shock's peak force ratio")
+Comparison.summary = property(lambda self: _json.loads(self.summary_json),
+                              doc="The comparison as `shockmap compare --json` prints it")
 Comparison.__repr__ = lambda self: (
     f"<shockmap.Comparison status={self.status} err={self.err} srf={self.srf}>")
 

@@ -118,6 +118,18 @@ def test_defaults_are_the_command_lines(cli):
     assert c.shocks_reference[0]["peak_force_n"] == printed["first_shock_ref"]["peak_force_n"]
 
 
+def test_summary_and_shocks_have_the_members_compare_json_prints(cli):
+    printed = json.loads(cli("compare", "--rk", 3000, "--rftrunc", 300, "--json").stdout)
+    c = shockmap.compare(rk=3000, rftrunc=300)
+    assert c.summary.keys() == printed.keys()
+    timings = {"wall_ref_s", "wall_num_s", "cpu_num_s"}
+    assert {k: v for k, v in c.summary.items() if k not in timings} == {
+        k: v for k, v in printed.items() if k not in timings}
+    # A shock as a dict has every member of the JSON's shocks, its duration included.
+    assert c.shocks_numerical[0] == printed["first_shock_num"]
+    assert c.shocks_reference[0] == printed["first_shock_ref"]
+
+
 def test_histories_are_arrays_on_the_run_s_time_grid():
     c = shockmap.compare(rk=3000, rftrunc=300, window_s=WINDOW_S)
     t = c.numerical["t_s"]
