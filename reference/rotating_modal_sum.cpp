@@ -19,8 +19,9 @@ Eigen::ArrayXd Padded(const Eigen::VectorXd& v) {
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
 
 // One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated. The
-// arrays have a double's alignment only, so lanes are copied in and out (unaligned moves), and
-// vectors pass by reference only: none crosses by value from one clone's target to another's.
+// lanes are copied in and out (unaligned moves, which the arrays' cache-line alignment keeps
+// within one line), and vectors pass by reference only: none crosses by value from one clone's
+// target to another's.
 [[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im,
                                                       const double* rotation_re,
                                                       const double* rotation_im, Lanes& sums) {
