@@ -14,6 +14,7 @@
 #include <cmath>
 #include <vector>
 
+#include "compare/reference_estimate.h"
 #include "compare/reference_run.h"
 #include "core/cantilever_impact.h"
 
@@ -80,6 +81,33 @@ BENCHMARK(ReferenceSolutionAlone)
     ->Args({5, 60, 1})
     ->Args({6, 60, 0})
     ->Args({6, 60, 1})
+    ->Unit(benchmark::kMillisecond);
+
+// Each truncation of a reference's estimate alone, as ComputeReferenceRun solves it: the
+// reference R = 30 sqrt(R_k) f1 over 0.06 s on its own output grid with its force (level 0), and
+// R 3^level (R / 9, R / 3, 3 R) for the estimate, solved and sampled on the reference's grid for
+// their tips alone (docs/performance.md, "What the reference's estimate needs").
+void ReferenceEstimateLevel(benchmark::State& state) {
+  CantileverImpact problem;
+  problem.r_k = std::pow(10.0, static_cast<double>(state.range(0)));
+  ShockSegmentationOptions shocks;
+  shocks.rest_duration_s = 0.1 / problem.F1Hz();
+  ReferenceOptions options;
+  const double r_fref = std::max(2000.0, 30.0 * std::sqrt(problem.r_k));
+  const ReferenceLevel reference = SolveReferenceLevel(problem, options, r_fref, kWindowS, shocks);
+  const double level = static_cast<double>(state.range(1));
+  const double dt_s = level == 0.0 ? 0.0 : reference.histories.tip_m.dt_s;
+  for (auto _ : state) {
+    const ReferenceLevel l = SolveReferenceLevel(problem, options, r_fref * std::pow(3.0, level),
+                                                 kWindowS, shocks, dt_s);
+    benchmark::DoNotOptimize(l.histories.tip_m.values.back());
+    state.counters["modes"] = l.solution.Summary().n_modes_contact;
+    state.counters["transitions"] = l.solution.Summary().n_transitions;
+  }
+}
+BENCHMARK(ReferenceEstimateLevel)
+    ->ArgNames({"log10_rk", "level"})
+    ->ArgsProduct({{5, 6}, {-2, -1, 0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

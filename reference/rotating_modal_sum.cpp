@@ -19,8 +19,9 @@ Eigen::ArrayXd Padded(const Eigen::VectorXd& v) {
 using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
 
 // One walk over lanes [i, i + kLanes) of its z: the lanes added to its sums, then rotated. The
-// arrays have a double's alignment only, so lanes are copied in and out (unaligned moves), and
-// vectors pass by reference only: none crosses by value from one clone's target to another's.
+// lanes are copied in and out (unaligned moves, which the arrays' cache-line alignment keeps
+// within one line), and vectors pass by reference only: none crosses by value from one clone's
+// target to another's.
 [[gnu::always_inline]] inline void SumThenRotateLanes(double* re, double* im,
                                                       const double* rotation_re,
                                                       const double* rotation_im, Lanes& sums) {
@@ -76,8 +77,10 @@ RotatingModalSum::RotatingModalSum(const Eigen::VectorXd& omega_rad_s, double de
                                    double step_s)
     : omega_(Padded(omega_rad_s)), decay_per_s_(decay_per_s), step_s_(step_s) {
   const double shrink = std::exp(-decay_per_s * step_s);
-  rotation_re_ = shrink * (omega_ * step_s).cos();
-  rotation_im_ = shrink * (omega_ * step_s).sin();
+  const Eigen::ArrayXd re = shrink * (omega_ * step_s).cos();
+  const Eigen::ArrayXd im = shrink * (omega_ * step_s).sin();
+  rotation_re_.assign(re.begin(), re.end());
+  rotation_im_.assign(im.begin(), im.end());
 }
 
 void RotatingModalSum::Start(const Eigen::VectorXd& cos_weight, const Eigen::VectorXd& sin_weight,
@@ -91,16 +94,16 @@ void RotatingModalSum::Start(const Eigen::VectorXd& cos_weight, const Eigen::Vec
 
 void RotatingModalSum::Anchor() { AnchorAt(k_, z_re_, z_im_); }
 
-void RotatingModalSum::AnchorAt(long k, Eigen::ArrayXd& re, Eigen::ArrayXd& im) const {
+void RotatingModalSum::AnchorAt(long k, Lanes& re, Lanes& im) const {
   const double tau = tau0_s_ + static_cast<double>(k) * step_s_;
   const double decay = std::exp(-decay_per_s_ * tau);
-  re.resize(omega_.size());
-  im.resize(omega_.size());
+  re.resize(static_cast<std::size_t>(omega_.size()));
+  im.resize(static_cast<std::size_t>(omega_.size()));
   for (Eigen::Index i = 0; i < omega_.size(); ++i) {
     const double w = omega_[i] * tau;
     const double c = std::cos(w), s = std::sin(w);  // One sincos.
-    re[i] = decay * (weight_re_[i] * c - weight_im_[i] * s);
-    im[i] = decay * (weight_re_[i] * s + weight_im_[i] * c);
+    re[static_cast<std::size_t>(i)] = decay * (weight_re_[i] * c - weight_im_[i] * s);
+    im[static_cast<std::size_t>(i)] = decay * (weight_re_[i] * s + weight_im_[i] * c);
   }
 }
 
@@ -111,7 +114,7 @@ void RotatingModalSum::Skip(long samples) {
 
 double RotatingModalSum::Next() {
   const double u = SumThenRotate(z_re_.data(), z_im_.data(), rotation_re_.data(),
-                                 rotation_im_.data(), z_re_.size());
+                                 rotation_im_.data(), omega_.size());
   if (++k_ % kAnchorEvery == 0) Anchor();
   return u;
 }
@@ -125,7 +128,7 @@ void RotatingModalSum::NextInto(double* out, long count) {
     AnchorAt(k_ + kAnchorEvery, second_re_, second_im_);
     for (long j = 0; j < kAnchorEvery; ++j) {
       SumThenRotateTwo(z_re_.data(), z_im_.data(), second_re_.data(), second_im_.data(),
-                       rotation_re_.data(), rotation_im_.data(), z_re_.size(), out[done + j],
+                       rotation_re_.data(), rotation_im_.data(), omega_.size(), out[done + j],
                        out[done + kAnchorEvery + j]);
     }
     k_ += 2 * kAnchorEvery;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -65,6 +66,19 @@ TEST(RotatingModalSum, SkippedSamplesLandOnTheGrid) {
 // NextInto is Next() called `count` times, bit for bit, whatever the walk's position in its
 // anchor interval (after a skip or not) and whatever the count: shorter than an interval, one
 // pair of intervals side by side, several pairs and a tail. The walk then goes on alike.
+// The walk's arrays start on a cache line, whatever their length, so that no four-lane access
+// straddles two lines; a copy (each phase's walk starts from a copied template) is aligned too.
+TEST(RotatingModalSum, ArraysStartOnACacheLine) {
+  using Lanes = std::vector<double, CacheLineAllocator<double>>;
+  for (std::size_t n : {1, 3, 4, 27, 60, 180, 1001}) {
+    const Lanes lanes(n, 1.0);
+    const Lanes copy = lanes;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(lanes.data()) % 64, 0u) << n;
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(copy.data()) % 64, 0u) << n;
+    EXPECT_EQ(copy, lanes);
+  }
+}
+
 TEST(RotatingModalSum, FillingARangeEqualsSamplingOneByOneBitForBit) {
   const int n = 23;  // Not a multiple of the four lanes.
   Eigen::VectorXd omega(n), c(n), s(n);
