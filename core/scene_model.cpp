@@ -17,6 +17,7 @@
 #include "core/modal_basis_cache.h"
 #include "core/preload_equilibrium.h"
 #include "core/scene_structure_modes.h"
+#include "core/structure_modes_cache.h"
 
 namespace shockmap {
 namespace {
@@ -194,7 +195,7 @@ Layout LayOut(const Scene& scene) {
     const SceneStructure& s = scene.structures[i];
     const Truncation truncation = Truncation::Of(s, scene.solver);
     layout.structures.push_back(
-        MakeStructureModes(s.fe, truncation.hz, truncation.ratio, static_nodes[i]));
+        StructureModesCached(s.fe, truncation.hz, truncation.ratio, static_nodes[i]));
     layout.structure_offset.push_back(layout.n);
     layout.n += layout.structures.back().N();
   }

@@ -5,11 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <fstream>
+#include <latch>
+#include <memory>
 #include <numbers>
+#include <thread>
+#include <vector>
 
 #include "core/input_error.h"
 #include "core/structure_modes.h"
+#include "core/structure_modes_cache.h"
 #include "formats/calculix_job.h"
 #include "formats/structure_files.h"
 #include "tests/structure_chain.h"
@@ -144,6 +150,91 @@ TEST(StructureModes, AnUnsupportedStructureIsRefused) {
   }
 }
 
+// The process's cache of structure modes (core/structure_modes_cache.h). Each test names its
+// structures apart, since the cache outlives a test.
+FeStructure CacheChain(const std::string& name) {
+  FeStructure s = SpringChain(500, kK, kM, {DofComponent::kUx});
+  s.name = name;
+  return s;
+}
+
+void ExpectSameBitForBit(const SceneStructureModes& a, const SceneStructureModes& b) {
+  EXPECT_EQ(a.f1_hz, b.f1_hz);
+  EXPECT_EQ(a.f_trunc_hz, b.f_trunc_hz);
+  EXPECT_TRUE(a.basis.omega_rad_s == b.basis.omega_rad_s);
+  EXPECT_TRUE(a.basis.shapes == b.basis.shapes);
+}
+
+// A structure read again (a new object of equal content, as each study point reads its scene's
+// files) gets the solution of the first, equal bit for bit to a fresh solve, without a solve.
+TEST(StructureModesCache, AnEqualStructureGetsTheFreshSolutionWithoutASolve) {
+  const std::vector<int> static_nodes = {3, 250};
+  const auto first = std::make_shared<const FeStructure>(CacheChain("cache equal"));
+  const std::int64_t before = StructureModeSolves();
+  const SceneStructureModes cached = StructureModesCached(first, std::nullopt, 10.0, static_nodes);
+  EXPECT_EQ(StructureModeSolves(), before + 1);
+  const auto again = std::make_shared<const FeStructure>(CacheChain("cache equal"));
+  const SceneStructureModes second = StructureModesCached(again, std::nullopt, 10.0, static_nodes);
+  EXPECT_EQ(StructureModeSolves(), before + 1) << "the structure read again was solved again";
+  EXPECT_EQ(second.fe, again);
+  const SceneStructureModes fresh = MakeStructureModes(again, std::nullopt, 10.0, static_nodes);
+  // Five modes below 10 f1 (f_j nearly proportional to 2j - 1) and the two nodes' corrections.
+  ASSERT_EQ(fresh.N(), 7);
+  ExpectSameBitForBit(cached, fresh);
+  ExpectSameBitForBit(second, fresh);
+  // Another truncation, or other static nodes, is another solution.
+  StructureModesCached(again, std::nullopt, 20.0, static_nodes);
+  StructureModesCached(again, std::nullopt, 10.0, {3});
+  EXPECT_EQ(StructureModeSolves(), before + 3);
+}
+
+// One stiffness entry changed in its last bit: a different content, hash and basis.
+TEST(StructureModesCache, StructuresDifferingInOneEntryGetTheirOwnBases) {
+  const FeStructure s = CacheChain("cache one entry");
+  FeStructure changed = s;
+  changed.stiffness.coeffRef(250, 250) = std::nextafter(s.stiffness.coeff(250, 250), 0.0);
+  EXPECT_FALSE(SameStructureContent(s, changed));
+  EXPECT_NE(StructureContentHash(s), StructureContentHash(changed));
+  FeStructure renumbered = s;
+  renumbered.dofs[7].node = 9999;
+  EXPECT_FALSE(SameStructureContent(s, renumbered));
+  EXPECT_TRUE(SameStructureContent(s, CacheChain("cache one entry")));
+
+  const auto a = std::make_shared<const FeStructure>(s);
+  const auto b = std::make_shared<const FeStructure>(changed);
+  const SceneStructureModes modes_a = StructureModesCached(a, std::nullopt, 10.0, {});
+  const SceneStructureModes modes_b = StructureModesCached(b, std::nullopt, 10.0, {});
+  EXPECT_FALSE(modes_a.basis.shapes == modes_b.basis.shapes);
+  ExpectSameBitForBit(modes_b, MakeStructureModes(b, std::nullopt, 10.0, {}));
+  ExpectSameBitForBit(modes_a, MakeStructureModes(a, std::nullopt, 10.0, {}));
+}
+
+// Threads asking at once for one structure (each its own copy) solve it once.
+TEST(StructureModesCache, ThreadsAskingAtOnceSolveOnce) {
+  constexpr int kThreads = 4;
+  std::vector<std::shared_ptr<const FeStructure>> copies;
+  for (int t = 0; t < kThreads; ++t) {
+    copies.push_back(std::make_shared<const FeStructure>(CacheChain("cache threads")));
+  }
+  std::vector<SceneStructureModes> seen(kThreads);
+  std::latch start(kThreads);
+  const std::int64_t before = StructureModeSolves();
+  std::vector<std::thread> threads;
+  for (int t = 0; t < kThreads; ++t) {
+    threads.emplace_back([&, t] {
+      start.arrive_and_wait();
+      seen[t] = StructureModesCached(
+          copies[t], 30.0 * ChainOmega(500, kK, kM, 1) / (2 * std::numbers::pi), 0.0, {17});
+    });
+  }
+  for (auto& t : threads) t.join();
+  EXPECT_EQ(StructureModeSolves(), before + 1);
+  for (int t = 0; t < kThreads; ++t) {
+    EXPECT_EQ(seen[t].fe, copies[t]);
+    ExpectSameBitForBit(seen[t], seen.front());
+  }
+}
+
 class StructureFiles : public testing::TempDirTest {};
 
 TEST_F(StructureFiles, WrittenAndReadBackUnchanged) {
@@ -163,6 +254,30 @@ TEST_F(StructureFiles, WrittenAndReadBackUnchanged) {
 
 // The copy ccx runs on: the model before the first *STEP, that step's supports, the
 // matrix-storage step; an included deck's path made absolute; later steps left out.
+// The cache keys a structure by its content, not its files: the same files read again share the
+// solution, and the same paths rewritten with one entry changed are solved again.
+TEST_F(StructureFiles, RewrittenFilesAreSolvedAgain) {
+  FeStructure s = SpringChain(450, kK, kM, {DofComponent::kUy});
+  s.name = "cache files";
+  const auto read = [&] {
+    FeStructure r = ReadMatrixMarketStructure(Path("stiffness.mtx"), Path("mass.mtx"),
+                                              Path("dofs.csv"), Path("nodes.csv"));
+    r.name = s.name;
+    return StructureModesCached(std::make_shared<const FeStructure>(std::move(r)), std::nullopt,
+                                10.0, {});
+  };
+  WriteMatrixMarketStructure(s, dir_.string());
+  const std::int64_t before = StructureModeSolves();
+  const SceneStructureModes first = read();
+  ExpectSameBitForBit(read(), first);
+  EXPECT_EQ(StructureModeSolves(), before + 1);
+  s.mass.coeffRef(100, 100) *= 2.0;
+  WriteMatrixMarketStructure(s, dir_.string());
+  const SceneStructureModes rewritten = read();
+  EXPECT_EQ(StructureModeSolves(), before + 2);
+  EXPECT_LT(rewritten.f1_hz, first.f1_hz);  // A heavier mass lowers every frequency.
+}
+
 TEST_F(StructureFiles, TheMatrixStorageDeckKeepsTheModelAndTheFirstStepsSupports) {
   std::ofstream(Path("model.inp"))
       << "** comment\n*INCLUDE, INPUT=mesh.inp\n*BOUNDARY\n1, 1, 3\n*STEP\n*STATIC\n"
