@@ -46,6 +46,13 @@ std::string Shortest(double value) {
   return std::string(digits.data(), end);
 }
 
+// Whether `text` is a number whose magnitude a double does not hold, above or below.
+bool BeyondDouble(const std::string& text) {
+  errno = 0;
+  std::strtod(text.c_str(), nullptr);
+  return errno == ERANGE;
+}
+
 // `text` as a whole number when it is written in decimal digits (an optional leading '-'); one
 // beyond a long long as an infinity of its sign.
 std::optional<double> ParsedWholeNumber(const std::string& text) {
@@ -172,14 +179,16 @@ CLI::Validator WholeNumberIn(long long lo, long long hi) {
 CLI::Validator Within(const NumberOption& option) {
   return CLI::Validator(
       [&option](std::string& text) -> std::string {
+        if (!option.whole && BeyondDouble(text)) {
+          return "value " + text +
+                 " is out of range: a double holds magnitudes from 2.2e-308 to 1.8e+308";
+        }
         const std::optional<double> value =
             option.whole ? ParsedWholeNumber(text) : ParsedDouble(text);
         if (!value) {
           return "value '" + text + "' is not " + (option.whole ? "a whole number" : "a number");
         }
-        if (!option.Contains(*value)) {
-          return "value " + text + " is out of range: must be " + option.Allowed();
-        }
+        if (!option.Contains(*value)) return option.Refusal(text, *value);
         // CLI11 would read a leading 0 as octal.
         text = option.whole ? std::to_string(static_cast<long long>(*value)) : Shortest(*value);
         return "";

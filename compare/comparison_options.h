@@ -4,11 +4,15 @@
 // study's grid or point), unit, help, default and the one range of values it takes. The command
 // line, the Python module and the study files take their defaults, checks and help from here.
 
+#include <cmath>
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "compare/comparison.h"
+#include "core/modal_basis.h"
 
 namespace shockmap {
 
@@ -34,13 +38,17 @@ struct NumberOption {
   bool low_strict = false;
   double high = 0.0;
   bool whole = false;
+  // Why a value above `high` cannot be afforded (the cost it would take), or nullptr.
+  std::string (*beyond_high)(double value) = nullptr;
 
   bool Contains(double value) const;
   // What is allowed: "> 0 and <= 1e+12", "a whole number from 0 to 1500".
   std::string Allowed() const;
-  // "value 0 is out of range: must be > 0 and <= 1e+12": a refusal without the option's name,
-  // which each front end puts first as its user spells it.
+  // "value 0 is out of range: must be > 0 and <= 1e+12" (then why, for a value above `high`
+  // whose cost is stated): a refusal without the option's name, which each front end puts first
+  // as its user spells it. `shown`: the value as its user wrote it.
   std::string Refusal(double value) const;
+  std::string Refusal(std::string_view shown, double value) const;
 };
 
 // One of a few words.
@@ -55,25 +63,96 @@ struct ChoiceOption {
   std::string Refusal(std::string_view value) const;
 };
 
-// The stiffness ratio R_k = k_s / K_bend (required).
-extern const NumberOption kRkOption;
-// The modal truncation R_ftrunc = f_trunc / f1 (required).
-extern const NumberOption kRftruncOption;
-// The time step in seconds; without it, --dt-factor of the --dt-rule bound.
-extern const NumberOption kDtOption;
-extern const NumberOption kDtFactorOption;
-extern const ChoiceOption kDtRuleOption;
-extern const NumberOption kWindowOption;
-extern const ChoiceOption kSchemeOption;
-// The beam's finite elements (0: enough for every retained mode).
-extern const NumberOption kElementsOption;
-// The reference's starting truncation R_fref = f_ref / f1 (command line and Python; a study sets
-// it by its reference policy).
-extern const NumberOption kRfrefOption;
+// The eigenproblem's cost of a beam of `elements` elements against the budget of
+// core/modal_basis.h; "" within it, and beyond 1e9 elements, whose unknowns an int does not count.
+std::string MeshCost(double elements);
+
+// The defaults are those of ComparisonOptions and TimeStepRequest, which the library's own
+// callers take too.
+inline const NumberOption kRkOption{{"--rk", "rk", "rk"},
+                                    "",
+                                    "stiffness ratio R_k = k_s / K_bend",
+                                    std::nullopt,
+                                    0.0,
+                                    true,
+                                    kMaxRk};
+// A study's mode axis reaches 6.3e4 f1 (mode 150); at 1e5 f1 the default mesh, 988 elements, is
+// within the eigenproblem budget.
+inline const NumberOption kRftruncOption{{"--rftrunc", "rftrunc", "rftrunc"},
+                                         "",
+                                         "modal truncation ratio f_trunc / f1",
+                                         std::nullopt,
+                                         1.0,
+                                         false,
+                                         1e5};
+// The paper's beam has f1 = 19 Hz: a step of a second resolves nothing of its motion.
+inline const NumberOption kDtOption{{"--dt", "dt", "dt.seconds"},
+                                    "s",
+                                    "time step (without it: --dt-factor of the --dt-rule bound)",
+                                    std::nullopt,
+                                    0.0,
+                                    true,
+                                    1.0};
+// Above 1 the explicit scheme is beyond its stability bound; the implicit one is not bound.
+inline const NumberOption kDtFactorOption{{"--dt-factor", "dt_factor", "dt.factor"},
+                                          "",
+                                          "time step as a factor of the bound chosen by --dt-rule",
+                                          TimeStepRequest{}.factor,
+                                          0.0,
+                                          true,
+                                          100.0};
+inline const ChoiceOption kDtRuleOption{
+    {"--dt-rule", "dt_rule", "dt.rule"},
+    "bound --dt-factor applies to: paper = 1/(4 f_trunc), sharp = 2/omega_max",
+    ToString(TimeStepRequest{}.rule),
+    {"paper", "sharp"}};
+// 100 s is about 1900 first-mode periods of the paper's beam; the reference's budget
+// (reference/reference_cost.h) refuses long windows earlier at large R_k.
+inline const NumberOption kWindowOption{{"--window", "window_s", "window_s"},
+                                        "s",
+                                        "observation window",
+                                        ComparisonOptions{}.window_s,
+                                        0.0,
+                                        true,
+                                        100.0};
+inline const ChoiceOption kSchemeOption{{"--scheme", "scheme", "scheme"},
+                                        "numerical scheme",
+                                        ToString(ComparisonOptions{}.scheme),
+                                        {"explicit-modal", "implicit-full"}};
+// A mesh of more elements has an eigenproblem beyond the budget of core/modal_basis.h.
+inline const NumberOption kElementsOption{
+    {"--elements", "elements", "n_elements"},
+    "",
+    "finite elements of the beam (0: enough for every retained mode)",
+    static_cast<double>(ComparisonOptions{}.n_elements),
+    0.0,
+    false,
+    static_cast<double>(kEigenBudgetElements),
+    true,
+    &MeshCost};
+// No bound above: the reference's budget (reference/reference_cost.h) refuses what costs.
+inline const NumberOption kRfrefOption{
+    {"--rfref", "rfref", ""},
+    "",
+    "truncation ratio f_ref / f1 the reference starts from (default: max(3000, 10 sqrt(R_k)), "
+    "as studies; raised until its estimated error is below 0.02)",
+    std::nullopt,
+    1.0,
+    false,
+    HUGE_VAL};
 
 // Every number option and every choice, in the order `shockmap compare --help` lists them.
-std::span<const NumberOption* const> ComparisonNumberOptions();
-std::span<const ChoiceOption* const> ComparisonChoiceOptions();
+inline std::span<const NumberOption* const> ComparisonNumberOptions() {
+  static const NumberOption* const kAll[] = {&kRkOption,       &kRftruncOption, &kDtOption,
+                                             &kDtFactorOption, &kWindowOption,  &kRfrefOption,
+                                             &kElementsOption};
+  return kAll;
+}
+
+inline std::span<const ChoiceOption* const> ComparisonChoiceOptions() {
+  static const ChoiceOption* const kAll[] = {&kDtRuleOption, &kSchemeOption};
+  return kAll;
+}
 
 // Throws InputError "NAME: value V is out of range: must be ALLOWED" when `option` does not
 // contain `value`; NAME is the option as the caller's user spells it.
