@@ -25,7 +25,7 @@ struct CompareFlags {
   CantileverImpact problem;
   ComparisonOptions options;
   double dt_s = 0.0;
-  std::string dt_rule;
+  std::string dt_rule;  // The declared defaults, as AddDeclaredOption sets them.
   std::string scheme;
   std::string out_dir;
   bool json = false;

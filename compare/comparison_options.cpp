@@ -60,4 +60,11 @@ std::string MeshCost(double elements) {
   return EigenBudgetExcess({BeamUnknowns(static_cast<int>(elements))}, 1);
 }
 
+std::string DefaultMeshCost(double r_ftrunc) {
+  if (r_ftrunc > 1e12) return "";
+  const int elements = DefaultElementCount(r_ftrunc);
+  const std::string excess = MeshCost(elements);
+  return excess.empty() ? "" : fmt::format("its default mesh, {} elements: {}", elements, excess);
+}
+
 }  // namespace shockmap

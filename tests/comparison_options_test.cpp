@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -101,6 +102,22 @@ TEST(ComparisonOptions, AStudyRefusesEachValueOutsideTheDeclaredRange) {
         << refusal;
     EXPECT_NE(refusal.find(o->Allowed()), std::string::npos) << refusal;
   }
+}
+
+// The ranges hold every shipped study of the paper's problem.
+TEST(ComparisonOptions, EveryShippedCanonicalStudyLiesInTheDeclaredRanges) {
+  int read = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(SHOCKMAP_SOURCE_DIR) + "/studies")) {
+    if (entry.path().extension() != ".json") continue;
+    const Json json = ReadJsonFile(entry.path().string());
+    if (json.value("kind", json.contains("scene") ? "scene_sweep" : "canonical") != "canonical") {
+      continue;
+    }
+    EXPECT_NO_THROW(ParseStudySpec(json, entry.path().string())) << entry.path();
+    ++read;
+  }
+  EXPECT_GE(read, 10);  // studies/ holds 10 today.
 }
 
 TEST(ComparisonOptions, TheCommandLineRefusesEachValueOutsideTheDeclaredRange) {
