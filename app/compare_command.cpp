@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <limits>
 #include <memory>
 
 #include "app/flag_checks.h"
@@ -26,8 +25,8 @@ struct CompareFlags {
   CantileverImpact problem;
   ComparisonOptions options;
   double dt_s = 0.0;
-  std::string dt_rule = "sharp";
-  std::string scheme = "explicit-modal";
+  std::string dt_rule;  // The declared defaults, as AddDeclaredOption sets them.
+  std::string scheme;
   std::string out_dir;
   bool json = false;
   bool plot = false;
@@ -126,40 +125,16 @@ void AddCompareCommand(CLI::App& app) {
       "compare",
       "Run the numerical solver and the semi-analytical reference on the paper's "
       "beam-impact problem and score them (Err, SRf)");
-  cmd->add_option("--rk", flags->problem.r_k, "stiffness ratio R_k = k_s / K_bend")
-      ->required()
-      ->check(FiniteIn(0.0, true, kMaxRk));
-  cmd->add_option("--rftrunc", flags->options.r_ftrunc, "modal truncation ratio f_trunc / f1")
-      ->required()
-      ->check(FiniteAbove(1.0, false));
-  auto* dt = cmd->add_option("--dt", flags->dt_s, "time step in seconds")->check(Positive());
-  cmd->add_option("--dt-factor", flags->options.dt.factor,
-                  "time step as a factor of the bound chosen by --dt-rule")
-      ->capture_default_str()
-      ->check(Positive())
-      ->excludes(dt);
-  cmd->add_option("--dt-rule", flags->dt_rule,
-                  "bound --dt-factor applies to: paper = 1/(4 f_trunc), sharp = 2/omega_max")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"paper", "sharp"}))
-      ->excludes(dt);
-  cmd->add_option("--window", flags->options.window_s, "observation window in seconds")
-      ->capture_default_str()
-      ->check(Positive());
-  cmd->add_option("--scheme", flags->scheme, "numerical scheme")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"explicit-modal", "implicit-full"}));
+  AddDeclaredOption(cmd, kRkOption, flags->problem.r_k)->required();
+  AddDeclaredOption(cmd, kRftruncOption, flags->options.r_ftrunc)->required();
+  auto* dt = AddDeclaredOption(cmd, kDtOption, flags->dt_s);
+  AddDeclaredOption(cmd, kDtFactorOption, flags->options.dt.factor)->excludes(dt);
+  AddDeclaredOption(cmd, kDtRuleOption, flags->dt_rule)->excludes(dt);
+  AddDeclaredOption(cmd, kWindowOption, flags->options.window_s);
+  AddDeclaredOption(cmd, kSchemeOption, flags->scheme);
   flags->options.reference.r_fref = 0.0;  // The studies' rule unless given.
-  cmd->add_option("--rfref", flags->options.reference.r_fref,
-                  "truncation ratio f_ref / f1 the reference starts from (default: "
-                  "max(3000, 10 sqrt(R_k)), as studies; raised until its estimated error is "
-                  "below 0.02)")
-      ->check(FiniteAbove(1.0, false));
-  cmd->add_option("--elements", flags->options.n_elements,
-                  "finite elements of the beam (0: enough for every retained mode; at most " +
-                      std::to_string(kEigenBudgetElements) + ")")
-      ->capture_default_str()
-      ->check(WholeNumberIn(0, std::numeric_limits<int>::max()));
+  AddDeclaredOption(cmd, kRfrefOption, flags->options.reference.r_fref);
+  AddDeclaredOption(cmd, kElementsOption, flags->options.n_elements);
   cmd->add_option("--out", flags->out_dir, "directory for the CSV histories (and the plot)");
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,

@@ -46,6 +46,26 @@ std::string Shortest(double value) {
   return std::string(digits.data(), end);
 }
 
+// Whether `text` is a number whose magnitude a double does not hold, above or below.
+bool BeyondDouble(const std::string& text) {
+  errno = 0;
+  std::strtod(text.c_str(), nullptr);
+  return errno == ERANGE;
+}
+
+// `text` as a whole number when it is written in decimal digits (an optional leading '-'); one
+// beyond a long long as an infinity of its sign.
+std::optional<double> ParsedWholeNumber(const std::string& text) {
+  const std::size_t digits = text.starts_with('-') ? 1 : 0;
+  if (text.size() == digits || text.find_first_not_of("0123456789", digits) != std::string::npos) {
+    return std::nullopt;
+  }
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc()) return digits == 1 ? -HUGE_VAL : HUGE_VAL;
+  return static_cast<double>(value);
+}
+
 }  // namespace
 
 void AddDatabaseFlag(CLI::App* command, std::string& database_path) {
@@ -154,6 +174,35 @@ CLI::Validator WholeNumberIn(long long lo, long long hi) {
         return "";
       },
       description);
+}
+
+CLI::Validator Within(const NumberOption& option) {
+  return CLI::Validator(
+      [&option](std::string& text) -> std::string {
+        if (!option.whole && BeyondDouble(text)) {
+          return "value " + text +
+                 " is out of range: a double holds magnitudes from 2.2e-308 to 1.8e+308";
+        }
+        const std::optional<double> value =
+            option.whole ? ParsedWholeNumber(text) : ParsedDouble(text);
+        if (!value) {
+          return "value '" + text + "' is not " + (option.whole ? "a whole number" : "a number");
+        }
+        if (!option.Contains(*value)) return option.Refusal(text, *value);
+        // CLI11 would read a leading 0 as octal.
+        text = option.whole ? std::to_string(static_cast<long long>(*value)) : Shortest(*value);
+        return "";
+      },
+      option.Allowed());
+}
+
+CLI::Option* AddDeclaredOption(CLI::App* command, const ChoiceOption& option, std::string& target) {
+  target = option.default_value;
+  // CLI::IsMember, whose description the bash completion reads (app/completion_command.cpp).
+  std::vector<std::string> choices(option.choices.begin(), option.choices.end());
+  return command->add_option(std::string(option.names.flag), target, std::string(option.help))
+      ->capture_default_str()
+      ->check(CLI::IsMember(choices));
 }
 
 }  // namespace shockmap

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "compare/comparison_options.h"
+
 namespace shockmap {
 
 struct SceneFileAccess;
@@ -30,5 +32,23 @@ CLI::Validator StrictlyBetween(double lo, double hi);
 // refused as unconvertible, and "0x10" is refused and "010" read as 10, not as hexadecimal or
 // octal.
 CLI::Validator WholeNumberIn(long long lo, long long hi);
+
+// A value `option` contains (a whole number written in decimal digits when it takes one); the
+// refusal names the value as given and option.Allowed().
+CLI::Validator Within(const NumberOption& option);
+
+// The option's flag with its help and unit, its check and, when declared, its default, which
+// `target` is set to (shown by --help). Required when it has neither a default nor a rule.
+template <typename T>
+CLI::Option* AddDeclaredOption(CLI::App* command, const NumberOption& option, T& target) {
+  if (option.default_value) target = static_cast<T>(*option.default_value);
+  std::string help(option.help);
+  if (!option.unit.empty()) help += " (" + std::string(option.unit) + ")";
+  CLI::Option* added =
+      command->add_option(std::string(option.names.flag), target, help)->check(Within(option));
+  if (option.default_value) added->capture_default_str();
+  return added;
+}
+CLI::Option* AddDeclaredOption(CLI::App* command, const ChoiceOption& option, std::string& target);
 
 }  // namespace shockmap

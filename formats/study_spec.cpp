@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "compare/comparison_options.h"
 #include "core/beam_properties.h"
-#include "core/modal_basis.h"
 #include "formats/json_reader.h"
 #include "reference/analytic_modes.h"
 #include "reference/reference_cost.h"
@@ -52,7 +52,7 @@ struct Range {
 // An axis: a number, a non-empty list of numbers, {"logspace": [a, b, n]} (n values from 10^a
 // to 10^b) or {"linspace": [a, b, n]}.
 std::vector<double> ParseAxis(const Json& value, const std::string& file, const std::string& path,
-                              const Range& range) {
+                              const NumberOption& option) {
   std::vector<double> values;
   if (value.is_number()) {
     values.push_back(NumberAt(value, file, path));
@@ -96,11 +96,8 @@ std::vector<double> ParseAxis(const Json& value, const std::string& file, const 
            "[a, b, n]} range, got " +
                Shown(value));
   }
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!range.Contains(values[i])) {
-      FailAt(file, path,
-             "value " + Shown(Json(values[i])) + " out of range: must be " + range.Allowed());
-    }
+  for (double v : values) {
+    if (!option.Contains(v)) FailAt(file, path, option.Refusal(v));
   }
   return values;
 }
@@ -112,12 +109,12 @@ std::vector<Scheme> ParseSchemes(const Json& value, const std::string& file,
   std::vector<Scheme> schemes;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string at = path + (value.is_array() ? "[" + std::to_string(i) + "]" : "");
-    const auto s =
-        list[i].is_string() ? SchemeFromString(list[i].get<std::string>()) : std::nullopt;
-    if (!s)
-      FailAt(file, at,
-             Shown(list[i]) + " is not a scheme: use \"explicit-modal\" or \"implicit-full\"");
-    schemes.push_back(*s);
+    if (!list[i].is_string() || !kSchemeOption.Contains(list[i].get<std::string>())) {
+      FailAt(
+          file, at,
+          kSchemeOption.Refusal(list[i].is_string() ? list[i].get<std::string>() : Shown(list[i])));
+    }
+    schemes.push_back(*SchemeFromString(list[i].get<std::string>()));
   }
   return schemes;
 }
@@ -128,17 +125,17 @@ std::vector<TimeStepRequest> ParseDt(const Json& value, const std::string& file,
   JsonObjectReader r(value, file, path);
   std::vector<TimeStepRequest> requests;
   if (r.Has("seconds")) {
-    for (double s : ParseAxis(*r.Get("seconds"), file, r.PathOf("seconds"), {0.0, true, 1.0})) {
+    for (double s : ParseAxis(*r.Get("seconds"), file, r.PathOf("seconds"), kDtOption)) {
       requests.push_back({s, 0.0, DtRule::kSharp});
     }
   } else {
-    const std::string rule_name = r.String("rule", ToString(TimeStepRequest{}.rule));
+    const std::string rule_name = r.String("rule", kDtRuleOption.default_value);
+    if (!kDtRuleOption.Contains(rule_name)) r.Fail("rule", kDtRuleOption.Refusal(rule_name));
     const auto rule = DtRuleFromString(rule_name);
-    if (!rule) r.Fail("rule", "\"" + rule_name + "\" is not a rule: use \"paper\" or \"sharp\"");
     const Json* factors = r.Get("factor");
     const std::vector<double> values =
-        factors == nullptr ? std::vector<double>{TimeStepRequest{}.factor}
-                           : ParseAxis(*factors, file, r.PathOf("factor"), {0.0, true, 100.0});
+        factors == nullptr ? std::vector<double>{*kDtFactorOption.default_value}
+                           : ParseAxis(*factors, file, r.PathOf("factor"), kDtFactorOption);
     for (double f : values) requests.push_back({std::nullopt, f, *rule});
   }
   r.Finish();
@@ -154,8 +151,10 @@ struct AxisSet {
 
 // {"modes": [first, last]} (see ModeEntryTruncations), else any axis.
 std::vector<double> ParseTruncationAxis(const Json& value, const std::string& file,
-                                        const std::string& path, const Range& range) {
-  if (!value.is_object() || !value.contains("modes")) return ParseAxis(value, file, path, range);
+                                        const std::string& path) {
+  if (!value.is_object() || !value.contains("modes")) {
+    return ParseAxis(value, file, path, kRftruncOption);
+  }
   JsonObjectReader r(value, file, path);
   const Json* modes = r.Get("modes");
   r.Finish();
@@ -173,48 +172,44 @@ std::vector<double> ParseTruncationAxis(const Json& value, const std::string& fi
   return ModeEntryTruncations((*modes)[0].get<int>(), (*modes)[1].get<int>());
 }
 
-const Range kRk{0.0, true, kMaxRk};
-const Range kRftrunc{1.0, false, 1e5};
-const Range kWindow{0.0, true, 100.0};
-const Range kDamping{0.0, false, 1e6};
-const Range kElements{0.0, false, 1e9};  // Then the eigenproblem budget.
+// The problem's damping, an axis of studies alone.
+const NumberOption kDamping{
+    {"", "", "mass_damping_per_s"}, "1/s", "mass-proportional damping", 0.0, 0.0, false, 1e6};
 
 AxisSet ParseAxes(JsonObjectReader& r, const ScoringSpec& scoring, bool single) {
   const std::string& file = r.File();
   AxisSet a;
-  auto required = [&](const char* key, const Range& range) {
+  auto required = [&](const NumberOption& option) {
+    const char* key = option.names.study_key.data();
     const Json* v = r.Get(key);
     if (v == nullptr) r.Fail(key, "required axis is missing");
     if (single && !v->is_number()) r.Fail(key, "expected one number, got " + Shown(*v));
-    return ParseAxis(*v, file, r.PathOf(key), range);
+    return ParseAxis(*v, file, r.PathOf(key), option);
   };
-  auto optional = [&](const char* key, const Range& range, double fallback) {
+  auto optional = [&](const NumberOption& option, double fallback) {
+    const char* key = option.names.study_key.data();
     const Json* v = r.Get(key);
     if (v == nullptr) return std::vector<double>{fallback};
     if (single && !v->is_number()) r.Fail(key, "expected one number, got " + Shown(*v));
-    return ParseAxis(*v, file, r.PathOf(key), range);
+    return ParseAxis(*v, file, r.PathOf(key), option);
   };
-  a.rk = required("rk", kRk);
+  a.rk = required(kRkOption);
   if (const Json* v = r.Get("rftrunc"); v != nullptr && !single && v->is_object()) {
-    a.rftrunc = ParseTruncationAxis(*v, file, r.PathOf("rftrunc"), kRftrunc);
+    a.rftrunc = ParseTruncationAxis(*v, file, r.PathOf("rftrunc"));
   } else {
-    a.rftrunc = required("rftrunc", kRftrunc);
+    a.rftrunc = required(kRftruncOption);
   }
-  a.window_s = optional("window_s", kWindow, scoring.window_s);
-  a.mass_damping_per_s = optional("mass_damping_per_s", kDamping, 0.0);
-  for (double e : optional("n_elements", kElements, 0.0)) {
-    if (e != std::floor(e)) r.Fail("n_elements", "expected integers, got " + Shown(Json(e)));
-    const int elements = static_cast<int>(e);
-    if (const std::string excess = EigenBudgetExcess({BeamUnknowns(elements)}, 1); !excess.empty())
-      r.Fail("n_elements", "value " + std::to_string(elements) + ": " + excess);
-    a.n_elements.push_back(elements);
+  a.window_s = optional(kWindowOption, scoring.window_s);
+  a.mass_damping_per_s = optional(kDamping, *kDamping.default_value);
+  for (double e : optional(kElementsOption, *kElementsOption.default_value)) {
+    a.n_elements.push_back(static_cast<int>(e));
   }
   const Json* dt = r.Get("dt");
   a.dt = dt == nullptr ? std::vector<TimeStepRequest>{TimeStepRequest{}}
                        : ParseDt(*dt, file, r.PathOf("dt"));
   if (single && a.dt.size() != 1) r.Fail("dt", "expected one time step for a listed point");
   const Json* scheme = r.Get("scheme");
-  a.scheme = scheme == nullptr ? std::vector<Scheme>{Scheme::kExplicitModal}
+  a.scheme = scheme == nullptr ? std::vector<Scheme>{*SchemeFromString(kSchemeOption.default_value)}
                                : ParseSchemes(*scheme, file, r.PathOf("scheme"));
   if (single && a.scheme.size() != 1) r.Fail("scheme", "expected one scheme for a listed point");
   r.Finish();
@@ -267,9 +262,7 @@ void ParseProblem(const Json& value, const std::string& file, CantileverImpact& 
 void ParseWindow(JsonObjectReader& r, const BeamProperties& beam, ScoringSpec& s) {
   if (!r.Has("window_periods")) {
     s.window_s = r.Number("window_s", s.window_s);
-    if (!kWindow.Contains(s.window_s)) {
-      r.Fail("window_s", "value " + Shown(Json(s.window_s)) + " must be " + kWindow.Allowed());
-    }
+    if (!kWindowOption.Contains(s.window_s)) r.Fail("window_s", kWindowOption.Refusal(s.window_s));
     return;
   }
   if (r.Has("window_s")) {
@@ -279,10 +272,10 @@ void ParseWindow(JsonObjectReader& r, const BeamProperties& beam, ScoringSpec& s
   }
   const double periods = r.Number("window_periods", 0.0);
   const double f1 = FirstClampedFreeFrequencyHz(beam);
-  if (!kWindow.Contains(periods / f1)) {
+  if (!kWindowOption.Contains(periods / f1)) {
     r.Fail("window_periods", "value " + Shown(Json(periods)) + " is " + Shown(Json(periods / f1)) +
                                  " s with f1 = " + Shown(Json(f1)) + " Hz; the window must be " +
-                                 kWindow.Allowed() + " s");
+                                 kWindowOption.Allowed() + " s");
   }
   s.window_periods = periods;
   s.window_s = periods / f1;

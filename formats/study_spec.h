@@ -18,8 +18,6 @@ namespace shockmap {
 
 // Refused above this many points: a grid that large is a typing mistake, not a study.
 inline constexpr std::size_t kMaxStudyPoints = 1'000'000;
-// The largest stiffness ratio R_k a study's axis or `compare --rk` takes.
-inline constexpr double kMaxRk = 1e12;
 
 // Truncation of the reference for each R_k: ReferenceTruncationRule (compare/reference_run.h)
 // with these values, raised until the reference's estimated error meets the tolerance.

@@ -9,6 +9,7 @@
 
 #include "compare/comparison.h"
 #include "compare/comparison_limits.h"
+#include "compare/comparison_options.h"
 #include "compare/output_columns.h"
 #include "engine/point_replay.h"
 #include "formats/comparison_json.h"
@@ -90,27 +91,32 @@ py::dict ScoreDict(const ComparisonResult& r) {
   return d;
 }
 
+// `value` when `option` contains it; InputError naming its keyword otherwise.
+double Checked(const NumberOption& option, double value) {
+  RequireOption(option, option.names.keyword, value);
+  return value;
+}
+
+const std::string& Checked(const ChoiceOption& option, const std::string& value) {
+  RequireOption(option, option.names.keyword, value);
+  return value;
+}
+
+// The element count as a double, so that a Python int beyond a C int is named by the range.
 Comparison Compare(double r_k, double r_ftrunc, std::optional<double> dt_s, double dt_factor,
                    const std::string& dt_rule, double window_s, const std::string& scheme,
-                   std::optional<double> r_fref, int elements) {
+                   std::optional<double> r_fref, double elements) {
   CantileverImpact problem;
-  problem.r_k = r_k;
+  problem.r_k = Checked(kRkOption, r_k);
   ComparisonOptions options;
-  options.r_ftrunc = r_ftrunc;
-  options.dt.dt_s = dt_s;
-  options.dt.factor = dt_factor;
-  const auto rule = DtRuleFromString(dt_rule);
-  if (!rule) throw InputError("dt_rule: \"" + dt_rule + "\" is not one of paper, sharp");
-  options.dt.rule = *rule;
-  const auto parsed_scheme = SchemeFromString(scheme);
-  if (!parsed_scheme) {
-    throw InputError("scheme: \"" + scheme + "\" is not one of explicit-modal, implicit-full");
-  }
-  options.scheme = *parsed_scheme;
-  options.window_s = window_s;
-  if (r_fref) options.reference.r_fref = *r_fref;
-  if (elements < 0) throw InputError("elements: " + std::to_string(elements) + " is negative");
-  options.n_elements = elements;
+  options.r_ftrunc = Checked(kRftruncOption, r_ftrunc);
+  if (dt_s) options.dt.dt_s = Checked(kDtOption, *dt_s);
+  options.dt.factor = Checked(kDtFactorOption, dt_factor);
+  options.dt.rule = *DtRuleFromString(Checked(kDtRuleOption, dt_rule));
+  options.scheme = *SchemeFromString(Checked(kSchemeOption, scheme));
+  options.window_s = Checked(kWindowOption, window_s);
+  if (r_fref) options.reference.r_fref = Checked(kRfrefOption, *r_fref);
+  options.n_elements = static_cast<int>(Checked(kElementsOption, elements));
   std::string error;
   if (!problem.IsValid(&error) || !options.IsValid(&error)) throw InputError(error);
   CheckComparisonAffordable(problem, options,
@@ -126,6 +132,45 @@ Comparison Point(const std::string& database_path, const std::string& study,
   ReplayedPoint replay = ReplayCanonicalPoint(database_path, study, point_id);
   return {std::make_shared<const ComparisonResult>(std::move(replay.result)), replay.problem,
           replay.options};
+}
+
+// An option's declaration as Python reads it: its names, unit, help, default and what it
+// takes (bounds, or choices).
+py::dict OptionDict(const NumberOption& o) {
+  py::dict d;
+  d["flag"] = o.names.flag;
+  d["keyword"] = o.names.keyword;
+  d["study_key"] = o.names.study_key;
+  d["unit"] = o.unit;
+  d["help"] = o.help;
+  d["default"] = o.whole && o.default_value
+                     ? py::object(py::int_(static_cast<long long>(*o.default_value)))
+                     : py::cast(o.default_value);
+  d["low"] = o.low;
+  d["low_strict"] = o.low_strict;
+  d["high"] = o.high;
+  d["whole"] = o.whole;
+  d["allowed"] = o.Allowed();
+  return d;
+}
+
+py::dict OptionDict(const ChoiceOption& o) {
+  py::dict d;
+  d["flag"] = o.names.flag;
+  d["keyword"] = o.names.keyword;
+  d["study_key"] = o.names.study_key;
+  d["help"] = o.help;
+  d["default"] = o.default_value;
+  d["choices"] = o.choices;
+  d["allowed"] = o.Allowed();
+  return d;
+}
+
+py::list ComparisonOptionDicts() {
+  py::list list;
+  for (const NumberOption* o : ComparisonNumberOptions()) list.append(OptionDict(*o));
+  for (const ChoiceOption* o : ComparisonChoiceOptions()) list.append(OptionDict(*o));
+  return list;
 }
 
 }  // namespace
@@ -173,6 +218,8 @@ void BindComparison(py::module_& m) {
   m.def("compare", &Compare, py::arg("rk"), py::arg("rftrunc"), py::arg("dt"), py::arg("dt_factor"),
         py::arg("dt_rule"), py::arg("window_s"), py::arg("scheme"), py::arg("rfref"),
         py::arg("elements"));
+  m.def("compare_options", &ComparisonOptionDicts,
+        "The options of compare() as declared once for the command line, Python and study files");
   m.def("point", &Point, py::arg("db"), py::arg("study"), py::arg("point_id"));
 }
 

@@ -340,8 +340,9 @@ TEST_F(Security, WholeNumberFlagsNameTheValueAsGiven) {
   Refused("export point --id 99999999999999999999 --out DIR/p --db DIR/s.db",
           {"--id", "value 99999999999999999999 " + id_range});
   Refused("export point --id 0x10 --out DIR/p --db DIR/s.db", {"--id", "value '0x10' " + id_range});
-  out = Refused("compare --rk 100 --rftrunc 10 --elements 99999999999",
-                {"--elements", "value 99999999999 must be a whole number from 0 to 2147483647"});
+  out = Refused(
+      "compare --rk 100 --rftrunc 10 --elements 99999999999",
+      {"--elements", "value 99999999999 is out of range: must be a whole number from 0 to 1500"});
   EXPECT_EQ(out.find("Could not convert"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(Path("p")));
 }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <set>
 
+#include "compare/comparison_options.h"
 #include "formats/counted.h"
 #include "formats/json_reader.h"
 #include "formats/study_spec.h"

@@ -25,7 +25,6 @@ __all__ = [
 ]
 
 DEFAULT_DATABASE = "shockmap.db"
-_INT_MAX = 2**31 - 1  # A C int: element counts.
 _ID_MAX = 2**63 - 1  # An SQLite integer: row ids.
 
 
@@ -55,6 +54,15 @@ def _integer(name, value, low, high):
     return number
 
 
+def _real(value):
+    """`value` as float, an int beyond a float's range as an infinity of its sign, so that the
+    library names it as out of its range."""
+    try:
+        return float(value)
+    except OverflowError:
+        return float("inf") if value > 0 else float("-inf")
+
+
 def _database(db):
     """`db` as the path of a study database; InputError for SQLite's database in memory, where a
     study would be lost as soon as the call returns."""
@@ -66,12 +74,24 @@ def _database(db):
     return path
 
 
-def compare(rk, rftrunc, *, dt=None, dt_factor=0.1, dt_rule="sharp", window_s=0.06,
-            scheme="explicit-modal", rfref=None, elements=0):
-    """One run of the paper's problem scored against its reference, as `shockmap compare`."""
+# compare()'s options as declared once for the command line, Python and study files
+# (compare/comparison_options.h), by keyword: defaults, ranges and help.
+COMPARE_OPTIONS = {option["keyword"]: option for option in _shockmap.compare_options()}
+
+
+def _compare_default(keyword):
+    return COMPARE_OPTIONS[keyword]["default"]
+
+
+def compare(rk, rftrunc, *, dt=None, dt_factor=_compare_default("dt_factor"),
+            dt_rule=_compare_default("dt_rule"), window_s=_compare_default("window_s"),
+            scheme=_compare_default("scheme"), rfref=None,
+            elements=_compare_default("elements")):
+    """One run of the paper's problem scored against its reference, as `shockmap compare`;
+    each option's help, unit and range are in COMPARE_OPTIONS."""
     return _shockmap.compare(float(rk), float(rftrunc), dt, float(dt_factor),
                              _text("dt_rule", dt_rule), float(window_s), _text("scheme", scheme),
-                             rfref, _integer("elements", elements, 0, _INT_MAX))
+                             rfref, _real(elements))
 
 
 def _score(self, name):
