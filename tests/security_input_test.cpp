@@ -439,7 +439,7 @@ TEST_F(Security, StudyRunOnAReadOnlyMountSaysSoAndWhere) {
       ro, dir_ / "out.txt", {"study", "run", study, "--db", (ro / "s.db").string(), "--quiet"});
   if (!fresh) GTEST_SKIP() << "no mount namespace here: a read-only mount cannot be made";
   EXPECT_EQ(fresh->exit_code, 2) << fresh->output;
-  for (const std::string part :
+  for (const std::string& part :
        {"cannot write database " + (ro / "s.db").string(), "its folder " + ro.string(),
         std::string("read-only file system")}) {
     EXPECT_NE(fresh->output.find(part), std::string::npos) << part << "\n" << fresh->output;

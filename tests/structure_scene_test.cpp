@@ -239,7 +239,9 @@ TEST_F(StructureScene, TwoStructuresAcrossAClearanceKeepTheirEnergy) {
   // Until contact, b rests: its tip's first motion follows a's arrival across the gap.
   const auto& a_tip = run.result.displacement_m[0];
   for (std::size_t i = 0; i < b_tip.values.size(); ++i) {
-    if (a_tip.values[i] - b_tip.values[i] < 5e-4) EXPECT_EQ(b_tip.values[i], 0.0);
+    if (a_tip.values[i] - b_tip.values[i] < 5e-4) {
+      EXPECT_EQ(b_tip.values[i], 0.0);
+    }
     if (a_tip.values[i] - b_tip.values[i] >= 5e-4) break;
   }
 }
