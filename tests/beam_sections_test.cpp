@@ -18,6 +18,7 @@
 #include "core/scene_model.h"
 #include "formats/scene_file.h"
 #include "tests/run_command.h"
+#include "tests/scene_refusal.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
@@ -315,15 +316,6 @@ class BeamSectionFiles : public testing::TempDirTest {
     testing::WriteText(path, scene.dump(2));
     return path;
   }
-
-  static std::string Refusal(const std::string& path) {
-    try {
-      LoadScene(path);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  }
 };
 
 TEST_F(BeamSectionFiles, SectionsAndPointMassesReachTheScene) {
@@ -381,7 +373,7 @@ TEST_F(BeamSectionFiles, EveryMistakeIsNamedByItsKeyPath) {
        {"beams[0].elements", "3 pieces", "elements >= 3"}},
   };
   for (const auto& [change, named] : cases) {
-    const std::string message = Refusal(Variant(change));
+    const std::string message = testing::SceneRefusal(Variant(change));
     ASSERT_FALSE(message.empty()) << named[0];
     for (const std::string& part : named) {
       EXPECT_NE(message.find(part), std::string::npos)
@@ -389,11 +381,11 @@ TEST_F(BeamSectionFiles, EveryMistakeIsNamedByItsKeyPath) {
     }
   }
   // A point mass on a uniform beam is read as well, and refused as well.
-  EXPECT_NE(Refusal(Variant(
-                        [](Json& b) {
-                          b["point_masses"] = {{{"height_m", 2.0}, {"mass_kg", 1.0}}};
-                        },
-                        false))
+  EXPECT_NE(testing::SceneRefusal(Variant(
+                                      [](Json& b) {
+                                        b["point_masses"] = {{{"height_m", 2.0}, {"mass_kg", 1.0}}};
+                                      },
+                                      false))
                 .find("beams[0].point_masses[0].height_m"),
             std::string::npos);
 }

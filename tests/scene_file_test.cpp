@@ -21,6 +21,7 @@
 #include "core/input_error.h"
 #include "formats/scene_file.h"
 #include "tests/run_command.h"
+#include "tests/scene_refusal.h"
 #include "tests/temp_dir.h"
 
 namespace shockmap {
@@ -57,16 +58,6 @@ class SceneFiles : public testing::TempDirTest {
     const std::string path = Path("variant.json");
     WriteText(path, scene.dump(2));
     return path;
-  }
-
-  // The message LoadScene gives (empty if it accepts the file).
-  static std::string Refusal(const std::string& path) {
-    try {
-      LoadScene(path);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
   }
 };
 
@@ -119,7 +110,7 @@ TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
        {"beams[0].ends", "rigid"}},
   };
   for (const auto& [change, expected] : cases) {
-    const std::string message = Refusal(Variant(change));
+    const std::string message = testing::SceneRefusal(Variant(change));
     ASSERT_FALSE(message.empty()) << expected[0] << " was accepted";
     EXPECT_NE(message.find("variant.json"), std::string::npos) << message;
     for (const auto& part : expected) EXPECT_NE(message.find(part), std::string::npos) << message;
@@ -131,14 +122,15 @@ TEST_F(SceneFiles, EveryMistakeIsNamedByItsJsonPath) {
 // A misspelt key is named with the allowed key it most likely misspells: a required one it
 // hides, or an optional one it stands beside.
 TEST_F(SceneFiles, AMisspeltKeyIsNamedWithTheKeyItMisspells) {
-  const std::string required = Refusal(Variant([](Json& s) {
+  const std::string required = testing::SceneRefusal(Variant([](Json& s) {
     s["zones"][0]["stifness_n_per_m"] = s["zones"][0]["stiffness_n_per_m"];
     s["zones"][0].erase("stiffness_n_per_m");
   }));
   EXPECT_EQ(required, Path("variant.json") +
                           ": zones[0].stifness_n_per_m: unknown key; did you mean "
                           "\"stiffness_n_per_m\"? (stiffness_n_per_m: required number is missing)");
-  const std::string optional = Refusal(Variant([](Json& s) { s["beams"][0]["elemnts"] = 20; }));
+  const std::string optional =
+      testing::SceneRefusal(Variant([](Json& s) { s["beams"][0]["elemnts"] = 20; }));
   EXPECT_EQ(optional.rfind(Path("variant.json") +
                                ": beams[0].elemnts: unknown key; did you mean \"elements\"? "
                                "(allowed here: ",
@@ -146,7 +138,8 @@ TEST_F(SceneFiles, AMisspeltKeyIsNamedWithTheKeyItMisspells) {
             0u)
       << optional;
   // A key far from every allowed one is not given a guess.
-  const std::string far = Refusal(Variant([](Json& s) { s["beams"][0]["colour"] = "red"; }));
+  const std::string far =
+      testing::SceneRefusal(Variant([](Json& s) { s["beams"][0]["colour"] = "red"; }));
   EXPECT_NE(far.find("beams[0].colour: unknown key (allowed here: "), std::string::npos) << far;
 }
 
@@ -286,7 +279,7 @@ TEST_F(SceneFiles, ContactLawMistakesAreNamedByTheirJsonPath) {
        {"wear.coefficient_m2_per_n", "> 0"}},
   };
   for (const auto& [change, expected] : cases) {
-    const std::string message = Refusal(Variant(change));
+    const std::string message = testing::SceneRefusal(Variant(change));
     ASSERT_FALSE(message.empty()) << expected[0] << " was accepted";
     EXPECT_NE(message.find("variant.json"), std::string::npos) << message;
     for (const auto& part : expected) EXPECT_NE(message.find(part), std::string::npos) << message;
@@ -298,12 +291,16 @@ TEST_F(SceneFiles, BaseMotionCsvErrorsNameTheLine) {
     WriteText(Path("shock.csv"), rows);
     return Variant([](Json& s) { s["effects"]["base_motion"] = {{"csv", "shock.csv"}}; });
   };
-  EXPECT_NE(Refusal(with_csv("t,a\n0,1\n")).find("line 1"), std::string::npos);
-  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n0.1,x\n")).find("line 3"), std::string::npos);
-  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n0,2\n")).find("increase"), std::string::npos);
-  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n1,nan\n")).find("finite"), std::string::npos);
-  EXPECT_NE(Refusal(with_csv("t_s,a_m_s2\n0,1\n")).find("two rows"), std::string::npos);
-  EXPECT_EQ(Refusal(with_csv("t_s,a_m_s2\n0,1\n0.01,-2\n")), "");
+  EXPECT_NE(testing::SceneRefusal(with_csv("t,a\n0,1\n")).find("line 1"), std::string::npos);
+  EXPECT_NE(testing::SceneRefusal(with_csv("t_s,a_m_s2\n0,1\n0.1,x\n")).find("line 3"),
+            std::string::npos);
+  EXPECT_NE(testing::SceneRefusal(with_csv("t_s,a_m_s2\n0,1\n0,2\n")).find("increase"),
+            std::string::npos);
+  EXPECT_NE(testing::SceneRefusal(with_csv("t_s,a_m_s2\n0,1\n1,nan\n")).find("finite"),
+            std::string::npos);
+  EXPECT_NE(testing::SceneRefusal(with_csv("t_s,a_m_s2\n0,1\n")).find("two rows"),
+            std::string::npos);
+  EXPECT_EQ(testing::SceneRefusal(with_csv("t_s,a_m_s2\n0,1\n0.01,-2\n")), "");
 }
 
 // A hexagonal bundle of n rings has 1 + 3 n (n + 1) pins, 3 n (3 n + 1) neighbour pairs and
@@ -349,7 +346,7 @@ TEST_F(SceneFiles, BundleZonesNameTheirWireHeightWithoutFloatNoise) {
   EXPECT_EQ(heights, (std::set<std::string>{"0.3048", "0.6096", "0.9144", "1.2192", "1.524",
                                             "1.8288", "2.1336"}));
   // Heights closer than a micrometre would give two zones one name: refused.
-  const std::string refused = Refusal(Variant([](Json& s) {
+  const std::string refused = testing::SceneRefusal(Variant([](Json& s) {
     std::ifstream in(kScenes + "bundle_row.json");
     s = Json::parse(in);
     s["bundle"]["wire"]["heights_m"] = {0.5, 0.5000000001};
@@ -433,7 +430,7 @@ TEST_F(SceneFiles, AZoneNameGivenTwiceIsRefusedWithWhereItWasGiven) {
         "of a zone the bundle generates", "zone names must be unique"}},
   };
   for (const auto& [file, parts] : cases) {
-    const std::string message = Refusal(file);
+    const std::string message = testing::SceneRefusal(file);
     for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << message;
     const auto run = RunShockmap("simulate " + file);
     EXPECT_EQ(run.exit_code, 2) << run.output;
@@ -448,7 +445,7 @@ TEST_F(SceneFiles, AnUnnamedWrapperFaceIsAnsweredWithTheFacesNames) {
     s = Json::parse(std::ifstream(kScenes + "bundle_hex_7.json"));
     s["outputs"]["contact_forces"] = {"pin_0-wrapper@0.3048"};
   });
-  const std::string message = Refusal(file);
+  const std::string message = testing::SceneRefusal(file);
   EXPECT_NE(message.find("outputs.contact_forces[0]: no zone named \"pin_0-wrapper@0.3048\": the "
                          "pin meets the wrapper on several faces, each named by its direction: "
                          "\"pin_0-wrapper_120deg@0.3048\", \"pin_0-wrapper_180deg@0.3048\", "
