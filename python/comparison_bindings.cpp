@@ -134,15 +134,22 @@ Comparison Point(const std::string& database_path, const std::string& study,
           replay.options};
 }
 
-// An option's declaration as Python reads it: its names, unit, help, default and what it
-// takes (bounds, or choices).
-py::dict OptionDict(const NumberOption& o) {
+// What every option's declaration gives Python: its three names and its help.
+template <typename Option>
+py::dict NamesAndHelp(const Option& o) {
   py::dict d;
   d["flag"] = o.names.flag;
   d["keyword"] = o.names.keyword;
   d["study_key"] = o.names.study_key;
-  d["unit"] = o.unit;
   d["help"] = o.help;
+  return d;
+}
+
+// An option's declaration as Python reads it: its names, unit, help, default and what it
+// takes (bounds, or choices).
+py::dict OptionDict(const NumberOption& o) {
+  py::dict d = NamesAndHelp(o);
+  d["unit"] = o.unit;
   d["default"] = o.whole && o.default_value
                      ? py::object(py::int_(static_cast<long long>(*o.default_value)))
                      : py::cast(o.default_value);
@@ -155,11 +162,7 @@ py::dict OptionDict(const NumberOption& o) {
 }
 
 py::dict OptionDict(const ChoiceOption& o) {
-  py::dict d;
-  d["flag"] = o.names.flag;
-  d["keyword"] = o.names.keyword;
-  d["study_key"] = o.names.study_key;
-  d["help"] = o.help;
+  py::dict d = NamesAndHelp(o);
   d["default"] = o.default_value;
   d["choices"] = o.choices;
   d["allowed"] = o.Allowed();
