@@ -1027,6 +1027,16 @@ StaticForceEffect ParseStaticForce(JsonObjectReader& f, const Scene& scene) {
   return force;
 }
 
+// What a beam's and a structure's initial states both give: the mode and its amplitude, the
+// uniform velocity and the static force.
+void ReadReleaseAmounts(JsonObjectReader& s, InitialStateEffect& init) {
+  init.mode = s.Integer("mode", 1);
+  if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
+  init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
+  init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
+  init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+}
+
 // A structure's initial state: a mode scaled to an amplitude at a node, a static force at a
 // node and a uniform velocity, each along a unit direction.
 InitialStateEffect ParseStructureInitialState(JsonObjectReader& s, const Scene& scene) {
@@ -1035,11 +1045,7 @@ InitialStateEffect ParseStructureInitialState(JsonObjectReader& s, const Scene& 
   init.structure = StructureIndex(scene, s, "structure");
   const SceneStructure& structure = scene.structures[init.structure];
   init.direction_xyz = UnitVector3(s, "direction");
-  init.mode = s.Integer("mode", 1);
-  if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
-  init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
-  init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
-  init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+  ReadReleaseAmounts(s, init);
   if (init.static_force_n != 0.0 || init.tip_m != 0.0) {
     init.node = NodeOf(s, "node", structure);
     CheckFreeAlong(s, "direction", structure, init.node, init.direction_xyz);
@@ -1052,11 +1058,7 @@ InitialStateEffect ParseInitialState(JsonObjectReader& s, const Scene& scene) {
   InitialStateEffect init;
   init.beam = BeamIndex(scene, s, "beam");
   init.direction = Direction(s, "direction");
-  init.mode = s.Integer("mode", 1);
-  if (init.mode < 1 || init.mode > 1000) s.Fail("mode", "must lie in [1, 1000]");
-  init.tip_m = InRange(s, "amplitude_m", 0.0, -1.0, 1.0);
-  init.velocity_m_s = InRange(s, "velocity_m_s", 0.0, -1e3, 1e3);
-  init.static_force_n = InRange(s, "static_force_n", 0.0, -1e9, 1e9);
+  ReadReleaseAmounts(s, init);
   if (init.static_force_n != 0.0) init.height_m = Height(scene, s, init.beam);
   return init;
 }
