@@ -123,15 +123,15 @@ BENCHMARK_CAPTURE(Effect, none, [](Json&) {})->UseManualTime();
 BENCHMARK_CAPTURE(Effect, zone_never_closing, [](Json& s) {
   Json zone = kClosingZone;
   zone["gap_m"] = 0.5;
-  s["zones"] = {zone};
+  s["zones"] = Json::array({zone});
 })->UseManualTime();
 BENCHMARK_CAPTURE(Effect, zone_closing, [](Json& s) {
-  s["zones"] = {kClosingZone};
+  s["zones"] = Json::array({kClosingZone});
 })->UseManualTime();
 BENCHMARK_CAPTURE(Effect, contact_damping, [](Json& s) {
   Json zone = kClosingZone;
   zone["damping_n_s_per_m"] = 1e3;
-  s["zones"] = {zone};
+  s["zones"] = Json::array({zone});
 })->UseManualTime();
 BENCHMARK_CAPTURE(Effect, modal_damping, [](Json& s) {
   s["effects"]["modal_damping"] = {{"ratios", {0.02}}};

@@ -442,7 +442,7 @@ TEST_F(StructureScene, BadReferencesAreRefusedNamingTheKey) {
   refused(s, "structures[0].matrix_market.mass", "lies outside the scene's folder");
   s = good;
   s["structures"][0]["name"] = "tip";
-  s["beams"] = {BeamJson(Cantilever())};
+  s["beams"] = Json::array({BeamJson(Cantilever())});
   s["beams"][0]["name"] = "tip";
   refused(s, "beams[0].name", "is already the name given at structures[0].name");
 }
