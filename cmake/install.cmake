@@ -33,7 +33,7 @@ configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/shockmapConfig.cmake.in
 write_basic_package_version_file(${CMAKE_BINARY_DIR}/shockmapConfigVersion.cmake
                                  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
 install(FILES ${CMAKE_BINARY_DIR}/shockmapConfig.cmake
-              ${CMAKE_BINARY_DIR}/shockmapConfigVersion.cmake
+              ${CMAKE_BINARY_DIR}/shockmapConfigVersion.cmake ${CMAKE_SOURCE_DIR}/cmake/FindCHOLMOD.cmake
         DESTINATION ${SHOCKMAP_CMAKE_DIR})
 install(FILES ${CMAKE_SOURCE_DIR}/LICENSE ${CMAKE_SOURCE_DIR}/CHANGELOG.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})

@@ -28,30 +28,26 @@ constexpr double kSingularPivot = 1e-13;
 
 }  // namespace
 
-StiffnessCholesky::StiffnessCholesky(const FeStructure& s)
-    : size_(s.Size()),
-      mass_(&s.mass),
-      factor_(std::make_unique<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>>(s.stiffness)) {
-  if (factor_->info() != Eigen::Success) RefuseStiffness(s);
-  const Eigen::VectorXd pivots = factor_->matrixL().nestedExpression().diagonal();
-  const Eigen::VectorXd diagonal = factor_->permutationP() * s.stiffness.diagonal();
-  if ((pivots.array().square() <= kSingularPivot * diagonal.array().abs()).any()) {
+StiffnessCholesky::StiffnessCholesky(const FeStructure& s) : mass_(&s.mass), factor_(s.stiffness) {
+  if (!factor_.Succeeded()) RefuseStiffness(s);
+  const Eigen::VectorXd pivots = factor_.PivotsByRow();
+  if ((pivots.array().square() <= kSingularPivot * s.stiffness.diagonal().array().abs()).any()) {
     RefuseStiffness(s);
   }
 }
 
 Eigen::VectorXd StiffnessCholesky::Solve(const Eigen::VectorXd& rhs) const {
-  return factor_->solve(rhs);
+  return factor_.Solve(rhs);
 }
 
 void StiffnessCholesky::ApplyFlexibilityForm(const double* x, double* y) const {
-  const Eigen::VectorXd u = factor_->matrixU().solve(Eigen::Map<const Eigen::VectorXd>(x, size_));
-  const Eigen::VectorXd m_u = factor_->permutationP() * (*mass_ * (factor_->permutationPinv() * u));
-  Eigen::Map<Eigen::VectorXd>(y, size_) = factor_->matrixL().solve(m_u);
+  const Eigen::VectorXd u =
+      factor_.SolveUpperPermuted(Eigen::Map<const Eigen::VectorXd>(x, Size()));
+  Eigen::Map<Eigen::VectorXd>(y, Size()) = factor_.SolveLowerPermuted(*mass_ * u);
 }
 
 Eigen::MatrixXd StiffnessCholesky::ShapesOf(const Eigen::MatrixXd& v) const {
-  return factor_->permutationPinv() * Eigen::MatrixXd(factor_->matrixU().solve(v));
+  return factor_.SolveUpperPermuted(v);
 }
 
 }  // namespace shockmap

@@ -1,12 +1,10 @@
 #pragma once
-// The sparse Cholesky factorization P K P^T = L L^T of an FE structure's stiffness (AMD
-// ordering), its static solves, and the symmetric standard form of its flexibility
-// L^-1 P M P^T L^-T whose eigenvalues are 1 / omega^2 (docs/structures.md).
-
-#include <Eigen/SparseCholesky>
-#include <memory>
+// The sparse Cholesky factorization P K P^T = L L^T of an FE structure's stiffness
+// (core/sparse_cholesky.h), its static solves, and the symmetric standard form of its
+// flexibility L^-1 P M P^T L^-T whose eigenvalues are 1 / omega^2 (docs/structures.md).
 
 #include "core/fe_structure.h"
+#include "core/sparse_cholesky.h"
 
 namespace shockmap {
 
@@ -15,7 +13,7 @@ class StiffnessCholesky {
   // Throws InputError naming the DOF of the weakest pivot when K is not positive definite.
   explicit StiffnessCholesky(const FeStructure& s);
 
-  int Size() const { return size_; }
+  int Size() const { return factor_.Size(); }
   // K^-1 rhs.
   Eigen::VectorXd Solve(const Eigen::VectorXd& rhs) const;
   // y = L^-1 P M P^T L^-T x: symmetric, positive semi-definite, with the eigenvalues 1 / omega^2
@@ -25,9 +23,8 @@ class StiffnessCholesky {
   Eigen::MatrixXd ShapesOf(const Eigen::MatrixXd& v) const;
 
  private:
-  int size_ = 0;
   const Eigen::SparseMatrix<double>* mass_ = nullptr;
-  std::unique_ptr<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>> factor_;  // movable
+  SparseCholesky factor_;
 };
 
 }  // namespace shockmap

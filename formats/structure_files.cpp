@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "core/sparse_cholesky.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/sparse_entries.h"
@@ -248,10 +249,10 @@ void CheckNodesHaveCoordinates(const FeStructure& s, const std::string& dofs_pat
   }
 }
 
-// Refuses a mass with a diagonal entry <= 0, or that is not positive semi-definite: the LDL^T
-// factorization of M + 1e-10 diag(M) has a pivot <= 0 at some row. A singular M is allowed:
-// 20-node bricks with reduced integration (CalculiX's C3D20R) give one, whose null combinations
-// have no finite frequency and never enter a truncated basis.
+// Refuses a mass with a diagonal entry <= 0, or that is not positive semi-definite: the
+// Cholesky factorization of M + 1e-10 diag(M) breaks down (its LDL^T has a pivot <= 0). A singular
+// M is allowed: 20-node bricks with reduced integration (CalculiX's C3D20R) give one, whose null
+// combinations have no finite frequency and never enter a truncated basis.
 void CheckMassPositiveSemidefinite(const FeStructure& s, const std::string& mass_path) {
   const Eigen::VectorXd diagonal = s.mass.diagonal();
   for (int i = 0; i < s.Size(); ++i) {
@@ -264,6 +265,8 @@ void CheckMassPositiveSemidefinite(const FeStructure& s, const std::string& mass
   }
   Eigen::SparseMatrix<double> lifted = s.mass;
   lifted.diagonal() += kMassLift * diagonal;
+  if (SparseCholesky(lifted).Succeeded()) return;
+  // Refused: the slower LDL^T names the row and its pivot.
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(lifted);
   const auto& permutation = factor.permutationP().indices();
   for (int i = 0; i < s.Size(); ++i) {

@@ -11,8 +11,8 @@ SHOCKMAP_BUILD=${SHOCKMAP_BUILD:-$SHOCKMAP_ROOT/build}
 # Each package and why it is here is listed in the README ("Dependencies").
 SHOCKMAP_PACKAGES=(
   build-essential cmake pkg-config git
-  libeigen3-dev libspectra-dev liblapack-dev libgsl-dev libfftw3-dev libsqlite3-dev sqlite3
-  nlohmann-json3-dev libcli11-dev libfmt-dev
+  libeigen3-dev libspectra-dev libsuitesparse-dev liblapack-dev libgsl-dev libfftw3-dev
+  libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopenmpi-dev openmpi-bin
   gnuplot-nox help2man
