@@ -2,6 +2,8 @@
 
 #include <cholmod.h>
 
+#include <cassert>
+#include <cmath>
 #include <new>
 
 namespace shockmap {
@@ -12,10 +14,12 @@ struct SparseCholesky::Factor {
   mutable cholmod_common common{};
   cholmod_factor* l = nullptr;
 
-  Factor() {
+  explicit Factor(Form form) {
     cholmod_start(&common);
-    common.print = 0;                        // refusals are the caller's to word
-    common.supernodal = CHOLMOD_SUPERNODAL;  // L L^T with dense fronts, even when small
+    common.print = 0;  // refusals are the caller's to word
+    // L L^T with dense fronts even when small, or L D L^T kept as such.
+    common.supernodal = form == Form::kLlt ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    common.final_ll = form == Form::kLlt;
   }
   ~Factor() {
     cholmod_free_factor(&l, &common);
@@ -46,8 +50,8 @@ struct SparseCholesky::Factor {
   }
 };
 
-SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& a)
-    : size_(static_cast<int>(a.rows())), factor_(std::make_unique<Factor>()) {
+SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& a, Form form)
+    : size_(static_cast<int>(a.rows())), form_(form), factor_(std::make_unique<Factor>(form)) {
   Eigen::SparseMatrix<double> upper = a.triangularView<Eigen::Upper>();
   upper.makeCompressed();
   cholmod_sparse view{};
@@ -75,19 +79,31 @@ SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
 bool SparseCholesky::Succeeded() const { return factor_->l->minor == factor_->l->n; }
 
+int SparseCholesky::FailedRow() const {
+  if (Succeeded()) return -1;
+  return static_cast<const int*>(factor_->l->Perm)[factor_->l->minor];
+}
+
 Eigen::VectorXd SparseCholesky::PivotsByRow() const {
+  const cholmod_factor& l = *factor_->l;
+  const auto* x = static_cast<const double*>(l.x);
+  const auto* perm = static_cast<const int*>(l.Perm);
+  const auto reached = static_cast<int>(l.minor);  // the columns factorized
+  Eigen::VectorXd pivots = Eigen::VectorXd::Constant(size_, std::nan(""));
+  if (form_ == Form::kLdlt) {
+    // Simplicial L D L^T: column j starts at p[j] with D's entry in place of L's unit diagonal.
+    const auto* p = static_cast<const int*>(l.p);
+    for (int j = 0; j < reached; ++j) pivots[perm[j]] = x[p[j]];
+    return pivots;
+  }
   // Supernode k holds columns super[k] .. super[k+1]-1 of L as a dense column-major block of
   // pi[k+1]-pi[k] rows from x[px[k]], its diagonal first.
-  const cholmod_factor& l = *factor_->l;
   const auto* super = static_cast<const int*>(l.super);
   const auto* pi = static_cast<const int*>(l.pi);
   const auto* px = static_cast<const int*>(l.px);
-  const auto* x = static_cast<const double*>(l.x);
-  const auto* perm = static_cast<const int*>(l.Perm);
-  Eigen::VectorXd pivots(size_);
   for (std::size_t k = 0; k < l.nsuper; ++k) {
     const int rows = pi[k + 1] - pi[k];
-    for (int j = 0; j < super[k + 1] - super[k]; ++j) {
+    for (int j = 0; j < super[k + 1] - super[k] && super[k] + j < reached; ++j) {
       pivots[perm[super[k] + j]] = x[px[k] + j * (rows + 1)];
     }
   }
@@ -99,10 +115,12 @@ Eigen::MatrixXd SparseCholesky::Solve(const Eigen::MatrixXd& rhs) const {
 }
 
 Eigen::MatrixXd SparseCholesky::SolveLowerPermuted(const Eigen::MatrixXd& x) const {
+  assert(form_ == Form::kLlt);
   return factor_->Solve(CHOLMOD_L, factor_->Solve(CHOLMOD_P, x));
 }
 
 Eigen::MatrixXd SparseCholesky::SolveUpperPermuted(const Eigen::MatrixXd& x) const {
+  assert(form_ == Form::kLlt);
   return factor_->Solve(CHOLMOD_Pt, factor_->Solve(CHOLMOD_Lt, x));
 }
 

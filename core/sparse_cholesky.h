@@ -1,8 +1,9 @@
 #pragma once
-// The supernodal sparse Cholesky factorization P A P^T = L L^T of a symmetric positive definite
-// matrix, by CHOLMOD (SuiteSparse) with its fill-reducing ordering (METIS or AMD, whichever
-// fills less): the factor of a 3D solid's stiffness, whose dense fronts it works on with BLAS
-// (docs/structures.md "Modes").
+// The sparse Cholesky factorization of a symmetric matrix by CHOLMOD (SuiteSparse) with its
+// fill-reducing ordering (METIS or AMD, whichever fills less): P A P^T = L L^T, supernodal, of a
+// positive definite A (a 3D solid's stiffness, whose dense fronts it works on with BLAS), or
+// P A P^T = L D L^T, simplicial and without pivoting, of an indefinite one whose inertia is
+// wanted (docs/structures.md "Modes").
 
 #include <Eigen/SparseCore>
 #include <memory>
@@ -11,28 +12,35 @@ namespace shockmap {
 
 class SparseCholesky {
  public:
+  enum class Form { kLlt, kLdlt };
+
   // Factorizes A (both triangles stored; only the upper one is read). Never throws on a matrix
-  // that is not positive definite: Succeeded() is then false.
-  explicit SparseCholesky(const Eigen::SparseMatrix<double>& a);
+  // it cannot factorize (not positive definite for kLlt, a zero pivot for kLdlt): Succeeded() is
+  // then false.
+  explicit SparseCholesky(const Eigen::SparseMatrix<double>& a, Form form = Form::kLlt);
   ~SparseCholesky();
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
 
   int Size() const { return size_; }
-  // False when a pivot was not positive (A not positive definite to the factorization's eyes).
   bool Succeeded() const;
-  // diag(L) with each entry at its row of A: L's pivot of that row, sqrt of its Schur complement.
+  // The row of A whose pivot stopped the factorization; -1 when it succeeded.
+  int FailedRow() const;
+  // Each pivot at its row of A: diag(L) for kLlt (the square root of the row's Schur
+  // complement), diag(D) for kLdlt (the complement itself); NaN at the rows a failed
+  // factorization did not reach.
   Eigen::VectorXd PivotsByRow() const;
 
   // A^-1 rhs, column by column.
   Eigen::MatrixXd Solve(const Eigen::MatrixXd& rhs) const;
-  // L^-1 P x, and P^T L^-T x: the two halves of A^-1 = (P^T L^-T)(L^-1 P).
+  // For kLlt: L^-1 P x, and P^T L^-T x, the two halves of A^-1 = (P^T L^-T)(L^-1 P).
   Eigen::MatrixXd SolveLowerPermuted(const Eigen::MatrixXd& x) const;
   Eigen::MatrixXd SolveUpperPermuted(const Eigen::MatrixXd& x) const;
 
  private:
   struct Factor;  // CHOLMOD's workspace and factor
   int size_ = 0;
+  Form form_ = Form::kLlt;
   std::unique_ptr<Factor> factor_;
 };
 

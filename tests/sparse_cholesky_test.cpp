@@ -69,6 +69,32 @@ TEST(SparseCholesky, AnIndefiniteMatrixIsReportedNotFactorized) {
   Eigen::MatrixXd a(2, 2);
   a << 1.0, 2.0, 2.0, 1.0;
   EXPECT_FALSE(SparseCholesky(Eigen::SparseMatrix<double>(a.sparseView())).Succeeded());
+  // Only row 1 is negative: whatever the ordering, it is the row that stops L L^T.
+  a << 1.0, 0.0, 0.0, -1.0;
+  const SparseCholesky stopped(Eigen::SparseMatrix<double>(a.sparseView()));
+  EXPECT_FALSE(stopped.Succeeded());
+  EXPECT_EQ(stopped.FailedRow(), 1);
+  EXPECT_TRUE(std::isnan(stopped.PivotsByRow()[1]));
+}
+
+// L D L^T of tridiag(-1, 2, -1) - sigma I: as many negative pivots as eigenvalues
+// 2 - 2 cos(k pi / (n + 1)) below sigma (Sylvester's law of inertia).
+TEST(SparseCholesky, LdltPivotsCountTheEigenvaluesBelowTheShift) {
+  const int n = 50;
+  for (const double sigma : {0.01, 0.5, 1.3, 2.05, 3.9}) {
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i) {
+      a(i, i) = 2.0 - sigma;
+      if (i + 1 < n) a(i + 1, i) = a(i, i + 1) = -1.0;
+    }
+    int below = 0;
+    for (int k = 1; k <= n; ++k) below += 2.0 - 2.0 * std::cos(k * M_PI / (n + 1)) < sigma;
+    const SparseCholesky factor(Eigen::SparseMatrix<double>(a.sparseView()),
+                                SparseCholesky::Form::kLdlt);
+    ASSERT_TRUE(factor.Succeeded()) << "sigma " << sigma;
+    EXPECT_EQ((factor.PivotsByRow().array() < 0.0).count(), below) << "sigma " << sigma;
+    EXPECT_GT(below, 0);
+  }
 }
 
 }  // namespace
