@@ -81,8 +81,8 @@ struct SceneZone {
   int structure_a = -1, node_a = 0;
   int structure_b = -1, node_b = 0;
   double height_m = 0.0;
-  double normal_y = 1.0, normal_z = 0.0;            // Unit vector from a towards b (or the stop).
-  std::optional<std::array<double, 3>> normal_xyz;  // Zones with a node: (x, y, z), unit.
+  double normal_y = 1.0, normal_z = 0.0;              // Unit vector from a towards b (or the stop).
+  std::optional<std::array<double, 3>> normal_xyz{};  // Zones with a node: (x, y, z), unit.
   double gap_m = 0.0;
   // The linear law's k; with a power law, its tangent stiffness at the bound penetration (what
   // the stability bound gives the zone).
