@@ -51,7 +51,7 @@ struct SparseCholesky::Factor {
 };
 
 SparseCholesky::SparseCholesky(const Eigen::SparseMatrix<double>& a, Form form)
-    : size_(static_cast<int>(a.rows())), form_(form), factor_(std::make_unique<Factor>(form)) {
+    : form_(form), factor_(std::make_unique<Factor>(form)) {
   Eigen::SparseMatrix<double> upper = a.triangularView<Eigen::Upper>();
   upper.makeCompressed();
   cholmod_sparse view{};
@@ -77,6 +77,8 @@ SparseCholesky::~SparseCholesky() = default;
 SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 
+int SparseCholesky::Size() const { return static_cast<int>(factor_->l->n); }
+
 bool SparseCholesky::Succeeded() const { return factor_->l->minor == factor_->l->n; }
 
 int SparseCholesky::FailedRow() const {
@@ -89,7 +91,7 @@ Eigen::VectorXd SparseCholesky::PivotsByRow() const {
   const auto* x = static_cast<const double*>(l.x);
   const auto* perm = static_cast<const int*>(l.Perm);
   const auto reached = static_cast<int>(l.minor);  // the columns factorized
-  Eigen::VectorXd pivots = Eigen::VectorXd::Constant(size_, std::nan(""));
+  Eigen::VectorXd pivots = Eigen::VectorXd::Constant(Size(), std::nan(""));
   if (form_ == Form::kLdlt) {
     // Simplicial L D L^T: column j starts at p[j] with D's entry in place of L's unit diagonal.
     const auto* p = static_cast<const int*>(l.p);

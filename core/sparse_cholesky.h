@@ -22,7 +22,7 @@ class SparseCholesky {
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
 
-  int Size() const { return size_; }
+  int Size() const;
   bool Succeeded() const;
   // The row of A whose pivot stopped the factorization; -1 when it succeeded.
   int FailedRow() const;
@@ -39,7 +39,6 @@ class SparseCholesky {
 
  private:
   struct Factor;  // CHOLMOD's workspace and factor
-  int size_ = 0;
   Form form_ = Form::kLlt;
   std::unique_ptr<Factor> factor_;
 };

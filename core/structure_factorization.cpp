@@ -4,18 +4,10 @@
 #include <limits>
 
 namespace shockmap {
-namespace {
-
-Eigen::SparseMatrix<double> Shifted(const FeStructure& s, double sigma_rad2_s2) {
-  if (sigma_rad2_s2 == 0.0) return s.stiffness;
-  return s.stiffness - sigma_rad2_s2 * s.mass;
-}
-
-}  // namespace
 
 ShiftedFactorization::ShiftedFactorization(const FeStructure& s, double sigma_rad2_s2)
-    : diagonal_(Shifted(s, sigma_rad2_s2).diagonal()),
-      factor_(Shifted(s, sigma_rad2_s2), SparseCholesky::Form::kLdlt) {}
+    : diagonal_(s.stiffness.diagonal() - sigma_rad2_s2 * s.mass.diagonal()),
+      factor_(s.stiffness - sigma_rad2_s2 * s.mass, SparseCholesky::Form::kLdlt) {}
 
 int ShiftedFactorization::NegativePivots() const {
   return static_cast<int>((factor_.PivotsByRow().array() < 0.0).count());
