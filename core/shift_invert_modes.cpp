@@ -45,8 +45,8 @@ class LongDoubleShiftSolve {
 };
 
 // Ritz values are converged to this relative residual; their error is then of its square.
-constexpr double kLanczosTolerance = 1e-13;
-constexpr int kLanczosIterations = 1000;
+constexpr double kShiftInvertLanczosTolerance = 1e-13;
+constexpr int kShiftInvertLanczosIterations = 1000;
 
 }  // namespace
 
@@ -60,8 +60,8 @@ ModalBasis LowestModesShiftInvert(const FeBeamModel& model, int count, double sh
                                Spectra::GEigsMode::ShiftInvert>
       solver(op, mass, count, subspace, shift);
   solver.init();
-  solver.compute(Spectra::SortRule::LargestMagn, kLanczosIterations, kLanczosTolerance,
-                 Spectra::SortRule::SmallestAlge);
+  solver.compute(Spectra::SortRule::LargestMagn, kShiftInvertLanczosIterations,
+                 kShiftInvertLanczosTolerance, Spectra::SortRule::SmallestAlge);
   if (solver.info() != Spectra::CompInfo::Successful) {
     throw std::runtime_error("shift-invert modes: the Lanczos iteration did not converge");
   }

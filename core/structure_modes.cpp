@@ -33,8 +33,8 @@ class FlexibilityOperator {
 };
 
 // Ritz values are converged to this relative residual; Rayleigh-Ritz then squares the error.
-constexpr double kLanczosTolerance = 1e-12;
-constexpr int kLanczosIterations = 1000;
+constexpr double kFlexibilityLanczosTolerance = 1e-12;
+constexpr int kFlexibilityLanczosIterations = 1000;
 // Structures this small are solved densely: Lanczos needs count < size / 2 to be worth it.
 constexpr int kDenseSize = 400;
 // Modes whose 1 / omega^2 is below this share of the largest are taken as the infinite
@@ -73,8 +73,8 @@ Eigen::MatrixXd LanczosLowestShapes(const FeStructure& s, const StiffnessCholesk
   const int subspace = std::min(s.Size(), std::max(2 * count + 1, count + 20));
   Spectra::SymEigsSolver<FlexibilityOperator> solver(op, count, subspace);
   solver.init();
-  solver.compute(Spectra::SortRule::LargestAlge, kLanczosIterations, kLanczosTolerance,
-                 Spectra::SortRule::LargestAlge);
+  solver.compute(Spectra::SortRule::LargestAlge, kFlexibilityLanczosIterations,
+                 kFlexibilityLanczosTolerance, Spectra::SortRule::LargestAlge);
   if (solver.info() != Spectra::CompInfo::Successful) {
     throw std::runtime_error("structure '" + s.name +
                              "': the Lanczos iteration did not converge on its modes");

@@ -38,8 +38,8 @@ Table PointKeys(const std::string& database_path, const std::string& study) {
       {study});
 }
 
-std::optional<ReferenceRow> StoredReference(const std::string& database_path,
-                                            const std::string& reference_key) {
+std::optional<ReferenceRow> ReadStoredReference(const std::string& database_path,
+                                                const std::string& reference_key) {
   const Table id = RunReadOnlyQuery(
       database_path, "SELECT reference_id FROM reference_runs WHERE reference_key = ?1",
       {reference_key});

@@ -30,8 +30,8 @@ Table PointKeys(const std::string& database_path, const std::string& study);
 
 // The stored reference of that key, read on a read-only connection; nothing when none is
 // stored. Throws DbError as RunReadOnlyQuery does.
-std::optional<ReferenceRow> StoredReference(const std::string& database_path,
-                                            const std::string& reference_key);
+std::optional<ReferenceRow> ReadStoredReference(const std::string& database_path,
+                                                const std::string& reference_key);
 
 // The study file stored for `study`, or nothing when no study has that name.
 std::optional<std::string> StoredStudySpec(const std::string& database_path,

@@ -49,7 +49,7 @@ ReplayedPoint ReplayStudyPoint(const StudySpec& spec, const StudyPoint& point,
 std::shared_ptr<const ReferenceRun> StoredReferenceRuns::Find(const std::string& reference_key) {
   if (const auto found = runs_.find(reference_key); found != runs_.end()) return found->second;
   std::shared_ptr<const ReferenceRun> run;
-  if (const auto row = StoredReference(database_path_, reference_key)) {
+  if (const auto row = ReadStoredReference(database_path_, reference_key)) {
     run = std::make_shared<const ReferenceRun>(FromReferenceRow(*row, database_path_));
   }
   return runs_[reference_key] = run;

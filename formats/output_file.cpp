@@ -22,7 +22,7 @@ namespace {
 
 std::string Reason(int error) { return error != 0 ? std::strerror(error) : "write error"; }
 
-std::string Excerpt(const std::string& text) {
+std::string PathExcerpt(const std::string& text) {
   return text.size() <= 80 ? text : text.substr(0, 60) + "..." + text.substr(text.size() - 16);
 }
 
@@ -48,13 +48,13 @@ void CreateOutputDirectory(const std::filesystem::path& dir) {
 void CheckPathLength(const std::filesystem::path& path, std::string_view flag) {
   const std::string text = path.string();
   if (text.size() >= PATH_MAX) {
-    throw InputError(std::string(flag) + ": the path \"" + Excerpt(text) + "\" is " +
+    throw InputError(std::string(flag) + ": the path \"" + PathExcerpt(text) + "\" is " +
                      std::to_string(text.size()) + " bytes long; the system allows at most " +
                      std::to_string(PATH_MAX - 1));
   }
   for (const auto& part : path) {
     if (part.string().size() > NAME_MAX) {
-      throw InputError(std::string(flag) + ": the name \"" + Excerpt(part.string()) + "\" is " +
+      throw InputError(std::string(flag) + ": the name \"" + PathExcerpt(part.string()) + "\" is " +
                        std::to_string(part.string().size()) +
                        " bytes long; the system allows at most " + std::to_string(NAME_MAX) +
                        " bytes per file or folder name");

@@ -44,7 +44,7 @@ std::string Text(const TableCell& c) {
   return std::visit(visitor, c);
 }
 
-nlohmann::json Json(const TableCell& c) {
+nlohmann::json CellJson(const TableCell& c) {
   struct {
     nlohmann::json operator()(std::monostate) const { return nullptr; }
     nlohmann::json operator()(std::int64_t v) const { return v; }
@@ -79,7 +79,7 @@ void TableWriter::Row(const std::vector<TableCell>& row) {
   const std::size_t n = columns_.size();
   if (format_ == TableFormat::kJson) {
     nlohmann::json o = nlohmann::json::object();
-    for (std::size_t i = 0; i < n; ++i) o[columns_[i]] = Json(row[i]);
+    for (std::size_t i = 0; i < n; ++i) o[columns_[i]] = CellJson(row[i]);
     out_ << (rows_ == 0 ? "[\n" : ",\n") << Indented(o.dump(2));
   } else if (format_ == TableFormat::kCsv) {
     for (std::size_t i = 0; i < n; ++i) out_ << (i ? "," : "") << CsvField(Text(row[i]));

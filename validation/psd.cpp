@@ -9,8 +9,9 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/exact_text.h"
 
 namespace shockmap {
 namespace {
@@ -41,13 +42,6 @@ std::int64_t NextPowerOfTwo(std::int64_t n) {
     p *= 2;
   }
   return p;
-}
-
-std::string Describe(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
 }
 
 }  // namespace
@@ -102,15 +96,15 @@ bool PsdOptions::IsValid(std::string* error) const {
 std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, double t_end_s,
                                    int n_samples) {
   if (!std::isfinite(t_begin_s) || !std::isfinite(t_end_s) || !(t_begin_s < t_end_s)) {
-    throw std::invalid_argument("PSD observation window [" + Describe(t_begin_s) + ", " +
-                                Describe(t_end_s) + "] s: must be finite with begin < end");
+    throw std::invalid_argument("PSD observation window [" + ExactText(t_begin_s) + ", " +
+                                ExactText(t_end_s) + "] s: must be finite with begin < end");
   }
   if (n_samples < 2) {
     throw std::invalid_argument("PSD n_samples = " + std::to_string(n_samples) + ": must be >= 2");
   }
   if (s.values.size() < 2 || !std::isfinite(s.dt_s) || !(s.dt_s > 0.0) || !std::isfinite(s.t0_s)) {
     throw std::invalid_argument("PSD input signal (" + std::to_string(s.values.size()) +
-                                " samples, dt_s = " + Describe(s.dt_s) +
+                                " samples, dt_s = " + ExactText(s.dt_s) +
                                 "): must have >= 2 samples and a finite dt_s > 0");
   }
   // Rounding slack on the window bounds: a caller passing t_end = the nominal end of a run must
@@ -119,9 +113,9 @@ std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, dou
       std::max({std::abs(t_begin_s), std::abs(t_end_s), std::abs(s.t0_s), std::abs(s.EndTime())});
   const double slack = 1e-6 * s.dt_s + 8.0 * std::numeric_limits<double>::epsilon() * magnitude;
   if (t_begin_s < s.t0_s - slack || t_end_s > s.EndTime() + slack) {
-    throw std::invalid_argument("PSD observation window [" + Describe(t_begin_s) + ", " +
-                                Describe(t_end_s) + "] s: must lie within the signal [" +
-                                Describe(s.t0_s) + ", " + Describe(s.EndTime()) + "] s");
+    throw std::invalid_argument("PSD observation window [" + ExactText(t_begin_s) + ", " +
+                                ExactText(t_end_s) + "] s: must lie within the signal [" +
+                                ExactText(s.t0_s) + ", " + ExactText(s.EndTime()) + "] s");
   }
   // Every input sample the window touches must be finite, not only those the resampling lands
   // next to: a NaN between two resampled points would otherwise pass unseen.
@@ -132,8 +126,8 @@ std::vector<double> ResampleForPsd(const UniformSignal& s, double t_begin_s, dou
       static_cast<std::size_t>(std::clamp(std::ceil((t_end_s - s.t0_s) / s.dt_s), 0.0, last));
   for (std::size_t i = i_lo; i <= i_hi; ++i) {
     if (!std::isfinite(s.values[i])) {
-      throw std::invalid_argument("PSD input signal is not finite at t = " + Describe(s.TimeAt(i)) +
-                                  " s: a diverged run cannot be scored");
+      throw std::invalid_argument("PSD input signal is not finite at t = " +
+                                  ExactText(s.TimeAt(i)) + " s: a diverged run cannot be scored");
     }
   }
   const double step_s = (t_end_s - t_begin_s) / n_samples;

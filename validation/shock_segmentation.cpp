@@ -2,18 +2,12 @@
 
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/exact_text.h"
 
 namespace shockmap {
 namespace {
-
-std::string Describe(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  return out.str();
-}
 
 // Number of samples with time <= t_end_s, allowing for t_end_s computed as t0 + i dt in another
 // order of operations.
@@ -47,10 +41,11 @@ bool ShockSegmentationOptions::IsValid(std::string* error) const {
     return false;
   };
   if (!std::isfinite(force_threshold_n) || force_threshold_n < 0.0) {
-    return fail("force_threshold_n = " + Describe(force_threshold_n) + ": must be finite and >= 0");
+    return fail("force_threshold_n = " + ExactText(force_threshold_n) +
+                ": must be finite and >= 0");
   }
   if (!std::isfinite(rest_duration_s) || rest_duration_s <= 0.0) {
-    return fail("rest_duration_s = " + Describe(rest_duration_s) +
+    return fail("rest_duration_s = " + ExactText(rest_duration_s) +
                 ": must be finite and > 0 (required, no default)");
   }
   return true;
@@ -66,7 +61,7 @@ std::vector<Shock> SegmentShocks(const UniformSignal& force,
     throw std::invalid_argument("SegmentShocks: t_end_s is NaN");
   }
   if (force.values.size() >= 2 && (!std::isfinite(force.dt_s) || !(force.dt_s > 0.0))) {
-    throw std::invalid_argument("SegmentShocks: force dt_s = " + Describe(force.dt_s) +
+    throw std::invalid_argument("SegmentShocks: force dt_s = " + ExactText(force.dt_s) +
                                 ": must be finite and > 0");
   }
   const std::size_t n = SamplesConsidered(force, t_end_s);
@@ -75,7 +70,7 @@ std::vector<Shock> SegmentShocks(const UniformSignal& force,
   for (std::size_t i = 0; i < n; ++i) {
     if (!std::isfinite(f[i])) {
       throw std::invalid_argument(
-          "SegmentShocks: force is not finite at t = " + Describe(force.TimeAt(i)) + " s");
+          "SegmentShocks: force is not finite at t = " + ExactText(force.TimeAt(i)) + " s");
     }
   }
 

@@ -8,18 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
+#include "views/sizing_text.h"
 
 namespace shockmap {
 namespace {
 
 std::string Factor(double f) {
   return f < 1.0 ? fmt::format("1/{:.3g}", 1.0 / f) : fmt::format("{:.3g}", f);
-}
-
-std::string Shown(const QuantileInterval& q) {
-  auto side = [](bool bounded, double v) { return bounded ? fmt::format("{:.4g}", v) : "-"; };
-  return fmt::format("{:.4g} [{}, {}]", q.estimate, side(q.lower_bounded, q.lower),
-                     side(q.upper_bounded, q.upper));
 }
 
 // The group of `state` at `setting` (compared by value, as the study matched it).
@@ -173,7 +168,7 @@ std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
       if (*Agrees(f.rungs[check.advised], f.rungs.back(), check.tolerance)) continue;
       verdict += fmt::format(
           " It failed already at {} {} ({}): advised {} N against {} N at x {} ({:+.1f} %).",
-          f.state, FamilyName(f.family), f.zone, Shown(a), Shown(finest),
+          f.state, FamilyName(f.family), f.zone, IntervalText(a), IntervalText(finest),
           Factor(check.factors.back()), 100 * (a.estimate / finest.estimate - 1));
     }
     return verdict;
@@ -195,8 +190,9 @@ std::string AdviceVerdict(const AdviceCheck& check, double quantile) {
     verdict += fmt::format(
         " It failed at {} {} ({}): advised {} N against {} N at x {} ({:+.1f} %); x {} of the "
         "advised truncations would do.",
-        f->state, FamilyName(f->family), f->zone, Shown(a), Shown(c), Factor(check.factors[k]),
-        100 * (a.estimate / c.estimate - 1), Factor(check.factors[*f->convergence.rung]));
+        f->state, FamilyName(f->family), f->zone, IntervalText(a), IntervalText(c),
+        Factor(check.factors[k]), 100 * (a.estimate / c.estimate - 1),
+        Factor(check.factors[*f->convergence.rung]));
   }
   return verdict;
 }
@@ -221,7 +217,7 @@ Table AdviceCheckTable(const AdviceCheck& check) {
         check.advised > 0 ? RungHolds(check, f, check.advised - 1) : std::nullopt;
     std::vector<TableCell> row{f.state, FamilyName(f.family), f.zone};
     for (std::size_t k = 0; k < check.factors.size(); ++k) {
-      row.emplace_back(k < f.rungs.size() ? Shown(f.rungs[k].sizing) : std::string("-"));
+      row.emplace_back(k < f.rungs.size() ? IntervalText(f.rungs[k].sizing) : std::string("-"));
     }
     row.emplace_back(yes_no(AdviceHolds(check, f)));
     row.emplace_back(yes_no(coarser));

@@ -7,7 +7,9 @@
 namespace shockmap {
 namespace {
 
-std::string Optional(const std::optional<double>& v) { return v ? fmt::format("{:.3g}", *v) : "-"; }
+std::string OptionalText(const std::optional<double>& v) {
+  return v ? fmt::format("{:.3g}", *v) : "-";
+}
 
 }  // namespace
 
@@ -30,7 +32,7 @@ std::string AdviceSummary(const Advice& a) {
       s += fmt::format("  {:>10.4g}  {:>9.4g}  {:>11.3g}  {:<22}", p.r_k, p.r_ftrunc, p.DtRatio(),
                        ToString(p.status));
       for (const ScoreDefinition& score : Scores()) {
-        s += fmt::format("  {:>6}", Optional(p.scores[score.name]));
+        s += fmt::format("  {:>6}", OptionalText(p.scores[score.name]));
       }
       s += "\n";
     }

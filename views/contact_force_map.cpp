@@ -256,14 +256,15 @@ plot {zones} using ($5 == 0 && $4 > 0 ? $4 : 1/0):3 with points pt 5 ps 1.6 lc r
 constexpr int kSectionLegendPx = 60;
 
 // The panels' grid: rows and columns; `legend_px` of room beneath them for a shared legend.
-struct Layout {
+struct PanelGrid {
   int rows = 1, columns = 1, legend_px = 0;
 };
 
 // `quantity` names what the values are, in the title and on the colour bar.
 std::string MapScript(const Scene& scene, const std::vector<double>& max_force_n,
                       const MapQuantity& quantity, const ZoneExtent& e,
-                      const std::filesystem::path& file, Layout layout, const std::string& panels) {
+                      const std::filesystem::path& file, PanelGrid layout,
+                      const std::string& panels) {
   const auto largest = std::max_element(max_force_n.begin(), max_force_n.end());
   const SceneZone& strongest = scene.zones[static_cast<std::size_t>(largest - max_force_n.begin())];
   const std::string title = fmt::format("{}: {} per zone (largest {:.4g} {} at {})", scene.name,

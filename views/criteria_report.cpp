@@ -68,7 +68,7 @@ double RequiredIn(JsonObjectReader& r, const std::string& key, const Allowed& a)
   return Checked(r, key, r.RequiredNumber(key), a);
 }
 
-double NumberIn(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
+double ReadNumber(JsonObjectReader& r, const std::string& key, double fallback, const Allowed& a) {
   return Checked(r, key, r.Number(key, fallback), a);
 }
 
@@ -79,7 +79,7 @@ double SpreadIn(JsonObjectReader& r, const std::string& key, double fallback, co
   if (v != nullptr && (v->is_null() || (v->is_number_float() && std::isnan(v->get<double>())))) {
     return std::numeric_limits<double>::quiet_NaN();
   }
-  return NumberIn(r, key, fallback, a);
+  return ReadNumber(r, key, fallback, a);
 }
 
 std::optional<double> OptionalNumber(JsonObjectReader& r, const std::string& key,
@@ -244,11 +244,11 @@ ValidityCriteria CriteriaFromJson(const Json& json, const std::string& file,
   c.smallest_diverged_dt_ratio = OptionalNumber(r, "smallest_diverged_dt_ratio", kDtRatio);
   if (const Json* t = r.Get("tolerances"); t != nullptr && tolerances != nullptr) {
     JsonObjectReader tr(*t, file, r.PathOf("tolerances"));
-    tolerances->p = NumberIn(tr, "p", tolerances->p, kSpread);
+    tolerances->p = ReadNumber(tr, "p", tolerances->p, kSpread);
     tolerances->c_envelope_factor =
-        NumberIn(tr, "c_envelope_factor", tolerances->c_envelope_factor, kFactor);
+        ReadNumber(tr, "c_envelope_factor", tolerances->c_envelope_factor, kFactor);
     tolerances->dt_ratio_factor =
-        NumberIn(tr, "dt_ratio_factor", tolerances->dt_ratio_factor, kFactor);
+        ReadNumber(tr, "dt_ratio_factor", tolerances->dt_ratio_factor, kFactor);
     tr.Finish();
   }
   r.Finish();

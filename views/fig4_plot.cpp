@@ -14,15 +14,15 @@
 namespace shockmap {
 namespace {
 
-struct Curve {
+struct RkCurve {
   std::string title;
   std::map<double, const ScoredPoint*> by_rk;  // Finest time step per R_k.
 };
 
 void AddCurves(const std::vector<ScoredPoint>& points, const std::string& scheme,
-               std::map<std::pair<std::string, double>, Curve>& curves) {
+               std::map<std::pair<std::string, double>, RkCurve>& curves) {
   for (const auto& p : points) {
-    Curve& c = curves[{scheme, p.r_ftrunc}];
+    RkCurve& c = curves[{scheme, p.r_ftrunc}];
     c.title = fmt::format("{} R_{{ftrunc}} = {:.6g}", scheme, p.r_ftrunc);
     auto& slot = c.by_rk[p.r_k];
     if (slot == nullptr || p.DtRatio() < slot->DtRatio()) slot = &p;
@@ -34,7 +34,7 @@ std::string Value(const std::optional<double>& v) { return v ? fmt::format("{}",
 // The R_k at which some curve's point has no score, or lacks one, because its reference did not
 // converge or does not decide it: drawn as dashed verticals, so that the curves' gaps there are
 // not read as data.
-std::set<double> UnconvergedRk(const std::map<std::pair<std::string, double>, Curve>& curves) {
+std::set<double> UnconvergedRk(const std::map<std::pair<std::string, double>, RkCurve>& curves) {
   std::set<double> r_k;
   for (const auto& [key, curve] : curves) {
     for (const auto& [rk, p] : curve.by_rk) {
@@ -64,7 +64,7 @@ std::string UnconvergedKey(const std::set<double>& r_k) {
 }
 
 // The smallest and largest R_k of the curves.
-std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>, Curve>& curves) {
+std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>, RkCurve>& curves) {
   std::pair<double, double> range{INFINITY, 0.0};
   for (const auto& [key, curve] : curves) {
     range.first = std::min(range.first, curve.by_rk.begin()->first);
@@ -75,7 +75,7 @@ std::pair<double, double> RkRange(const std::map<std::pair<std::string, double>,
 
 // The SRf axis: the curves' values and the threshold, with a twentieth of their span (at
 // least 0.01) around them; [0, 1.05] when nothing is scored.
-std::string SrfRange(const std::map<std::pair<std::string, double>, Curve>& curves,
+std::string SrfRange(const std::map<std::pair<std::string, double>, RkCurve>& curves,
                      double threshold) {
   double low = threshold, high = threshold;
   bool scored = false;
@@ -94,7 +94,7 @@ std::string SrfRange(const std::map<std::pair<std::string, double>, Curve>& curv
 // Writes one data block per curve (columns r_k err srf status) and returns the plot clauses
 // of the Err and the SRf panels.
 std::pair<std::string, std::string> WriteCurves(
-    const std::map<std::pair<std::string, double>, Curve>& curves,
+    const std::map<std::pair<std::string, double>, RkCurve>& curves,
     const std::filesystem::path& data_file) {
   AtomicFile data_out(data_file);
   std::ostream& data = data_out.Stream();
@@ -126,7 +126,7 @@ std::pair<std::string, std::string> WriteCurves(
 void DrawFig4(const std::string& study, const std::vector<ScoredPoint>& explicit_points,
               const std::vector<ScoredPoint>& implicit_points, const CriteriaOptions& thresholds,
               const std::filesystem::path& file) {
-  std::map<std::pair<std::string, double>, Curve> curves;
+  std::map<std::pair<std::string, double>, RkCurve> curves;
   AddCurves(explicit_points, "explicit", curves);
   AddCurves(implicit_points, "implicit", curves);
   if (curves.empty()) throw InputError("nothing to draw: the study has no stored point");

@@ -78,7 +78,7 @@ std::string CellRect(const MapCell& c, const Frame& f, const CriteriaOptions& th
       fmt::arg("tip", HtmlEscaped(tip)));
 }
 
-std::string Axes(const MapGrid& grid, const Frame& f, const std::string& ylabel) {
+std::string AxesSvg(const MapGrid& grid, const Frame& f, const std::string& ylabel) {
   std::string svg;
   for (double v : grid.r_k_values) {
     svg += fmt::format(
@@ -149,7 +149,7 @@ std::string Svg(const MapGrid& grid, MapAxis y, const ValidityCriteria& criteria
       "xmlns=\"http://www.w3.org/2000/svg\">\n{cells}{boundary}{axes}</svg>\n",
       fmt::arg("id", HtmlEscaped(id)), fmt::arg("w", f.left + f.width + 20),
       fmt::arg("h", f.top + f.height + 75), fmt::arg("cells", cells),
-      fmt::arg("boundary", Boundary(criteria, f, y)), fmt::arg("axes", Axes(grid, f, ylabel)));
+      fmt::arg("boundary", Boundary(criteria, f, y)), fmt::arg("axes", AxesSvg(grid, f, ylabel)));
 }
 
 // A colour scale: colour stops over [0, 1] and how a value maps there (linear or log between

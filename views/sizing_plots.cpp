@@ -11,13 +11,12 @@
 #include "formats/output_file.h"
 #include "views/contact_force_map.h"
 #include "views/gnuplot.h"
+#include "views/sizing_text.h"
 
 namespace shockmap {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 
 // Interval ends for a plot: an unbounded side drawn at the estimate.
 double Lower(const QuantileInterval& q) { return q.lower_bounded ? q.lower : q.estimate; }
@@ -111,8 +110,8 @@ fs::path Convergence(const EnsembleSizing& s, const GroupSizing& g, const Family
   WriteFileAtomically(data, text);
   const std::string title =
       fmt::format("{} ({}): P{} at {}, the hottest {}, {} % interval", s.study, g.state,
-                  Percent(s.options.quantile), g.zones[f.zone].name, FamilyName(f.family),
-                  Percent(s.options.confidence));
+                  PercentText(s.options.quantile), g.zones[f.zone].name, FamilyName(f.family),
+                  PercentText(s.options.confidence));
   const std::string band =
       kinds.closed ? "using 1:($5 > 0 && $6 > 0 ? $3 : 1/0):4 with filledcurves lc rgb '#9ecae1' "
                      "fs solid 0.5 title 'interval (both sides bounded)', \\\n     '' "
@@ -157,7 +156,7 @@ fs::path Histogram(const EnsembleSizing& s, const GroupSizing& g, const FamilyHo
   std::string marks = fmt::format(
       "set arrow from {0},graph 0 to {0},graph 1 nohead lw 2 lc rgb '#08519c'\n"
       "set label {1} at {0},graph 0.95 left offset 0.5,0 tc rgb '#08519c'\n",
-      z.sizing.estimate, GnuplotQuoted("P" + Percent(s.options.quantile)));
+      z.sizing.estimate, GnuplotQuoted("P" + PercentText(s.options.quantile)));
   if (z.wilks) {
     marks += fmt::format(
         "set arrow from {0},graph 0 to {0},graph 1 nohead lw 2 dt 2 lc rgb '#de2d26'\n"
@@ -223,15 +222,15 @@ fs::path States(const EnsembleSizing& s, ZoneFamily family, const fs::path& fold
   WriteFileAtomically(data, text);
   const std::string title =
       fmt::format("{}: P{} of the hottest {}'s largest force per clearance state", s.study,
-                  Percent(s.options.quantile), FamilyName(family));
+                  PercentText(s.options.quantile), FamilyName(family));
   std::string plot = fmt::format(
       "plot {} using 1:2 with points pt 7 ps 1.5 lc rgb '#08519c' title 'P{} (estimate)'",
-      GnuplotFileName(data), Percent(s.options.quantile));
+      GnuplotFileName(data), PercentText(s.options.quantile));
   if (kinds.closed) {
     plot += fmt::format(
         ", \\\n     '' using 1:($5 > 0 && $6 > 0 ? $2 : 1/0):3:4 with yerrorbars pt 7 ps 1.5 lw 2 "
         "lc rgb '#08519c' title '{} % interval (both sides bounded)'",
-        Percent(s.options.confidence));
+        PercentText(s.options.confidence));
   }
   plot += OpenIntervalClauses(kinds, axis);
   if (wear) {
@@ -301,9 +300,9 @@ fs::path Settings(const EnsembleSizing& s, ZoneFamily family, const fs::path& fo
       numeric ? "set logscale x\nset xlabel " +
                     GnuplotQuoted(nlohmann::json::parse(settings.front()).begin().key()) + "\n"
               : "set xlabel 'setting'\n" + Tics(settings);
-  const std::string title =
-      fmt::format("{}: P{} of the hottest {}'s largest force per setting ({} % intervals)", s.study,
-                  Percent(s.options.quantile), FamilyName(family), Percent(s.options.confidence));
+  const std::string title = fmt::format(
+      "{}: P{} of the hottest {}'s largest force per setting ({} % intervals)", s.study,
+      PercentText(s.options.quantile), FamilyName(family), PercentText(s.options.confidence));
   return Draw(image, fmt::format("set title {} noenhanced\nset ylabel 'force (N)'\nset offsets "
                                  "graph 0.05, graph 0.05, graph 0.05, graph 0.05\nset key top "
                                  "right\n{}{}\n",
@@ -325,7 +324,7 @@ std::optional<std::vector<double>> WearSizingValues(const GroupSizing& g) {
 std::vector<SizingPicture> StatePictures(const EnsembleSizing& s, const StoredEnsemble& stored,
                                          const Scene& scene, const GroupSizing& g,
                                          const fs::path& folder) {
-  const std::string q = "P" + Percent(s.options.quantile);
+  const std::string q = "P" + PercentText(s.options.quantile);
   std::vector<double> sizing;
   for (const ZoneSizing& z : g.zones) sizing.push_back(z.sizing.estimate);
   const fs::path map = folder / ("map_" + FileNamePart(g.state) + ".png");
@@ -349,7 +348,7 @@ std::vector<SizingPicture> StatePictures(const EnsembleSizing& s, const StoredEn
     pictures.push_back({Convergence(s, g, f, forces, folder),
                         fmt::format("{}: {} of the hottest {} ({}) against the number of "
                                     "members, with its {} % interval",
-                                    g.state, q, family, zone, Percent(s.options.confidence))});
+                                    g.state, q, family, zone, PercentText(s.options.confidence))});
     pictures.push_back({Histogram(s, g, f, forces, folder),
                         fmt::format("{}: histogram of the hottest {}'s ({}) largest force over "
                                     "the members",
@@ -363,7 +362,7 @@ std::vector<SizingPicture> StatePictures(const EnsembleSizing& s, const StoredEn
 std::vector<SizingPicture> DrawSizingPictures(const EnsembleSizing& s, const StoredEnsemble& stored,
                                               const Scene& scene, const fs::path& folder) {
   CreateOutputDirectory(folder);
-  const std::string q = "P" + Percent(s.options.quantile);
+  const std::string q = "P" + PercentText(s.options.quantile);
   std::vector<SizingPicture> pictures;
   const auto refined = RefinedGroups(s);
   for (const GroupSizing* g : refined) {

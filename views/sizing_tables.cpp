@@ -9,13 +9,12 @@
 #include "formats/zone_family.h"
 #include "statistics/wilks.h"
 #include "views/setting_names.h"
+#include "views/sizing_text.h"
 
 namespace shockmap {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-std::string Percent(double p) { return fmt::format("{:g}", 100.0 * p); }
 
 // An unbounded side of an interval is an infinite bound (`-inf` or `inf` in every format, as
 // `query` prints infinities), not a missing value.
@@ -28,7 +27,7 @@ TableCell WilksOrder(int order) {
   return order > 0 ? TableCell(static_cast<std::int64_t>(order)) : TableCell(std::monostate{});
 }
 
-TableCell Optional(const std::optional<double>& v) {
+TableCell FiniteCell(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? TableCell(*v) : TableCell(std::monostate{});
 }
 
@@ -38,17 +37,11 @@ constexpr int kShownDigits = 4;
 
 std::string Significant(double v) { return fmt::format("{:.{}g}", v, kShownDigits); }
 
-std::string Shown(const QuantileInterval& q) {
-  return fmt::format("{} [{}, {}]", Significant(q.estimate),
-                     q.lower_bounded ? Significant(q.lower) : "-",
-                     q.upper_bounded ? Significant(q.upper) : "-");
-}
-
 // The terminal's table: per family, its hottest zone's sizing quantile with its interval, the
 // design value (Wilks' limit, or the members it needs) and the agreement with the refined
 // setting ("refined" on the refined setting's rows); the rest is in ZoneTable.
 std::vector<std::string> CompactColumns(const EnsembleSizing& s) {
-  const std::string q = Percent(s.options.quantile), c = Percent(s.options.confidence);
+  const std::string q = PercentText(s.options.quantile), c = PercentText(s.options.confidence);
   return {"state",      "setting",      "members",
           "family",     "hottest zone", "P" + q + " (N) [" + c + " %]",
           "design (N)", "agrees"};
@@ -64,13 +57,13 @@ std::vector<TableCell> CompactRow(const EnsembleSizing& s, const GroupSizing& g,
           static_cast<std::int64_t>(z.members),
           FamilyName(z.family),
           z.name,
-          Shown(z.sizing),
+          IntervalText(z.sizing),
           z.wilks ? Significant(z.wilks->value) : fmt::format("needs {}", needed),
           g.refined ? std::string("refined") : Agreement(agrees)};
 }
 
 std::vector<std::string> Columns(const EnsembleSizing& s) {
-  const std::string q = Percent(s.options.quantile);
+  const std::string q = PercentText(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone", "family"};
   auto interval = [&](const std::string& name) {
     for (const char* suffix : {"_n", "_lower_n", "_upper_n"}) c.push_back(name + suffix);
@@ -97,17 +90,17 @@ std::vector<TableCell> Row(const EnsembleSizing& s, const GroupSizing& g, const 
   interval(z.p50);
   interval(z.p95);
   interval(z.p99);
-  const std::string q = Percent(s.options.quantile);
+  const std::string q = PercentText(s.options.quantile);
   if (q != "50" && q != "95" && q != "99") interval(z.sizing);
   row.push_back(WilksOrder(z.wilks_order));
   row.push_back(z.wilks ? TableCell(z.wilks->value) : TableCell(std::monostate{}));
   row.emplace_back(std::in_place_type<std::int64_t>,
                    WilksMembersNeeded(s.options.quantile, s.options.confidence, 1));
-  row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, Optional(z.nominal_n)});
+  row.insert(row.end(), {z.bootstrap.lower, z.bootstrap.upper, FiniteCell(z.nominal_n)});
   row.push_back(Agreement(agrees));
   if (z.impacts) {
     row.insert(row.end(), {z.impacts->impacts_per_s, z.impacts->contact_time_fraction,
-                           z.impacts->mean_force_n, Optional(z.impacts->wear_work_rate_w)});
+                           z.impacts->mean_force_n, FiniteCell(z.impacts->wear_work_rate_w)});
   } else {
     row.insert(row.end(), 4, std::monostate{});
   }
@@ -159,11 +152,11 @@ Table ZoneTable(const EnsembleSizing& s) {
 namespace {
 
 std::vector<std::string> WearColumns(const EnsembleSizing& s, bool compact) {
-  const std::string q = "p" + Percent(s.options.quantile);
+  const std::string q = "p" + PercentText(s.options.quantile);
   std::vector<std::string> c = {"state", "setting", "members", "zone"};
   if (compact) {
-    const std::string c_percent = Percent(s.options.confidence);
-    const std::string p = "P" + Percent(s.options.quantile);
+    const std::string c_percent = PercentText(s.options.confidence);
+    const std::string p = "P" + PercentText(s.options.quantile);
     c.insert(c.end(), {"wear " + p + " (m3) [" + c_percent + " %]",
                        "Wilks " + p + "/" + c_percent + " %", "mean (m3)", "force " + p + " (N)"});
     return c;
@@ -181,7 +174,7 @@ std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool c
             g.setting_json + (g.refined ? " (refined)" : ""),
             static_cast<std::int64_t>(z.members),
             z.name,
-            Shown(w),
+            IntervalText(w),
             z.wear->wilks ? Significant(z.wear->wilks->value) : std::string("-"),
             Significant(z.wear->mean_m3),
             Significant(z.sizing.estimate)};
@@ -241,14 +234,14 @@ std::vector<std::string> SizingFootnotes(const EnsembleSizing& s, bool wear) {
     lines.push_back(fmt::format(
         "Wilks' limit: a one-sided P{} at {} % confidence needs at least {} members (the "
         "largest of n members bounds P{} once 1 - {:g}^n >= {:g}); this study has {}: run more",
-        Percent(q), Percent(c), WilksMembersNeeded(q, c, 1), Percent(q), q, c, fewest));
+        PercentText(q), PercentText(c), WilksMembersNeeded(q, c, 1), PercentText(q), q, c, fewest));
   }
   if (!wear) {
     lines.push_back(fmt::format(
         "family: pin-pin wires, the duct pad, pins against the wrapper; each family's hottest zone "
         "at the refined setting; design: Wilks' P{}/{} % limit, or the members it needs; agrees: "
         "with the refined setting",
-        Percent(q), Percent(c)));
+        PercentText(q), PercentText(c)));
   }
   if (unbounded) {
     lines.push_back("-: a side of an interval the members are too few to bound, or no value");

@@ -66,7 +66,7 @@ std::string Title(const SweepPoint& p, const OutcomeCategory& category) {
   return text + fmt::format("status {} ({})", ToString(p.scored.status), category.label);
 }
 
-struct Layout {
+struct CellLayout {
   double left = 120, top = 10, cell_w, cell_h;
   std::vector<double> xs, ys;  // Ascending; ys = {0} when nothing is swept up.
 
@@ -81,7 +81,7 @@ struct Layout {
   double Height() const { return cell_h * static_cast<double>(ys.size()); }
 };
 
-std::string Cell(const SweepPoint& p, const Axes& axes, const Layout& l,
+std::string Cell(const SweepPoint& p, const Axes& axes, const CellLayout& l,
                  const CriteriaOptions& thresholds) {
   const OutcomeCategory& category = OutcomeCategories()[OutcomeCategoryOf(p.scored, thresholds)];
   const double x = l.X(*ValueAt(p.parameters, axes.x));
@@ -99,7 +99,7 @@ std::string Cell(const SweepPoint& p, const Axes& axes, const Layout& l,
       MarkerShape(category.marker, x, y, l.cell_w, l.cell_h));
 }
 
-std::string AxisLabels(const Axes& axes, const Layout& l) {
+std::string AxisLabels(const Axes& axes, const CellLayout& l) {
   std::string svg;
   const double bottom = l.top + l.Height();
   for (double v : l.xs) {
@@ -126,7 +126,7 @@ std::string Map(const std::vector<const SweepPoint*>& points, const Axes& axes,
     xs.insert(*ValueAt(p->parameters, axes.x));
     ys.insert(axes.y.empty() ? 0.0 : *ValueAt(p->parameters, axes.y));
   }
-  Layout l;
+  CellLayout l;
   l.xs.assign(xs.begin(), xs.end());
   l.ys.assign(ys.begin(), ys.end());
   l.cell_w = std::min(120.0, 720.0 / static_cast<double>(l.xs.size()));
