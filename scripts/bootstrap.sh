@@ -10,7 +10,7 @@ SHOCKMAP_BUILD=${SHOCKMAP_BUILD:-$SHOCKMAP_ROOT/build}
 
 # Each package and why it is here is listed in the README ("Dependencies").
 SHOCKMAP_PACKAGES=(
-  build-essential cmake pkg-config git
+  build-essential cmake ninja-build pkg-config git
   libeigen3-dev libspectra-dev libsuitesparse-dev liblapack-dev libgsl-dev libfftw3-dev
   libsqlite3-dev sqlite3 nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
@@ -35,7 +35,12 @@ install_missing_packages() {
 }
 
 build_shockmap() {
-  cmake -S "$SHOCKMAP_ROOT" -B "$SHOCKMAP_BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  # Ninja compiles a target's sources while the libraries it links are still being compiled
+  # (Make waits for each library whole). A build folder keeps the generator it was made with.
+  local generator=()
+  [ -f "$SHOCKMAP_BUILD/CMakeCache.txt" ] || generator=(-G Ninja)
+  cmake -S "$SHOCKMAP_ROOT" -B "$SHOCKMAP_BUILD" ${generator[@]+"${generator[@]}"} \
+    -DCMAKE_BUILD_TYPE=Release >/dev/null
   local targets=()
   for t in ${SHOCKMAP_BUILD_TARGETS[@]+"${SHOCKMAP_BUILD_TARGETS[@]}"}; do
     targets+=(--target "$t")
