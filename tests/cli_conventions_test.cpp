@@ -227,7 +227,7 @@ TEST_F(CliConventions, MissingFilesAreNamedAlikeAndTheDatabaseMayBeNew) {
     EXPECT_EQ(o.output, "shockmap: error: --allow-path: " + folder +
                             (folder == Path("file") ? ": not a folder\n" : ": no such folder\n"));
   }
-  for (const std::string& command : {"study run", "study status", "map", "sizing"}) {
+  for (const std::string command : {"study run", "study status", "map", "sizing"}) {
     const std::string help = RunShockmap(command + " --help").output;
     EXPECT_NE(help.find("  --db FILE "), std::string::npos) << command << ":\n" << help;
     EXPECT_NE(help.find("created by `study run` when missing"), std::string::npos) << help;
