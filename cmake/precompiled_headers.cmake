@@ -15,28 +15,14 @@ if(SHOCKMAP_PRECOMPILED_HEADERS AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU"
   add_compile_options(-Wno-stringop-overflow -Wno-stringop-overread -Wno-array-bounds)
 endif()
 
-# shockmap_precompile_headers(TARGET [EIGEN] [JSON] [FMT] [GTEST]): the standard headers the
-# sources share, and each named library the target can include.
+# shockmap_precompile_headers(TARGET): the standard headers the tests share, Eigen,
+# nlohmann-json, fmt and GoogleTest.
 function(shockmap_precompile_headers target)
-  if(NOT SHOCKMAP_PRECOMPILED_HEADERS)
-    return()
+  if(SHOCKMAP_PRECOMPILED_HEADERS)
+    target_precompile_headers(${target} PRIVATE <algorithm> <cmath> <cstdint> <filesystem>
+                              <functional> <map> <memory> <optional> <string> <variant> <vector>
+                              <Eigen/Dense> <nlohmann/json.hpp> <fmt/format.h> <gtest/gtest.h>)
   endif()
-  cmake_parse_arguments(ARG "EIGEN;JSON;FMT;GTEST" "" "" ${ARGN})
-  set(headers <algorithm> <cmath> <cstdint> <filesystem> <functional> <map> <memory> <optional>
-              <string> <variant> <vector>)
-  if(ARG_EIGEN)
-    list(APPEND headers <Eigen/Dense>)
-  endif()
-  if(ARG_JSON)
-    list(APPEND headers <nlohmann/json.hpp>)
-  endif()
-  if(ARG_FMT)
-    list(APPEND headers <fmt/format.h>)
-  endif()
-  if(ARG_GTEST)
-    list(APPEND headers <gtest/gtest.h>)
-  endif()
-  target_precompile_headers(${target} PRIVATE ${headers})
 endfunction()
 
 # shockmap_reuse_precompiled_headers(TARGET DONOR): TARGET, built with the same flags as DONOR,

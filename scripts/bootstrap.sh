@@ -34,13 +34,19 @@ install_missing_packages() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 }
 
-build_shockmap() {
-  # Ninja compiles a target's sources while the libraries it links are still being compiled
-  # (Make waits for each library whole). A build folder keeps the generator it was made with.
+# configure_build DIR CMAKE_ARGS...: configures the build folder DIR. Ninja compiles a target's
+# sources while the libraries it links are still being compiled (Make waits for each library
+# whole); a build folder keeps the generator it was made with.
+configure_build() {
+  local dir=$1
+  shift
   local generator=()
-  [ -f "$SHOCKMAP_BUILD/CMakeCache.txt" ] || generator=(-G Ninja)
-  cmake -S "$SHOCKMAP_ROOT" -B "$SHOCKMAP_BUILD" ${generator[@]+"${generator[@]}"} \
-    -DCMAKE_BUILD_TYPE=Release >/dev/null
+  [ -f "$dir/CMakeCache.txt" ] || generator=(-G Ninja)
+  cmake -S "$SHOCKMAP_ROOT" -B "$dir" ${generator[@]+"${generator[@]}"} "$@" >/dev/null
+}
+
+build_shockmap() {
+  configure_build "$SHOCKMAP_BUILD" -DCMAKE_BUILD_TYPE=Release
   local targets=()
   for t in ${SHOCKMAP_BUILD_TARGETS[@]+"${SHOCKMAP_BUILD_TARGETS[@]}"}; do
     targets+=(--target "$t")

@@ -3,18 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/exact_text.h"
 
 namespace shockmap {
 
 double ImpulseRatio(double impulse_a_n_s, double impulse_b_n_s) {
   for (const double impulse : {impulse_a_n_s, impulse_b_n_s}) {
     if (!std::isfinite(impulse) || impulse < 0.0) {
-      std::ostringstream message;
-      message.precision(17);
-      message << "ImpulseRatio: impulse = " << impulse << " N s: must be finite and >= 0";
-      throw std::invalid_argument(message.str());
+      throw std::invalid_argument("ImpulseRatio: impulse = " + ExactText(impulse) +
+                                  " N s: must be finite and >= 0");
     }
   }
   const double larger = std::max(impulse_a_n_s, impulse_b_n_s);

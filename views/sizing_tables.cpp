@@ -31,12 +31,6 @@ TableCell FiniteCell(const std::optional<double>& v) {
   return v && std::isfinite(*v) ? TableCell(*v) : TableCell(std::monostate{});
 }
 
-// The terminal's tables show every number to kShownDigits significant digits, an unbounded
-// side of an interval as "-" (SizingFootnotes says why).
-constexpr int kShownDigits = 4;
-
-std::string Significant(double v) { return fmt::format("{:.{}g}", v, kShownDigits); }
-
 // The terminal's table: per family, its hottest zone's sizing quantile with its interval, the
 // design value (Wilks' limit, or the members it needs) and the agreement with the refined
 // setting ("refined" on the refined setting's rows); the rest is in ZoneTable.
@@ -58,7 +52,7 @@ std::vector<TableCell> CompactRow(const EnsembleSizing& s, const GroupSizing& g,
           FamilyName(z.family),
           z.name,
           IntervalText(z.sizing),
-          z.wilks ? Significant(z.wilks->value) : fmt::format("needs {}", needed),
+          z.wilks ? SignificantText(z.wilks->value) : fmt::format("needs {}", needed),
           g.refined ? std::string("refined") : Agreement(agrees)};
 }
 
@@ -175,9 +169,9 @@ std::vector<TableCell> WearRow(const GroupSizing& g, const ZoneSizing& z, bool c
             static_cast<std::int64_t>(z.members),
             z.name,
             IntervalText(w),
-            z.wear->wilks ? Significant(z.wear->wilks->value) : std::string("-"),
-            Significant(z.wear->mean_m3),
-            Significant(z.sizing.estimate)};
+            z.wear->wilks ? SignificantText(z.wear->wilks->value) : std::string("-"),
+            SignificantText(z.wear->mean_m3),
+            SignificantText(z.sizing.estimate)};
   }
   std::vector<TableCell> row = {g.state, g.setting_json + (g.refined ? " (refined)" : ""),
                                 static_cast<std::int64_t>(z.members), z.name};

@@ -6,10 +6,12 @@ namespace shockmap {
 
 std::string PercentText(double probability) { return fmt::format("{:g}", 100.0 * probability); }
 
+std::string SignificantText(double value) { return fmt::format("{:.4g}", value); }
+
 std::string IntervalText(const QuantileInterval& q) {
-  auto side = [](bool bounded, double v) { return bounded ? fmt::format("{:.4g}", v) : "-"; };
-  return fmt::format("{:.4g} [{}, {}]", q.estimate, side(q.lower_bounded, q.lower),
-                     side(q.upper_bounded, q.upper));
+  return fmt::format("{} [{}, {}]", SignificantText(q.estimate),
+                     q.lower_bounded ? SignificantText(q.lower) : "-",
+                     q.upper_bounded ? SignificantText(q.upper) : "-");
 }
 
 }  // namespace shockmap
