@@ -9,6 +9,11 @@
 //   BundleHexOneSecond    scenes/bundle_hex.json as shipped: 1 s simulated, one iteration
 //   Effect/<name>         the paper's cantilever with one effect declared or not: an
 //                         undeclared effect must cost nothing
+//   PreloadedHexEquilibrium/<steps>  the static equilibrium of scenes/bundle_hex_7.json worn
+//                         (wire gaps drawn as bundle_hex_ensemble's end_of_life state) at the
+//                         truncations of its advice check's finest rung (x 3): `sparse_steps`
+//                         factorizes at every Newton step, `closed_set_first` finds the closed
+//                         set in the zones' space and factorizes once (the same vector)
 // Counters: cpu_s_per_simulated_s, and ns_per_step_per_term = time / (steps * (coordinates +
 // zones)), flat when the cost grows linearly with the size of the scene. The growth exponent of
 // bundle time against pins is fitted from BundleHex by scripts/bundle-growth (docs/performance.md).
@@ -20,6 +25,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "core/preload_equilibrium.h"
 #include "core/scene_model.h"
 #include "core/transient_run.h"
 #include "formats/scene_file.h"
@@ -142,6 +148,29 @@ BENCHMARK_CAPTURE(Effect, base_motion, [](Json& s) {
 BENCHMARK_CAPTURE(Effect, static_force, [](Json& s) {
   s["effects"]["static_forces"] = {{{"beam", "beam"}, {"height_m", 0.5}, {"force_n", 100.0}}};
 })->UseManualTime();
+
+void PreloadedHexEquilibrium(benchmark::State& state,
+                             Eigen::VectorXd (*equilibrium)(const SceneModalSystem&)) {
+  Json json = ReadScene("bundle_hex_7");
+  json["bundle"]["pin"]["elements"] = 685;
+  json["bundle"]["pin"]["r_ftrunc"] = 47941.97;
+  json["bundle"]["wrapper"]["elements"] = 79;
+  json["bundle"]["wrapper"]["r_ftrunc"] = 631.795;
+  json["bundle"]["wire"]["gap_m"] = {
+      {"normal", {{"mean", 1e-5}, {"std", 3e-5}, {"min", -4e-5}, {"seed", 7}}}};
+  const Scene scene = Load(json);
+  const SceneModel model = BuildSceneModel(scene);
+  for (auto _ : state) benchmark::DoNotOptimize(equilibrium(*model.system));
+  int preloaded = 0;
+  for (const ZoneTerm& z : model.system->Zones()) preloaded += z.gap_m < 0.0;
+  state.counters["coordinates"] = model.system->Size();
+  state.counters["zones"] = static_cast<double>(model.system->Zones().size());
+  state.counters["preloaded_zones"] = preloaded;
+}
+BENCHMARK_CAPTURE(PreloadedHexEquilibrium, sparse_steps, &PreloadEquilibriumBySparseSteps)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(PreloadedHexEquilibrium, closed_set_first, &PreloadEquilibrium)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace shockmap

@@ -1,6 +1,8 @@
 #include "core/preload_equilibrium.h"
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -11,9 +13,11 @@ namespace {
 
 constexpr int kMaxActiveSetIterations = 100;
 
-// The zone's row as (coordinate, coefficient) pairs: its penetration is row . x - gap.
-std::vector<std::pair<int, double>> ZoneRow(const ZoneTerm& z) {
-  std::vector<std::pair<int, double>> row;
+// A zone's row as (coordinate, coefficient) pairs: its penetration is row . x - gap.
+using Row = std::vector<std::pair<int, double>>;
+
+Row ZoneRow(const ZoneTerm& z) {
+  Row row;
   auto add = [&](int offset, double sign, const std::vector<double>& phi) {
     if (offset < 0 || sign == 0.0) return;
     for (std::size_t i = 0; i < phi.size(); ++i)
@@ -26,8 +30,7 @@ std::vector<std::pair<int, double>> ZoneRow(const ZoneTerm& z) {
   return row;
 }
 
-double Penetration(const std::vector<std::pair<int, double>>& row, double gap,
-                   const Eigen::VectorXd& x) {
+double Penetration(const Row& row, double gap, const Eigen::VectorXd& x) {
   double u = 0.0;
   for (const auto& [i, c] : row) u += c * x[i];
   return u - gap;
@@ -40,11 +43,10 @@ const NormalLaw& LawOf(const SceneModalSystem& system, std::size_t zone) {
 // The Newton step's target from x with the zones `active` closed, each zone's force linearized
 // at its penetration d0 = r . x - g: F ~ K_t (r . x - g) + (F(d0) - K_t d0), so that
 // (diag(omega^2) + sum K_t r r^T) x' = sum (K_t g - (F(d0) - K_t d0)) r. For a linear law the
-// bracket is exactly 0 and x' is the minimum of the closed set's quadratic.
+// bracket is exactly 0 and x' is the minimum of the closed set's quadratic, whatever x.
 // Only the lower triangle is assembled: the factorization reads no other (SimplicialLDLT's Lower),
 // and each entry's terms are summed in the same order as in the full matrix.
-Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
-                                const std::vector<std::vector<std::pair<int, double>>>& rows,
+Eigen::VectorXd SolveWithActive(const SceneModalSystem& system, const std::vector<Row>& rows,
                                 const std::set<std::size_t>& active, const Eigen::VectorXd& x) {
   const int n = system.Size();
   std::vector<Eigen::Triplet<double>> entries;
@@ -77,11 +79,47 @@ Eigen::VectorXd SolveWithActive(const SceneModalSystem& system,
   return ldlt.solve(rhs);
 }
 
+// The same target for linear laws with every omega^2 > 0, in the closed zones' space: with R the
+// closed rows, K their stiffnesses and D = diag(omega^2), x' = D^-1 R^T mu where
+// (K^-1 + R D^-1 R^T) mu = g (Woodbury's identity; mu holds the zones' forces). A dense solve
+// of the closed zones' order instead of a sparse one of the modes': other roundings, so it only
+// finds the closed set (PreloadEquilibrium). Nothing when the zones' matrix is not positive.
+std::optional<Eigen::VectorXd> SolveByCapacitance(const SceneModalSystem& system,
+                                                  const std::vector<Row>& rows,
+                                                  const std::set<std::size_t>& active,
+                                                  const Eigen::VectorXd& x) {
+  const Eigen::VectorXd& omega_squared = system.OmegaSquared();
+  std::vector<std::size_t> closed;
+  for (const std::size_t z : active) {
+    if (Penetration(rows[z], system.Zones()[z].gap_m, x) > 0.0) closed.push_back(z);
+  }
+  const int m = static_cast<int>(closed.size());
+  Eigen::MatrixXd compliance = Eigen::MatrixXd::Zero(system.Size(), m);  // Column a: D^-1 r_a.
+  for (int a = 0; a < m; ++a) {
+    for (const auto& [i, c] : rows[closed[a]]) compliance(i, a) += c / omega_squared[i];
+  }
+  Eigen::MatrixXd capacitance(m, m);
+  Eigen::VectorXd gaps(m);
+  for (int a = 0; a < m; ++a) {
+    const ZoneTerm& zone = system.Zones()[closed[a]];
+    for (int b = 0; b < m; ++b) {
+      double g_ab = 0.0;
+      for (const auto& [i, c] : rows[closed[b]]) g_ab += c * compliance(i, a);
+      capacitance(a, b) = g_ab;
+    }
+    capacitance(a, a) += 1.0 / zone.law.normal.stiffness;
+    gaps[a] = zone.gap_m;
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(capacitance);
+  if (llt.info() != Eigen::Success) return std::nullopt;
+  return compliance * llt.solve(gaps);
+}
+
 // E(x) = 1/2 sum omega_i^2 x_i^2 + sum_z E_z(r_z . x - g_z), E_z the elastic energy of the
 // zone's normal law, whose minimum is the equilibrium, and its gradient.
 struct Energy {
   const SceneModalSystem& system;
-  const std::vector<std::vector<std::pair<int, double>>>& rows;
+  const std::vector<Row>& rows;
 
   double operator()(const Eigen::VectorXd& x) const {
     double e = 0.5 * system.OmegaSquared().dot(x.cwiseProduct(x));
@@ -119,6 +157,45 @@ bool Converged(const SceneModalSystem& system, const std::set<std::size_t>& clos
   return linear || step.norm() <= 1e-12 * x.norm();
 }
 
+// Newton's method on the convex energy from x = 0 with the preloaded zones closed, damped by
+// backtracking (Armijo) so that the energy decreases at every step: the closed set cannot
+// cycle. With linear laws the energy is piecewise quadratic, and a full step lands on the
+// minimum of the quadratic of its closed set: when that set holds there, it is the equilibrium.
+// A power law's zones need further steps, until a full one moves x by a relative 1e-12.
+// `solve(closed, x)` gives each step's target; nothing when it gives none or when no
+// equilibrium is found within kMaxActiveSetIterations steps.
+template <class Solve>
+std::optional<Eigen::VectorXd> Minimize(const Energy& energy, Solve solve) {
+  const SceneModalSystem& system = energy.system;
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.Size());
+  std::set<std::size_t> closed;
+  for (std::size_t z = 0; z < energy.rows.size(); ++z) {
+    if (system.Zones()[z].gap_m < 0.0) closed.insert(z);
+  }
+  for (int iteration = 0; iteration < kMaxActiveSetIterations; ++iteration) {
+    std::optional<Eigen::VectorXd> next = solve(closed, x);
+    if (!next) return std::nullopt;
+    const Eigen::VectorXd step = *next - x;
+    const double e0 = energy(x), slope = energy.Gradient(x).dot(step);
+    double t = 1.0;
+    while (t > 1e-12 && energy(x + t * step) > e0 + 1e-4 * t * slope) t *= 0.5;
+    if (t < 1.0) *next = x + t * step;
+    x = std::move(*next);
+    const std::set<std::size_t> now = energy.Closed(x);
+    if (t == 1.0 && now == closed && Converged(system, closed, step, x)) return x;
+    closed = now;
+  }
+  return std::nullopt;
+}
+
+// Linear laws on a model without rigid-body modes: their steps may be solved by capacitance.
+bool SolvableByCapacitance(const SceneModalSystem& system) {
+  return (system.OmegaSquared().array() > 0.0).all() &&
+         std::ranges::all_of(system.Zones(), [](const ZoneTerm& z) {
+           return z.law.normal.IsLinear() && z.law.normal.stiffness > 0.0;
+         });
+}
+
 }  // namespace
 
 bool HasPreloadedZones(const SceneModalSystem& system) {
@@ -128,36 +205,44 @@ bool HasPreloadedZones(const SceneModalSystem& system) {
   return false;
 }
 
-// Newton's method on the convex energy, damped by backtracking (Armijo) so that the energy
-// decreases at every step: the closed set cannot cycle. With linear laws the energy is
-// piecewise quadratic, and a full step lands on the minimum of the quadratic of its closed set:
-// when that set holds there, it is the equilibrium. A power law's zones need further steps,
-// until a full one moves x by a relative 1e-12.
-Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
-  std::vector<std::vector<std::pair<int, double>>> rows;
+std::vector<Row> ZoneRows(const SceneModalSystem& system) {
+  std::vector<Row> rows;
   for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
-  const Energy energy{system, rows};
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(system.Size());
-  std::set<std::size_t> closed;
-  for (std::size_t z = 0; z < rows.size(); ++z) {
-    if (system.Zones()[z].gap_m < 0.0) closed.insert(z);
-  }
-  for (int iteration = 0; iteration < kMaxActiveSetIterations; ++iteration) {
-    Eigen::VectorXd next = SolveWithActive(system, rows, closed, x);
-    const Eigen::VectorXd step = next - x;
-    const double e0 = energy(x), slope = energy.Gradient(x).dot(step);
-    double t = 1.0;
-    while (t > 1e-12 && energy(x + t * step) > e0 + 1e-4 * t * slope) t *= 0.5;
-    if (t < 1.0) next = x + t * step;
-    x = std::move(next);
-    const std::set<std::size_t> now = energy.Closed(x);
-    if (t == 1.0 && now == closed && Converged(system, closed, step, x)) return x;
-    closed = now;
-  }
+  return rows;
+}
+
+Eigen::VectorXd PreloadEquilibriumBySparseSteps(const SceneModalSystem& system) {
+  const std::vector<Row> rows = ZoneRows(system);
+  auto sparse_step = [&](const std::set<std::size_t>& closed, const Eigen::VectorXd& x) {
+    return std::optional(SolveWithActive(system, rows, closed, x));
+  };
+  if (auto x = Minimize(Energy{system, rows}, sparse_step)) return *std::move(x);
   throw InputError(
       "zones with a negative gap (preloaded contacts): the static equilibrium was "
       "not found within " +
       std::to_string(kMaxActiveSetIterations) + " Newton steps");
+}
+
+// With linear laws the equilibrium is the minimum of its closed set's quadratic, which depends
+// on that set only (SolveWithActive gives it bit for bit from any x at which the set is
+// closed). The set is found by steps solved by capacitance, then the minimum solved once by the
+// sparse factorization: the vector the sparse steps end on, at one factorization instead of one
+// per step. Should the set not hold at that minimum (a zone at zero penetration to rounding),
+// and for power laws, every step is the sparse one.
+Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
+  if (SolvableByCapacitance(system)) {
+    const std::vector<Row> rows = ZoneRows(system);
+    const Energy energy{system, rows};
+    auto capacitance_step = [&](const std::set<std::size_t>& closed, const Eigen::VectorXd& x) {
+      return SolveByCapacitance(system, rows, closed, x);
+    };
+    if (const auto found = Minimize(energy, capacitance_step)) {
+      const std::set<std::size_t> closed = energy.Closed(*found);
+      Eigen::VectorXd x = SolveWithActive(system, rows, closed, *found);
+      if (energy.Closed(x) == closed) return x;
+    }
+  }
+  return PreloadEquilibriumBySparseSteps(system);
 }
 
 }  // namespace shockmap

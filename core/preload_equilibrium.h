@@ -19,7 +19,14 @@ bool HasPreloadedZones(const SceneModalSystem& system);
 // A starting as the zones with g_z < 0 and updated to {z : r_z . x > g_z} until it holds: Newton's
 // method on the energy of the penalty springs, damped so that the energy always decreases.
 // Throws InputError when the model has a rigid-body mode the contacts do not hold, or when no
-// equilibrium is found within 100 steps.
+// equilibrium is found within 100 steps. With linear laws on a model without rigid-body modes,
+// the closed set is found by steps solved in the closed zones' space and the equilibrium then
+// solved once in the modes' space: the vector PreloadEquilibriumBySparseSteps returns, bit for
+// bit, at one sparse factorization instead of one per step.
 Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system);
+
+// The same Newton's method with every step a sparse LDLT of the modes' matrix above (what
+// PreloadEquilibrium does for power laws); the same exceptions.
+Eigen::VectorXd PreloadEquilibriumBySparseSteps(const SceneModalSystem& system);
 
 }  // namespace shockmap

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
+#include "core/preload_equilibrium.h"
 #include "core/scene_model.h"
 #include "core/transient_run.h"
 
@@ -266,9 +268,9 @@ TEST(SceneEngine, LocalBendingStiffnessIsThreeEiOverHCubedOnACantilever) {
   EXPECT_NEAR(LocalBendingStiffness(b, 1.0), free_tip + 1e5, 1e-9 * (free_tip + 1e5));
 }
 
-TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
-  // A 19-pin bundle in a wrapper, both planes: 400 coordinates, under the dense limit, so the
-  // model's bound is the dense one.
+// A 19-pin bundle in a wrapper, both planes, its neighbours in contact at three heights each,
+// the zones between pins i and j with the gap `gap(i, j)`; pin 9 at the centre.
+Scene NineteenPinBundle(const std::function<double(std::size_t, std::size_t)>& gap) {
   Scene scene;
   scene.planes = BendingPlanes::kBoth;
   scene.beams.push_back(Cantilever("wrapper"));
@@ -298,10 +300,17 @@ TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
                                .height_m = h,
                                .normal_y = dy / d,
                                .normal_z = dz / d,
+                               .gap_m = gap(i, j),
                                .stiffness_n_per_m = 1e6});
       }
     }
   }
+  return scene;
+}
+
+TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
+  // 400 coordinates, under the dense limit, so the model's bound is the dense one.
+  Scene scene = NineteenPinBundle([](std::size_t, std::size_t) { return 0.0; });
   scene.solver.r_ftrunc = 300.0;
   const SceneModel model = BuildSceneModel(scene);
   ASSERT_LE(model.system->Size(), 600);
@@ -310,6 +319,30 @@ TEST(SceneEngine, PowerIterationBoundAgreesWithTheDenseOne) {
       model.system->StiffestOmegaSquared(model.system->Contacts().BoundStiffnesses());
   EXPECT_LE(iterated, dense * (1 + 1e-12));
   EXPECT_GT(iterated, dense * (1 - 1e-3));
+}
+
+// A bundle swollen at its centre: the centre pin's wires preloaded, by 40 um and 5 um by turns,
+// push the first ring onto the second, whose wires have a gap of 0.1 um. With linear laws the
+// closed set is found in the zones' space and the equilibrium solved once: the same vector, bit for
+// bit, as when every Newton step is a sparse factorization of the modes' matrix.
+TEST(SceneEngine, PreloadedBundleEquilibriumIsTheSparseStepsOneBitForBit) {
+  Scene scene = NineteenPinBundle([](std::size_t i, std::size_t j) {
+    if (i != 9 && j != 9) return 1e-7;
+    return (i + j) % 2 == 0 ? -4e-5 : -5e-6;
+  });
+  scene.solver.r_ftrunc = 300.0;
+  const SceneModel model = BuildSceneModel(scene);
+  const Eigen::VectorXd sparse_steps = PreloadEquilibriumBySparseSteps(*model.system);
+  EXPECT_TRUE(model.x0 == sparse_steps) << (model.x0 - sparse_steps).cwiseAbs().maxCoeff();
+
+  int preloaded_opened = 0, gapped_closed = 0;
+  for (const ZoneTerm& z : model.system->Zones()) {
+    const double u = ZoneRow(z, model.system->Size(), z.normal_y, z.normal_z).dot(model.x0);
+    preloaded_opened += z.gap_m < 0.0 && u <= z.gap_m;
+    gapped_closed += z.gap_m > 0.0 && u > z.gap_m;
+  }
+  EXPECT_GT(preloaded_opened, 0);
+  EXPECT_GT(gapped_closed, 0);
 }
 
 }  // namespace
