@@ -30,6 +30,12 @@ Row ZoneRow(const ZoneTerm& z) {
   return row;
 }
 
+std::vector<Row> ZoneRows(const SceneModalSystem& system) {
+  std::vector<Row> rows;
+  for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
+  return rows;
+}
+
 double Penetration(const Row& row, double gap, const Eigen::VectorXd& x) {
   double u = 0.0;
   for (const auto& [i, c] : row) u += c * x[i];
@@ -79,20 +85,17 @@ Eigen::VectorXd SolveWithActive(const SceneModalSystem& system, const std::vecto
   return ldlt.solve(rhs);
 }
 
-// The same target for linear laws with every omega^2 > 0, in the closed zones' space: with R the
-// closed rows, K their stiffnesses and D = diag(omega^2), x' = D^-1 R^T mu where
-// (K^-1 + R D^-1 R^T) mu = g (Woodbury's identity; mu holds the zones' forces). A dense solve
-// of the closed zones' order instead of a sparse one of the modes': other roundings, so it only
-// finds the closed set (PreloadEquilibrium). Nothing when the zones' matrix is not positive.
+// The same target for linear laws with every omega^2 > 0, when every zone of `closed` is closed
+// at the linearization point (as Minimize's sets are): with R the closed rows, K their
+// stiffnesses and D = diag(omega^2), x' = D^-1 R^T mu where (K^-1 + R D^-1 R^T) mu = g
+// (Woodbury's identity; mu holds the zones' forces). A dense solve of the closed zones' order
+// instead of a sparse one of the modes': other roundings, so it only finds the closed set
+// (PreloadEquilibrium). Nothing when the zones' matrix is not positive.
 std::optional<Eigen::VectorXd> SolveByCapacitance(const SceneModalSystem& system,
                                                   const std::vector<Row>& rows,
-                                                  const std::set<std::size_t>& active,
-                                                  const Eigen::VectorXd& x) {
+                                                  const std::set<std::size_t>& zones) {
   const Eigen::VectorXd& omega_squared = system.OmegaSquared();
-  std::vector<std::size_t> closed;
-  for (const std::size_t z : active) {
-    if (Penetration(rows[z], system.Zones()[z].gap_m, x) > 0.0) closed.push_back(z);
-  }
+  const std::vector<std::size_t> closed(zones.begin(), zones.end());
   const int m = static_cast<int>(closed.size());
   Eigen::MatrixXd compliance = Eigen::MatrixXd::Zero(system.Size(), m);  // Column a: D^-1 r_a.
   for (int a = 0; a < m; ++a) {
@@ -205,12 +208,6 @@ bool HasPreloadedZones(const SceneModalSystem& system) {
   return false;
 }
 
-std::vector<Row> ZoneRows(const SceneModalSystem& system) {
-  std::vector<Row> rows;
-  for (const ZoneTerm& z : system.Zones()) rows.push_back(ZoneRow(z));
-  return rows;
-}
-
 Eigen::VectorXd PreloadEquilibriumBySparseSteps(const SceneModalSystem& system) {
   const std::vector<Row> rows = ZoneRows(system);
   auto sparse_step = [&](const std::set<std::size_t>& closed, const Eigen::VectorXd& x) {
@@ -233,8 +230,8 @@ Eigen::VectorXd PreloadEquilibrium(const SceneModalSystem& system) {
   if (SolvableByCapacitance(system)) {
     const std::vector<Row> rows = ZoneRows(system);
     const Energy energy{system, rows};
-    auto capacitance_step = [&](const std::set<std::size_t>& closed, const Eigen::VectorXd& x) {
-      return SolveByCapacitance(system, rows, closed, x);
+    auto capacitance_step = [&](const std::set<std::size_t>& closed, const Eigen::VectorXd&) {
+      return SolveByCapacitance(system, rows, closed);
     };
     if (const auto found = Minimize(energy, capacitance_step)) {
       const std::set<std::size_t> closed = energy.Closed(*found);
