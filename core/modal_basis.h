@@ -6,18 +6,9 @@
 #include <vector>
 
 #include "core/beam_fe.h"
+#include "core/modes.h"
 
 namespace shockmap {
-
-// Columns of `shapes` are the modes in ascending frequency, with shapes^T M shapes = I, so the
-// modal mass is 1 and the modal stiffness is diag(omega^2) (paper eq. 7).
-struct ModalBasis {
-  Eigen::VectorXd omega_rad_s;
-  Eigen::MatrixXd shapes;  // model.Size() x NumModes()
-
-  int NumModes() const { return static_cast<int>(omega_rad_s.size()); }
-  double HighestFrequencyHz() const;
-};
 
 // Solves (K - omega^2 M) phi = 0 (paper eq. 6) and keeps the modes with f <= f_trunc_hz.
 // Each kept mode's sign makes its largest deflection component positive. Every mode's
@@ -32,9 +23,6 @@ ModalBasis ComputeModalBasis(const FeBeamModel& model, double f_trunc_hz);
 // solve's shapes are accurate above it (their omega^2 error eps (omega_max / omega)^2 is
 // 1e-10 there).
 inline constexpr double kFlexibilityFormRatio = 1e-3;
-
-// Flips each column's sign so that its largest component is positive.
-void NormalizeModeSigns(Eigen::MatrixXd& shapes);
 
 // The first `n` modes regardless of frequency (all of them when n exceeds the model size).
 ModalBasis ComputeLowestModes(const FeBeamModel& model, int n);

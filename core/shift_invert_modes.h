@@ -8,7 +8,7 @@
 // shape's Rayleigh quotient in StiffnessForm instead, to about 1e-15).
 
 #include "core/beam_fe.h"
-#include "core/modal_basis.h"
+#include "core/modes.h"
 
 namespace shockmap {
 
