@@ -14,6 +14,7 @@
 #include "formats/json_reader.h"
 #include "reference/analytic_modes.h"
 #include "reference/reference_cost.h"
+#include "validation/psd.h"
 
 namespace shockmap {
 
@@ -303,8 +304,9 @@ void ParseScoring(const Json& value, const std::string& file, const BeamProperti
       p.Fail("scaling", "\"" + scaling + "\" is not a scaling: use \"one_sided\" or \"two_sided\"");
     s.psd.one_sided = scaling == "one_sided";
     p.Finish();
-    in_range(p, "n_samples", s.psd.n_samples, {16.0, false, 1 << 22});
-    in_range(p, "zero_padding_factor", s.psd.zero_padding_factor, {1.0, false, 64.0});
+    in_range(p, "n_samples", s.psd.n_samples, {kMinPsdSamples, false, kMaxPsdSamples});
+    in_range(p, "zero_padding_factor", s.psd.zero_padding_factor,
+             {1.0, false, kMaxZeroPaddingFactor});
   }
   if (const Json* shocks = r.Get("shocks")) {
     JsonObjectReader sh(*shocks, file, r.PathOf("shocks"));

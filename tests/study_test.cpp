@@ -28,6 +28,7 @@
 #include "engine/worker_pool.h"
 #include "formats/setting_change.h"
 #include "tests/run_command.h"
+#include "validation/psd.h"
 
 namespace shockmap {
 namespace {
@@ -219,6 +220,36 @@ TEST(StudySpec, ScoringSettingsEnterTheSettingsKeyByTheirValue) {
                                                            "x.json")));
   // The reference does not depend on how SRf reads it.
   EXPECT_EQ(ReferenceKey(plain, plain.points[0]), ReferenceKey(window, window.points[0]));
+}
+
+// A study file's "scoring.psd" takes what the library's PsdOptions takes, at either end of
+// each range: the one range of validation/psd.h.
+TEST(StudySpec, PsdOptionsTakeTheLibrarysRangeAtBothEnds) {
+  auto study_takes = [](const char* key, int value) {
+    const Json json =
+        Json::parse(R"({"name": "x", "scoring": {"psd": {")" + std::string(key) +
+                    "\": " + std::to_string(value) + R"(}}, "grids": [{"rk": 1, "rftrunc": 10}]})");
+    try {
+      ParseStudySpec(json, "x.json");
+      return true;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string("scoring.psd.") + key), std::string::npos)
+          << e.what();
+      return false;
+    }
+  };
+  for (const int n : {kMinPsdSamples - 1, kMinPsdSamples, kMaxPsdSamples, kMaxPsdSamples + 1}) {
+    PsdOptions options;
+    options.n_samples = n;
+    EXPECT_EQ(study_takes("n_samples", n), options.IsValid(nullptr)) << n;
+  }
+  for (const int factor : {0, 1, kMaxZeroPaddingFactor, kMaxZeroPaddingFactor + 1}) {
+    PsdOptions options;
+    options.zero_padding_factor = factor;
+    EXPECT_EQ(study_takes("zero_padding_factor", factor), options.IsValid(nullptr)) << factor;
+  }
+  EXPECT_FALSE(study_takes("n_samples", kMinPsdSamples - 1));
+  EXPECT_TRUE(study_takes("n_samples", kMaxPsdSamples));
 }
 
 // The check enters a reference's key only when it is not the default, so that references

@@ -115,10 +115,18 @@ TEST(PsdOptionsTest, BadOptionsAreRejectedNamingTheField) {
   EXPECT_NE(error.find("window"), std::string::npos) << error;
 
   options = PsdOptions{};
-  options.n_samples = 1 << 28;
-  options.zero_padding_factor = 16;
+  options.n_samples = kMaxPsdSamples + 1;
   EXPECT_FALSE(options.IsValid(&error));
-  EXPECT_NE(error.find("zero_padding_factor"), std::string::npos) << error;
+  EXPECT_NE(error.find("n_samples = 4194305: must be a whole number from 16 to 4194304"),
+            std::string::npos)
+      << error;
+
+  options = PsdOptions{};
+  options.zero_padding_factor = kMaxZeroPaddingFactor + 1;
+  EXPECT_FALSE(options.IsValid(&error));
+  EXPECT_NE(error.find("zero_padding_factor = 65: must be a whole number from 1 to 64"),
+            std::string::npos)
+      << error;
 
   EXPECT_FALSE(options.IsValid(nullptr));  // A null error sink is allowed.
 }

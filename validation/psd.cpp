@@ -16,8 +16,6 @@
 namespace shockmap {
 namespace {
 
-constexpr std::int64_t kMaxFftLength = std::int64_t{1} << 30;
-
 // The FFTW planner keeps global state: every fftw_plan_* and fftw_destroy_plan call in the
 // process must hold this lock. fftw_execute on distinct plans/arrays needs no lock.
 std::mutex& FftwPlannerMutex() {
@@ -76,19 +74,17 @@ bool PsdOptions::IsValid(std::string* error) const {
     }
     return false;
   };
-  if (n_samples < 2) {
-    return fail("n_samples = " + std::to_string(n_samples) + ": must be >= 2");
+  if (n_samples < kMinPsdSamples || n_samples > kMaxPsdSamples) {
+    return fail("n_samples = " + std::to_string(n_samples) + ": must be a whole number from " +
+                std::to_string(kMinPsdSamples) + " to " + std::to_string(kMaxPsdSamples));
   }
-  if (zero_padding_factor < 1) {
-    return fail("zero_padding_factor = " + std::to_string(zero_padding_factor) + ": must be >= 1");
+  if (zero_padding_factor < 1 || zero_padding_factor > kMaxZeroPaddingFactor) {
+    return fail("zero_padding_factor = " + std::to_string(zero_padding_factor) +
+                ": must be a whole number from 1 to " + std::to_string(kMaxZeroPaddingFactor));
   }
   if (window != PsdWindow::kRectangular && window != PsdWindow::kHann) {
     return fail("window = " + std::to_string(static_cast<int>(window)) +
                 ": must be rectangular or hann");
-  }
-  if (NextPowerOfTwo(std::int64_t{n_samples} * zero_padding_factor) > kMaxFftLength) {
-    return fail("n_samples * zero_padding_factor = " + std::to_string(n_samples) + " * " +
-                std::to_string(zero_padding_factor) + ": FFT length must be <= 2^30");
   }
   return true;
 }

@@ -38,6 +38,13 @@ std::string ToString(PsdWindow window);
 // Inverse of ToString; std::nullopt for any other string (case-sensitive).
 std::optional<PsdWindow> PsdWindowFromString(std::string_view name);
 
+// The one range of each PSD option, which PsdOptions::IsValid and a study file's "scoring.psd"
+// both take: at least 16 points over the window, at most 2^22 (with the largest padding an FFT
+// of 2^28 doubles, 2 GiB, within the int lengths FFTW takes).
+inline constexpr int kMinPsdSamples = 16;
+inline constexpr int kMaxPsdSamples = 1 << 22;
+inline constexpr int kMaxZeroPaddingFactor = 64;
+
 struct PsdOptions {
   // Resampled points over the window. Nyquist is n_samples / (2 T): over a 0.3 s window 4096
   // points reach 6.8 kHz ~ 350 f1, above the shock frequency sqrt(R_k) f1 for R_k <= 1e5.
@@ -54,7 +61,8 @@ struct PsdOptions {
 
   // FFT length N: the next power of two >= n_samples * zero_padding_factor. Requires IsValid().
   int FftLength() const;
-  // n_samples >= 2, zero_padding_factor >= 1, known window, N <= 2^30 (FFTW takes an int).
+  // n_samples in [kMinPsdSamples, kMaxPsdSamples], zero_padding_factor in [1,
+  // kMaxZeroPaddingFactor], a known window; else false, with what is allowed in `error`.
   bool IsValid(std::string* error) const;
   bool operator==(const PsdOptions&) const = default;
 };
