@@ -9,11 +9,6 @@
 
 namespace shockmap {
 
-// The criteria a scene's zones are advised and checked with (`advise SCENE.json`,
-// `check-advice`): the mode-resolution study's boundary with the first shock's peak force within
-// 10 % (PFr >= 0.9), the statistic a zone is sized on (docs/physics.md §5.1).
-inline constexpr const char* kSceneCriteria = "studies/baselines/modes_fig4_peak_force.json";
-
 // The recorded outcomes of `check-advice` that `advise SCENE.json` reads (formats/
 // advice_check_outcomes.h): the shipped bundles' advice checked on their ensembles.
 inline constexpr const char* kAdviceChecks = "studies/baselines/advice_checks.json";

@@ -13,7 +13,6 @@
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
 #include "db/schema.h"
-#include "db/stored_json.h"
 #include "db/study_database.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
@@ -22,6 +21,7 @@
 #include "views/setting_names.h"
 #include "views/sizing_plots.h"
 #include "views/sizing_tables.h"
+#include "workflows/stored_ensemble_scene.h"
 
 namespace shockmap {
 namespace {
@@ -166,15 +166,6 @@ void Size(const SizingFlags& f) {
 }
 
 }  // namespace
-
-Scene StoredEnsembleScene(const StoredEnsemble& stored, const std::string& database_path,
-                          const std::string& study) {
-  return ReadStoredJson({database_path, "study " + study, "spec_json"}, stored.spec_json,
-                        [&](const nlohmann::json& spec) {
-                          return ParseScene(spec.at("scene_json"),
-                                            database_path + ": scene of study " + study);
-                        });
-}
 
 void AddSizingCommand(CLI::App& app) {
   auto flags = std::make_shared<SizingFlags>();

@@ -23,6 +23,7 @@
 #include "views/fig4_plot.h"
 #include "views/scene_advice_summary.h"
 #include "views/scored_points.h"
+#include "workflows/advice_check_ladder.h"
 
 namespace shockmap {
 namespace {

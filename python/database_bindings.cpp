@@ -42,6 +42,8 @@ py::object CellObject(const TableCell& cell) {
       cell);
 }
 
+}  // namespace
+
 // {"columns": [...], "rows": [(...), ...]}: what pandas.DataFrame.from_records takes.
 py::dict TableDict(const Table& table) {
   py::list rows;
@@ -55,6 +57,8 @@ py::dict TableDict(const Table& table) {
   d["rows"] = std::move(rows);
   return d;
 }
+
+namespace {
 
 // A Python int for a message: its digits, or its size when they would be too many to read.
 std::string IntegerShown(const py::handle& value) {

@@ -15,4 +15,5 @@ PYBIND11_MODULE(_shockmap, m) {
   shockmap::python::BindScene(m);
   shockmap::python::BindStudy(m);
   shockmap::python::BindDatabase(m);
+  shockmap::python::BindWorkflows(m);
 }

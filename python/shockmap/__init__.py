@@ -20,8 +20,9 @@ from ._shockmap import Comparison, DatabaseError, InputError, SceneRun as _Scene
 
 __version__ = _shockmap.__version__
 __all__ = [
-    "Comparison", "DatabaseError", "InputError", "Scene", "SceneRun", "Study", "compare",
-    "criteria", "point", "query", "reference", "results", "simulate", "sizing",
+    "Comparison", "DatabaseError", "InputError", "Scene", "SceneRun", "Study", "check_advice",
+    "compare", "criteria", "point", "query", "reference", "report", "results", "simulate",
+    "sizing",
 ]
 
 DEFAULT_DATABASE = "shockmap.db"
@@ -257,17 +258,23 @@ def results(db=DEFAULT_DATABASE, study=None):
     return query(db, f"SELECT * FROM {view} WHERE study = ?1 ORDER BY {order}", name)
 
 
-def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
-    """The validity criteria of a study of the paper's problem, one row per R_k, as `criteria
-    derive` derives them; thresholds (err_max=0.1, srf_min=0.9, ...) over the study's own."""
+def _thresholds(keywords):
+    """Thresholds given as keywords (err_max=0.1, srf_min=0.9) by score name (err, srf)."""
     given = {}
-    for key, value in thresholds.items():
+    for key, value in keywords.items():
         for suffix in ("_max", "_min"):
             if key.endswith(suffix):
                 given[key[: -len(suffix)]] = float(value)
                 break
         else:
             raise InputError(f"{key}: not a threshold; give NAME_max or NAME_min (err_max, srf_min)")
+    return given
+
+
+def criteria(db=DEFAULT_DATABASE, study=None, **thresholds):
+    """The validity criteria of a study of the paper's problem, one row per R_k, as `criteria
+    derive` derives them; thresholds (err_max=0.1, srf_min=0.9, ...) over the study's own."""
+    given = _thresholds(thresholds)
     data = _json.loads(_shockmap.criteria_json(_database(db), _text("study", study or ""), given))
     frame = _pd.DataFrame(data["boundary"])
     frame.attrs["criteria"] = data
@@ -291,3 +298,42 @@ def point(db, study, point_id):
     """A stored point of the paper's problem computed again against its stored reference."""
     return _shockmap.point(_database(db), _text("study", study),
                            _integer("point_id", point_id, 1, _ID_MAX))
+
+
+def report(db=DEFAULT_DATABASE, study=None, *, out, progress=False, **thresholds):
+    """The HTML report of a stored study into the folder `out`, as `shockmap report`; returns
+    the path of its index.html. thresholds (err_max=0.1, srf_min=0.9, ...) over the study's own;
+    progress=True prints what is drawn. A report refused half-way leaves no folder it created."""
+    return _shockmap.report(_database(db), _text("study", study or ""), _thresholds(thresholds),
+                            _text("out", out), bool(progress))
+
+
+def check_advice(study, db=DEFAULT_DATABASE, *, criteria=None, members=None, window_s=None,
+                 states=None, jobs=None, quantile=None, tolerance=None, max_rungs=None,
+                 record=None, write_study=None, progress=False):
+    """The advice for an ensemble study's scene checked on its members, as `shockmap
+    check-advice STUDY`: the ensemble run into `db` at the advised truncations and dt, a third
+    of them and 3, 9, ... times until each zone family's sizing quantile stops moving.
+
+    Options left None take the command line's defaults (criteria: SCENE_CRITERIA from the
+    working folder; members and window_s: the study file's; every clearance state); each given
+    one is checked as its flag is. Returns a dict: the advice (dt_ratio, r_ftrunc per beam,
+    warnings) and, unless write_study names a file for the ladder's study instead, the check:
+    verdict (text), table (DataFrame, one row per state and zone family), factors,
+    cpu_s_per_member, converged, undecided. record: an outcomes file a decided check is added
+    to. Ctrl-C stops it as it stops `check-advice`: the members computed are stored."""
+    if states is not None:
+        states = [_text("states", state) for state in ([states] if isinstance(states, str)
+                                                        else states)]
+    result = _shockmap.check_advice(
+        _text("study", study), _database(db), None if criteria is None else _text("criteria",
+                                                                                 criteria),
+        members, window_s, states or [], jobs, quantile, tolerance, max_rungs,
+        "" if record is None else _text("record", record),
+        "" if write_study is None else _text("write_study", write_study), bool(progress))
+    if "table" in result:
+        result["table"] = _frame(result["table"])
+    return result
+
+
+SCENE_CRITERIA = _shockmap.SCENE_CRITERIA

@@ -5,7 +5,7 @@ Runs release the GIL; bad input raises InputError with the command line's messag
 """
 
 import os
-from typing import Any, Callable, Dict, List, Literal, Mapping, Optional, Union
+from typing import Any, Callable, Dict, List, Literal, Mapping, Optional, Sequence, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -267,3 +267,36 @@ def reference(db: PathLike, reference_id: int, scene: bool = False) -> Dict[str,
 
 def point(db: PathLike, study: str, point_id: int) -> Comparison:
     """A stored point computed again against its stored reference (as `shockmap export point`)."""
+
+SCENE_CRITERIA: str
+
+def report(
+    db: PathLike = "shockmap.db",
+    study: Optional[str] = None,
+    *,
+    out: PathLike,
+    progress: bool = False,
+    **thresholds: float,
+) -> str:
+    """The HTML report of a stored study into `out`, as `shockmap report`; returns the path of
+    its index.html. thresholds (err_max=0.1, ...) over the study's own."""
+
+def check_advice(
+    study: PathLike,
+    db: PathLike = "shockmap.db",
+    *,
+    criteria: Optional[PathLike] = None,
+    members: Optional[int] = None,
+    window_s: Optional[float] = None,
+    states: Union[None, str, Sequence[str]] = None,
+    jobs: Optional[int] = None,
+    quantile: Optional[float] = None,
+    tolerance: Optional[float] = None,
+    max_rungs: Optional[int] = None,
+    record: Optional[PathLike] = None,
+    write_study: Optional[PathLike] = None,
+    progress: bool = False,
+) -> Dict[str, Any]:
+    """The advice for an ensemble study's scene checked on its members, as `shockmap
+    check-advice`: dt_ratio, r_ftrunc (per beam), warnings, and the check's verdict, table
+    (DataFrame), factors, cpu_s_per_member, converged, undecided (not when write_study)."""

@@ -1,0 +1,152 @@
+// The workflows of workflows/: a stored study's HTML report and the advice checked on an
+// ensemble, each one library call with the GIL released, as `shockmap report` and
+// `shockmap check-advice` run them.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/input_error.h"
+#include "engine/stop_request.h"
+#include "python/bindings.h"
+#include "python/interrupted_run.h"
+#include "workflows/advice_check_ladder.h"
+#include "workflows/study_report.h"
+
+namespace shockmap::python {
+namespace {
+
+// With `progress`, each line the workflow tells is printed by Python's print (the GIL taken for
+// it); without, nothing is told.
+WorkflowLog PrintedLog(bool progress) {
+  WorkflowLog log;
+  if (!progress) return log;
+  log.say = [](const std::string& line) {
+    const py::gil_scoped_acquire gil;
+    py::print(line);
+  };
+  log.warn = [](const std::string& line) {
+    const py::gil_scoped_acquire gil;
+    py::print("warning: " + line);
+  };
+  return log;
+}
+
+std::string Report(const std::string& database_path, const std::string& study,
+                   const std::map<std::string, double, std::less<>>& thresholds,
+                   const std::string& out, bool progress) {
+  const StudyReportRequest request{database_path, study, thresholds, out, "out"};
+  const WorkflowLog log = PrintedLog(progress);
+  py::gil_scoped_release release;
+  return WriteStudyReport(request, log).string();
+}
+
+// `value` within its bounds (strict or not), else InputError naming it as Python spells it.
+void RequireIn(const char* name, double value, double low, bool low_strict, double high,
+               bool high_strict) {
+  const bool above_low = low_strict ? value > low : value >= low;
+  const bool below_high = high_strict ? value < high : value <= high;
+  if (!(above_low && below_high)) {
+    throw InputError(fmt::format("{}: {:g} is outside {}{:g}, {:g}{}", name, value,
+                                 low_strict ? "(" : "[", low, high, high_strict ? ")" : "]"));
+  }
+}
+
+py::dict CheckDict(const AdviceCheckLadder& ladder, const AdviceCheckRequest& request) {
+  py::dict d;
+  d["dt_ratio"] = ladder.advice.dt_ratio;
+  py::dict truncations;
+  for (const BeamAdvice& b : ladder.advice.beams) truncations[py::str(b.name)] = b.r_ftrunc;
+  d["r_ftrunc"] = truncations;
+  d["warnings"] = ladder.advice.warnings;
+  if (!ladder.check) return d;
+  const AdviceCheck& check = *ladder.check;
+  d["verdict"] = AdviceVerdict(check, request.sizing.quantile);
+  d["table"] = TableDict(AdviceCheckTable(check));
+  d["factors"] = check.factors;
+  d["cpu_s_per_member"] = check.cpu_s_per_member;
+  d["converged"] = check.converged.has_value();
+  d["undecided"] = check.undecided;
+  return d;
+}
+
+// The options left None take the command line's defaults; those given are checked as its flags
+// are, by the same bounds.
+struct CheckAdviceArguments {
+  std::optional<int> members, jobs, max_rungs;
+  std::optional<double> window_s, quantile, tolerance;
+};
+
+AdviceCheckRequest CheckedRequest(AdviceCheckRequest request, const CheckAdviceArguments& a) {
+  if (a.members) RequireIn("members", *a.members, 1.0, false, kMaxLadderMembers, false);
+  if (a.window_s) RequireIn("window_s", *a.window_s, 0.0, true, kMaxLadderWindowS, false);
+  if (a.jobs) RequireIn("jobs", *a.jobs, 1.0, false, 1024.0, false);
+  if (a.max_rungs)
+    RequireIn("max_rungs", *a.max_rungs, kFirstLadderRungs, false, kMaxLadderRungs, false);
+  if (a.quantile) RequireIn("quantile", *a.quantile, 0.0, true, 1.0, true);
+  if (a.tolerance) RequireIn("tolerance", *a.tolerance, 0.0, false, 1.0, false);
+  request.members = a.members.value_or(request.members);
+  request.window_s = a.window_s.value_or(request.window_s);
+  request.jobs = a.jobs.value_or(request.jobs);
+  request.max_rungs = a.max_rungs.value_or(request.max_rungs);
+  request.sizing.quantile = a.quantile.value_or(request.sizing.quantile);
+  request.sizing.tolerance = a.tolerance.value_or(request.sizing.tolerance);
+  request.states_name = "states";
+  return request;
+}
+
+py::dict CheckAdvice(const AdviceCheckRequest& request, bool progress) {
+  const WorkflowLog log = PrintedLog(progress);
+  AdviceCheckLadder ladder;
+  int stop_signal = 0;  // The run's, or one that came after its last check.
+  {
+    py::gil_scoped_release release;
+    const StopHandlersDuringRun stop_handlers;
+    ladder = CheckAdviceOnMembers(request, log);
+    if (ladder.check && !request.record.empty()) RecordAdviceCheck(request, ladder, log);
+    stop_signal = ladder.stop_signal != 0 ? ladder.stop_signal : StopSignal();
+  }
+  RaiseStop(stop_signal);
+  if (ladder.stop_signal != 0) {
+    ThrowInterrupted(fmt::format(
+        "check_advice: stopped by {}: {} of the {} members to compute are stored; call "
+        "check_advice again to resume",
+        SignalName(ladder.stop_signal), ladder.members_computed, ladder.members_to_compute));
+  }
+  return CheckDict(ladder, request);
+}
+
+}  // namespace
+
+void BindWorkflows(py::module_& m) {
+  m.def("report", &Report, py::arg("db"), py::arg("study"), py::arg("thresholds"), py::arg("out"),
+        py::arg("progress"));
+  m.def(
+      "check_advice",
+      [](const std::string& study, const std::string& db, std::optional<std::string> criteria,
+         std::optional<int> members, std::optional<double> window_s,
+         std::vector<std::string> states, std::optional<int> jobs, std::optional<double> quantile,
+         std::optional<double> tolerance, std::optional<int> max_rungs, const std::string& record,
+         const std::string& write_study, bool progress) {
+        AdviceCheckRequest request;
+        request.study_file = study;
+        request.database_path = db;
+        if (criteria) request.criteria_file = *criteria;
+        request.states = std::move(states);
+        request.record = record;
+        request.write_study = write_study;
+        request.progress_lines = progress;
+        return CheckAdvice(CheckedRequest(std::move(request), {members, jobs, max_rungs, window_s,
+                                                               quantile, tolerance}),
+                           progress);
+      },
+      py::arg("study"), py::arg("db"), py::arg("criteria"), py::arg("members"), py::arg("window_s"),
+      py::arg("states"), py::arg("jobs"), py::arg("quantile"), py::arg("tolerance"),
+      py::arg("max_rungs"), py::arg("record"), py::arg("write_study"), py::arg("progress"));
+  m.attr("SCENE_CRITERIA") = kSceneCriteria;
+}
+
+}  // namespace shockmap::python
