@@ -12,6 +12,7 @@
 #include "db/study_database.h"
 #include "engine/stop_request.h"
 #include "formats/table_output.h"
+#include "views/advice_check_text.h"
 #include "workflows/advice_check_ladder.h"
 
 namespace shockmap {

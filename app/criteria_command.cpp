@@ -4,15 +4,17 @@
 #include <iostream>
 #include <memory>
 
+#include "analysis/baseline_check.h"
+#include "analysis/scored_points.h"
 #include "app/exit_codes.h"
 #include "app/flag_checks.h"
 #include "app/thresholds.h"
 #include "core/input_error.h"
 #include "db/study_database.h"
+#include "formats/criteria_json.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "views/criteria_report.h"
-#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {

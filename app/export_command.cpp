@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "analysis/scored_points.h"
 #include "app/flag_checks.h"
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
@@ -19,7 +20,6 @@
 #include "formats/output_file.h"
 #include "formats/study_file.h"
 #include "formats/table_output.h"
-#include "views/scored_points.h"
 #include "views/signal_csv.h"
 
 namespace shockmap {

@@ -3,11 +3,11 @@
 #include <iostream>
 #include <memory>
 
+#include "analysis/scored_points.h"
 #include "app/flag_checks.h"
 #include "app/thresholds.h"
 #include "db/study_database.h"
 #include "formats/output_file.h"
-#include "views/scored_points.h"
 #include "views/validity_map.h"
 
 namespace shockmap {

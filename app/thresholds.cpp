@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
+#include "analysis/study_thresholds.h"
 #include "app/flag_checks.h"
-#include "views/study_thresholds.h"
 
 namespace shockmap {
 

@@ -22,7 +22,7 @@ struct ThresholdFlags {
 void AddThresholdFlags(CLI::App* command, ThresholdFlags& flags);
 
 // The criteria options of the stored `study` with the flags given over its own thresholds
-// (views/study_thresholds.h).
+// (analysis/study_thresholds.h).
 CriteriaOptions ThresholdsFor(const ThresholdFlags& flags, const std::string& database_path,
                               const std::string& study);
 

@@ -6,6 +6,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "analysis/cost_front.h"
+#include "analysis/scored_points.h"
 #include "app/flag_checks.h"
 #include "app/shared_data.h"
 #include "app/thresholds.h"
@@ -13,16 +15,15 @@
 #include "db/report_queries.h"
 #include "db/study_database.h"
 #include "formats/advice_check_outcomes.h"
+#include "formats/criteria_json.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/scene_file.h"
 #include "formats/study_spec.h"
 #include "views/advice_summary.h"
 #include "views/cost_front.h"
-#include "views/criteria_report.h"
 #include "views/fig4_plot.h"
 #include "views/scene_advice_summary.h"
-#include "views/scored_points.h"
 #include "workflows/advice_check_ladder.h"
 
 namespace shockmap {

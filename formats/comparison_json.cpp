@@ -1,15 +1,11 @@
 #include "formats/comparison_json.h"
 
 #include "compare/output_columns.h"
+#include "formats/json_or_null.h"
 #include "formats/output_values.h"
 
 namespace shockmap {
 namespace {
-
-template <typename T>
-nlohmann::json OrNull(const std::optional<T>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
 
 nlohmann::json FirstShock(const std::vector<Shock>& shocks) {
   return shocks.empty() ? nlohmann::json(nullptr) : ShockToJson(shocks.front());

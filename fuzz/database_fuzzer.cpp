@@ -33,9 +33,10 @@
 #include "formats/study_file.h"
 #include "formats/study_spec.h"
 #include "validation/advice.h"
+#include "analysis/cost_front.h"
 #include "views/cost_front.h"
-#include "views/ensemble_sizing.h"
-#include "views/scored_points.h"
+#include "analysis/ensemble_sizing.h"
+#include "analysis/scored_points.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 

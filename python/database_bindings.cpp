@@ -9,22 +9,22 @@
 #include <memory>
 #include <string>
 
+#include "analysis/ensemble_sizing.h"
+#include "analysis/scored_points.h"
+#include "analysis/study_thresholds.h"
 #include "db/ensemble_members.h"
 #include "db/read_only_query.h"
 #include "db/report_queries.h"
 #include "db/schema.h"
 #include "db/stored_signals.h"
+#include "formats/criteria_json.h"
 #include "formats/study_file.h"
 #include "python/bindings.h"
 #include "python/signal_arrays.h"
 #include "records/canonical_records.h"
 #include "records/ensemble_records.h"
 #include "records/scene_records.h"
-#include "views/criteria_report.h"
-#include "views/ensemble_sizing.h"
-#include "views/scored_points.h"
 #include "views/sizing_tables.h"
-#include "views/study_thresholds.h"
 
 namespace shockmap::python {
 namespace {

@@ -13,6 +13,7 @@
 #include "engine/stop_request.h"
 #include "python/bindings.h"
 #include "python/interrupted_run.h"
+#include "views/advice_check_text.h"
 #include "workflows/advice_check_ladder.h"
 #include "workflows/study_report.h"
 

@@ -14,13 +14,13 @@
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
 #include "formats/advice_check_study.h"
+#include "formats/criteria_json.h"
 #include "formats/ensemble_study_spec.h"
 #include "formats/scene_file.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 #include "validation/scene_advice.h"
-#include "views/advice_check.h"
-#include "views/criteria_report.h"
+#include "views/advice_check_text.h"
 
 namespace shockmap {
 namespace {

@@ -15,7 +15,7 @@
 #include "engine/study_run.h"
 #include "formats/study_file.h"
 #include "views/advice_summary.h"
-#include "views/scored_points.h"
+#include "analysis/scored_points.h"
 
 namespace shockmap {
 namespace {

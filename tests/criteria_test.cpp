@@ -11,16 +11,17 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "analysis/scored_points.h"
 #include "compare/score_spread.h"
 #include "core/input_error.h"
 #include "db/read_only_query.h"
 #include "db/sqlite_handle.h"
+#include "formats/criteria_json.h"
 #include "tests/run_command.h"
 #include "validation/advice.h"
 #include "validation/validity_criteria.h"
 #include "views/criteria_report.h"
 #include "views/map_grid.h"
-#include "views/scored_points.h"
 
 namespace shockmap {
 namespace {

@@ -18,7 +18,7 @@
 #include "formats/advice_check_outcomes.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
-#include "views/criteria_report.h"
+#include "formats/criteria_json.h"
 #include "views/scene_advice_summary.h"
 
 namespace shockmap {

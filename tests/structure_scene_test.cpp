@@ -21,7 +21,7 @@
 #include "run_command.h"
 #include "temp_dir.h"
 #include "validation/scene_advice.h"
-#include "views/criteria_report.h"
+#include "formats/criteria_json.h"
 
 namespace shockmap {
 namespace {

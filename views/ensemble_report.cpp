@@ -14,7 +14,7 @@
 #include "db/report_queries.h"
 #include "db/stored_json.h"
 #include "formats/advice_check_study.h"
-#include "views/advice_check.h"
+#include "views/advice_check_text.h"
 #include "views/html_report.h"
 #include "views/html_text.h"
 #include "views/setting_names.h"

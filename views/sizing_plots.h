@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/scene.h"
-#include "views/ensemble_sizing.h"
+#include "analysis/ensemble_sizing.h"
 
 namespace shockmap {
 

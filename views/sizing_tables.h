@@ -12,7 +12,7 @@
 
 #include "core/scene.h"
 #include "db/read_only_query.h"
-#include "views/ensemble_sizing.h"
+#include "analysis/ensemble_sizing.h"
 
 namespace shockmap {
 

@@ -17,8 +17,8 @@
 #include "formats/study_file.h"
 #include "formats/table_output.h"
 #include "views/map_grid.h"
-#include "views/scored_points.h"
-#include "views/study_thresholds.h"
+#include "analysis/scored_points.h"
+#include "analysis/study_thresholds.h"
 
 namespace shockmap {
 namespace {

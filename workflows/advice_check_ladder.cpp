@@ -14,11 +14,12 @@
 #include "engine/study_run.h"
 #include "formats/advice_check_outcomes.h"
 #include "formats/advice_check_study.h"
+#include "formats/criteria_json.h"
 #include "formats/ensemble_study_spec.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/study_file.h"
-#include "views/criteria_report.h"
+#include "views/advice_check_text.h"
 
 namespace shockmap {
 namespace {

@@ -10,12 +10,12 @@
 #include <string_view>
 #include <vector>
 
+#include "analysis/advice_check.h"
+#include "analysis/ensemble_sizing.h"
 #include "db/study_database.h"
 #include "formats/advice_check_outcomes.h"
 #include "formats/scene_file.h"
 #include "validation/scene_advice.h"
-#include "views/advice_check.h"
-#include "views/ensemble_sizing.h"
 #include "workflows/workflow_log.h"
 
 namespace shockmap {

@@ -7,6 +7,9 @@
 #include <set>
 #include <utility>
 
+#include "analysis/ensemble_sizing.h"
+#include "analysis/scored_points.h"
+#include "analysis/study_thresholds.h"
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
@@ -22,11 +25,8 @@
 #include "formats/study_file.h"
 #include "views/comparison_plot.h"
 #include "views/contact_force_map.h"
-#include "views/ensemble_sizing.h"
 #include "views/fig3_svg.h"
 #include "views/html_report.h"
-#include "views/scored_points.h"
-#include "views/study_thresholds.h"
 #include "workflows/stored_ensemble_scene.h"
 
 namespace shockmap {

@@ -17,7 +17,7 @@ namespace shockmap {
 struct StudyReportRequest {
   std::string database_path;
   std::string study;  // "": the database's only study.
-  // Thresholds over the study's own, by score name (views/study_thresholds.h).
+  // Thresholds over the study's own, by score name (analysis/study_thresholds.h).
   std::map<std::string, double, std::less<>> thresholds;
   std::filesystem::path out;
   // How the caller's user spells `out`, for its refusals ("--out", "out").

@@ -1,4 +1,4 @@
-#include "views/ensemble_sizing.h"
+#include "analysis/ensemble_sizing.h"
 
 #include <algorithm>
 #include <cmath>

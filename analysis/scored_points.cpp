@@ -1,4 +1,4 @@
-#include "views/scored_points.h"
+#include "analysis/scored_points.h"
 
 #include <limits>
 #include <variant>

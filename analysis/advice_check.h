@@ -3,7 +3,7 @@
 // the sizing statistics of an advice-check study (formats/advice_check_study.h), one group per
 // clearance state and rung of the ladder, read per zone family an engineer sizes (the hottest
 // wire, duct pad, pin-wrapper contact). The ladder has converged at the coarsest rung every finer
-// rung agrees with at every state and family (views/ensemble_sizing.h Agrees: their intervals of
+// rung agrees with at every state and family (analysis/ensemble_sizing.h Agrees: their intervals of
 // the sizing quantile, widened by the tolerance, overlap); the advice holds at a state and
 // family when its rung agrees with the converged one and every finer rung.
 
@@ -12,8 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "records/table.h"
-#include "views/ensemble_sizing.h"
+#include "analysis/ensemble_sizing.h"
 
 namespace shockmap {
 
@@ -54,15 +53,5 @@ AdviceCheck CheckAdvice(const EnsembleSizing& sizing, const nlohmann::json& rung
 std::optional<bool> RungHolds(const AdviceCheck& check, const FamilyLadder& family, int rung);
 // RungHolds of the advised rung: the advice gives what the converged settings give.
 std::optional<bool> AdviceHolds(const AdviceCheck& check, const FamilyLadder& family);
-
-// The verdict a designer can sign, one paragraph: where the advice held, at what CPU per member
-// and how much cheaper than the converged rung; or where it failed, by how much, and which
-// rung would do.
-std::string AdviceVerdict(const AdviceCheck& check, double quantile);
-
-// Per state and family: every rung's sizing quantile with its interval, coarsest first, the
-// advised and the converged rung named in their column's header ("x 1, advised (N)"), whether
-// the advice holds, whether the coarser rung would, the rung that suffices.
-Table AdviceCheckTable(const AdviceCheck& check);
 
 }  // namespace shockmap

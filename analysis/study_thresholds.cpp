@@ -1,4 +1,4 @@
-#include "views/study_thresholds.h"
+#include "analysis/study_thresholds.h"
 
 #include "db/report_queries.h"
 #include "formats/study_file.h"
