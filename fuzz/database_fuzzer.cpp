@@ -20,6 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/cost_front.h"
+#include "analysis/ensemble_sizing.h"
+#include "analysis/scored_points.h"
 #include "core/input_error.h"
 #include "db/ensemble_members.h"
 #include "db/read_only_query.h"
@@ -33,10 +36,7 @@
 #include "formats/study_file.h"
 #include "formats/study_spec.h"
 #include "validation/advice.h"
-#include "analysis/cost_front.h"
 #include "views/cost_front.h"
-#include "analysis/ensemble_sizing.h"
-#include "analysis/scored_points.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 

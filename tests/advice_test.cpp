@@ -11,11 +11,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "analysis/scored_points.h"
 #include "compare/comparison.h"
 #include "engine/study_run.h"
 #include "formats/study_file.h"
 #include "views/advice_summary.h"
-#include "analysis/scored_points.h"
 
 namespace shockmap {
 namespace {

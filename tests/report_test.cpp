@@ -19,16 +19,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/cost_front.h"
+#include "analysis/scored_points.h"
 #include "formats/scene_file.h"
 #include "formats/zone_family.h"
 #include "tests/run_command.h"
 #include "views/contact_force_map.h"
-#include "analysis/cost_front.h"
 #include "views/cost_front.h"
 #include "views/fig3_svg.h"
 #include "views/html_text.h"
 #include "views/map_grid.h"
-#include "analysis/scored_points.h"
 #include "views/study_verdict.h"
 
 namespace shockmap {

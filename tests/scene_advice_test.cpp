@@ -16,9 +16,9 @@
 
 #include "core/input_error.h"
 #include "formats/advice_check_outcomes.h"
+#include "formats/criteria_json.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
-#include "formats/criteria_json.h"
 #include "views/scene_advice_summary.h"
 
 namespace shockmap {

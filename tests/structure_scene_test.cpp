@@ -15,13 +15,13 @@
 #include "compare/scene_run.h"
 #include "core/fe_structure.h"
 #include "core/scene_model.h"
+#include "formats/criteria_json.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
 #include "formats/structure_files.h"
 #include "run_command.h"
 #include "temp_dir.h"
 #include "validation/scene_advice.h"
-#include "formats/criteria_json.h"
 
 namespace shockmap {
 namespace {

@@ -6,17 +6,17 @@
 #include <cmath>
 #include <set>
 
+#include "analysis/cost_front.h"
+#include "analysis/scored_points.h"
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "formats/output_file.h"
 #include "formats/study_file.h"
-#include "analysis/cost_front.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"
 #include "views/html_text.h"
 #include "views/html_validity_map.h"
-#include "analysis/scored_points.h"
 #include "views/study_verdict.h"
 #include "views/validity_map.h"
 

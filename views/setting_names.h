@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
+#include "analysis/ensemble_sizing.h"
 #include "core/scene.h"
 #include "db/read_only_query.h"
-#include "analysis/ensemble_sizing.h"
 
 namespace shockmap {
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/scene.h"
 #include "analysis/ensemble_sizing.h"
+#include "core/scene.h"
 
 namespace shockmap {
 

@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "analysis/ensemble_sizing.h"
 #include "core/scene.h"
 #include "db/read_only_query.h"
-#include "analysis/ensemble_sizing.h"
 
 namespace shockmap {
 

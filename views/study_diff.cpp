@@ -9,6 +9,8 @@
 #include <sstream>
 #include <tuple>
 
+#include "analysis/scored_points.h"
+#include "analysis/study_thresholds.h"
 #include "core/input_error.h"
 #include "core/scheme.h"
 #include "db/report_queries.h"
@@ -17,8 +19,6 @@
 #include "formats/study_file.h"
 #include "formats/table_output.h"
 #include "views/map_grid.h"
-#include "analysis/scored_points.h"
-#include "analysis/study_thresholds.h"
 
 namespace shockmap {
 namespace {
