@@ -8,8 +8,8 @@
 #include "db/study_database.h"
 #include "formats/output_file.h"
 #include "formats/table_output.h"
-#include "views/study_diff.h"
 #include "views/study_diff_map.h"
+#include "views/study_diff_text.h"
 
 namespace shockmap {
 namespace {

@@ -1,7 +1,7 @@
 // `shockmap diff`: two studies compared point by point and R_k by R_k. Synthetic studies with a
 // known change, then the command on stored studies.
 
-#include "views/study_diff.h"
+#include "views/study_diff_text.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -23,9 +23,7 @@ namespace {
 
 // A non-ok status's look: a white cell under a marker for runs that ended badly, grey for a
 // reference that did not converge.
-OutcomeCategory StatusCategory(RunStatus s) {
-  std::string label = ToString(s);
-  std::ranges::replace(label, '_', ' ');
+OutcomeCategory StatusCategory(RunStatus s, const std::string& label) {
   switch (s) {
     case RunStatus::kDiverged:
       return {label, "#ffffff", CellMarker::kCross};
@@ -40,12 +38,13 @@ OutcomeCategory StatusCategory(RunStatus s) {
   return {label, "#bdbdbd", CellMarker::kNone};
 }
 
+// Each of OutcomeLabels() with its look, in its order.
 std::vector<OutcomeCategory> MakeCategories() {
-  std::vector<OutcomeCategory> categories = {{"passes", "#1a9850"},
-                                             {"fails thresholds", "#fdae61"},
-                                             {"undecided", "#fee08b", CellMarker::kDiamond}};
+  const std::vector<std::string>& labels = OutcomeLabels();
+  std::vector<OutcomeCategory> categories = {
+      {labels[0], "#1a9850"}, {labels[1], "#fdae61"}, {labels[2], "#fee08b", CellMarker::kDiamond}};
   for (RunStatus s : kAllRunStatuses) {
-    if (s != RunStatus::kOk) categories.push_back(StatusCategory(s));
+    if (s != RunStatus::kOk) categories.push_back(StatusCategory(s, labels[categories.size()]));
   }
   return categories;
 }
@@ -89,16 +88,6 @@ std::vector<double> Sorted(std::vector<double> values) {
 const std::vector<OutcomeCategory>& OutcomeCategories() {
   static const std::vector<OutcomeCategory> categories = MakeCategories();
   return categories;
-}
-
-int OutcomeCategoryOf(const ScoredPoint& p, const CriteriaOptions& thresholds) {
-  if (p.status == RunStatus::kOk) return thresholds.Passes(p) ? 0 : thresholds.Undecided(p) ? 2 : 1;
-  int index = 3;
-  for (RunStatus s : kAllRunStatuses) {
-    if (s == p.status) return index;
-    if (s != RunStatus::kOk) ++index;
-  }
-  return index;  // Unreachable: every status is in kAllRunStatuses.
 }
 
 MapGrid BuildMapGrid(const std::vector<ScoredPoint>& points, MapAxis y_axis, double r_ftrunc) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "analysis/outcome_category.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {
@@ -22,20 +23,17 @@ std::optional<MapAxis> MapAxisFromString(std::string_view s);
 // finished bad one, nor a score rounding can move across its threshold from a settled one.
 enum class CellMarker { kNone, kCross, kSquare, kCircle, kDiamond };
 
-// The outcome categories of the status map, in legend order: "passes", "fails thresholds" and
-// "undecided" (status ok, split by the thresholds and by CriteriaOptions::Undecided: an open
-// diamond over a yellow cell), then every other status of kAllRunStatuses (core/run_status.h)
-// by its stored name. Diverged (x), unstable (open square) and failed (open circle) cells are
-// white under their marker, which no score palette uses; cells whose reference did not
-// converge are grey, unmarked (nothing was judged there).
+// The outcome categories of analysis/outcome_category.h as the status map draws them, in
+// legend order: "undecided" is an open diamond over a yellow cell; diverged (x), unstable (open
+// square) and failed (open circle) cells are white under their marker, which no score palette
+// uses; cells whose reference did not converge are grey, unmarked (nothing was judged there).
 struct OutcomeCategory {
   std::string label;   // "passes", "fails thresholds", "diverged", ...
   std::string colour;  // "#rrggbb": the cell's fill where the map has no value for it.
   CellMarker marker = CellMarker::kNone;
 };
+// OutcomeCategories()[OutcomeCategoryOf(p, thresholds)] is p's.
 const std::vector<OutcomeCategory>& OutcomeCategories();
-// The index of p's category in OutcomeCategories().
-int OutcomeCategoryOf(const ScoredPoint& p, const CriteriaOptions& thresholds);
 
 struct MapCell {
   const ScoredPoint* point = nullptr;

@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "views/study_diff.h"
+#include "analysis/study_diff.h"
 
 namespace shockmap {
 

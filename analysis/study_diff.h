@@ -1,8 +1,8 @@
 #pragma once
 // Two stored studies of the paper's problem side by side (`shockmap diff A B`): the settings
-// they differ in, their validity criteria R_k by R_k (views/criteria_report.h derives the same
-// with `criteria derive`), the points whose outcome changed, and those studied in one only.
-// The overlaid boundary map is views/study_diff_map.h.
+// they differ in, their validity criteria R_k by R_k (derived as `criteria derive` derives
+// them), the points whose outcome changed, and those studied in one only. Its text, JSON and
+// tables are views/study_diff_text.h, its overlaid boundary map views/study_diff_map.h.
 
 #include <map>
 #include <nlohmann/json.hpp>
@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "records/table.h"
 #include "validation/boundary_comparison.h"
 #include "validation/validity_criteria.h"
 
@@ -90,7 +89,7 @@ struct StudyDiff {
 
 // Matches the points of A and B by scheme, dt rule and their numbers (R_k, R_ftrunc, the dt
 // asked, window, damping), each number equal within `relative_tolerance`; judges each point
-// with its own study's thresholds (the outcome categories of views/map_grid.h). Throws
+// with its own study's thresholds (analysis/outcome_category.h). Throws
 // InputError naming the setting and both values when the studies differ in a setting that
 // makes their scores incomparable (ScoresComparableAcross).
 StudyDiff DiffStudies(const DiffedStudy& a, const DiffedStudy& b, double relative_tolerance);
@@ -98,20 +97,5 @@ StudyDiff DiffStudies(const DiffedStudy& a, const DiffedStudy& b, double relativ
 // The outcome of a point as maps and reports name it: "passes", "fails thresholds",
 // "diverged", ...
 std::string OutcomeOf(const DiffPoint& p, const CriteriaOptions& options);
-
-// "R_k 3162.28, R_ftrunc 30, dt 0.1 dt_sharp", led by the scheme when not explicit modal and
-// followed by the mass damping when not zero.
-std::string PointLabel(const DiffPoint& p);
-
-// The human report: settings, the criteria table, the fit and dt margin of each, the points
-// whose outcome changed and the points of one study only.
-std::string DiffText(const DiffedStudy& a, const DiffedStudy& b, const StudyDiff& diff);
-// Everything DiffText shows, as one JSON object.
-nlohmann::json DiffToJson(const DiffedStudy& a, const DiffedStudy& b, const StudyDiff& diff);
-// One row per point of either study: its parameters, then its outcome and scores in A and B
-// (empty where it was not studied) and whether the outcome changed.
-Table DiffPointTable(const DiffedStudy& a, const DiffedStudy& b, const StudyDiff& diff);
-// One row per R_k: each study's smallest passing truncation and largest passing dt / dt_sharp.
-Table DiffCriteriaTable(const StudyDiff& diff);
 
 }  // namespace shockmap
