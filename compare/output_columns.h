@@ -3,7 +3,9 @@
 // scene run's summary (`simulate --json`, summary.json, Python's SceneRun.summary), a
 // comparison of the paper's problem (`compare --json`, Python's Comparison.summary), a shock
 // (shocks.csv, the comparison's first shocks, Python's shock dicts), a zone's impact statistics
-// (impact_statistics.csv, summary.json's zone results) and one impact of a zone (impacts.csv).
+// (impact_statistics.csv, summary.json's zone results), one impact of a zone (impacts.csv), a
+// run's energies at one instant (energies.csv) and a zone's largest force
+// (max_contact_force.csv).
 // docs/scenes.md describes the files.
 
 #include <cmath>
@@ -173,6 +175,60 @@ inline constexpr OutputColumn<ImpactRecord> kImpactRecordColumns[] = {
      "", "its contacts after the first"},
     {"truncated", [](const ImpactRecord& r) -> OutputValue { return r.truncated; }, "",
      "cut by the window's start or end"},
+};
+
+// One recorded instant of a run's energies, in the order of energies.csv: their balance is the
+// run's energy check.
+struct EnergySample {
+  const EnergyHistory& energy;
+  std::size_t index;
+};
+
+inline constexpr OutputColumn<EnergySample> kEnergyColumns[] = {
+    {"t_s", [](const EnergySample& e) -> OutputValue { return e.energy.kinetic_j.TimeAt(e.index); },
+     "s", "the simulated time"},
+    {"kinetic_j",
+     [](const EnergySample& e) -> OutputValue { return e.energy.kinetic_j.values[e.index]; }, "J",
+     "kinetic energy"},
+    {"strain_j",
+     [](const EnergySample& e) -> OutputValue { return e.energy.strain_j.values[e.index]; }, "J",
+     "strain energy"},
+    {"contact_j",
+     [](const EnergySample& e) -> OutputValue { return e.energy.contact_j.values[e.index]; }, "J",
+     "energy stored in the closed contacts"},
+    {"dissipated_j",
+     [](const EnergySample& e) -> OutputValue { return e.energy.dissipated_j.values[e.index]; },
+     "J", "energy dissipated since the start"},
+    {"external_work_j",
+     [](const EnergySample& e) -> OutputValue { return e.energy.external_work_j.values[e.index]; },
+     "J", "work of the external loads since the start"},
+};
+
+// A zone's largest contact force over a run with where the zone is, in the order of
+// max_contact_force.csv.
+struct ZoneLargestForce {
+  const Scene& scene;
+  const SceneZone& zone;
+  double force_n;
+};
+
+inline constexpr OutputColumn<ZoneLargestForce> kLargestForceColumns[] = {
+    {"zone", [](const ZoneLargestForce& z) -> OutputValue { return z.zone.name; }, "",
+     "the zone's name"},
+    {"beam",
+     [](const ZoneLargestForce& z) -> OutputValue { return z.scene.SideName(z.zone, false); }, "",
+     "its first side"},
+    {"against",
+     [](const ZoneLargestForce& z) -> OutputValue { return z.scene.SideName(z.zone, true); }, "",
+     "its other side: a beam, a structure's node or a stop"},
+    {"height_m", [](const ZoneLargestForce& z) -> OutputValue { return z.zone.height_m; }, "m",
+     "its height"},
+    {"y_m", [](const ZoneLargestForce& z) -> OutputValue { return z.zone.y_m; }, "m",
+     "its position in the cross-section, y"},
+    {"z_m", [](const ZoneLargestForce& z) -> OutputValue { return z.zone.z_m; }, "m",
+     "its position in the cross-section, z"},
+    {"max_force_n", [](const ZoneLargestForce& z) -> OutputValue { return z.force_n; }, "N",
+     "the largest contact force of the run"},
 };
 
 // A scene run with its scene.

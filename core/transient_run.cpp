@@ -227,6 +227,38 @@ class Bookkeeping {
   TransientResult result_;
 };
 
+// The energy balance's running integrals over the steps (trapezoidal in time, from the powers
+// at each step's ends): the work dissipated, the loads' work and the total of its magnitude,
+// the scale energy is judged against when loads feed it (a base shock starts from rest). Zero
+// for a system that neither dissipates nor is loaded.
+class EnergyLedger {
+ public:
+  EnergyLedger(SecondOrderSystem& system, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0)
+      : system_(system), active_(system.Dissipates() || system.HasExternalLoads()) {
+    if (active_) before_ = system.PowersAt(0.0, x0, v0);
+  }
+
+  // After a step of dt ending at time t in state (x, v).
+  void Step(double dt, double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
+    if (!active_) return;
+    const auto now = system_.PowersAt(t, x, v);
+    dissipated_ += 0.5 * dt * (before_.dissipated_w + now.dissipated_w);
+    work_ += 0.5 * dt * (before_.external_w + now.external_w);
+    work_magnitude_ += 0.5 * dt * (std::abs(before_.external_w) + std::abs(now.external_w));
+    before_ = now;
+  }
+
+  double Dissipated() const { return dissipated_; }
+  double Work() const { return work_; }
+  double WorkMagnitude() const { return work_magnitude_; }
+
+ private:
+  SecondOrderSystem& system_;
+  const bool active_;
+  SecondOrderSystem::Powers before_;
+  double dissipated_ = 0.0, work_ = 0.0, work_magnitude_ = 0.0;
+};
+
 bool IsCentralDifference(NewmarkParameters scheme) {
   return scheme.beta == 0.0 && scheme.gamma == 0.5;
 }
@@ -253,20 +285,13 @@ TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
     book.Stop(RunStatus::kFailed, "initial acceleration: the system solve failed");
     return finish();
   }
-  const bool dissipates = system.Dissipates();
-  double dissipated = 0.0;
-  // Work of the external loads, and the total of its magnitude: the scale energy is judged
-  // against when loads feed it (a base shock starts from rest).
-  const bool loaded = system.HasExternalLoads();
-  double work = 0.0, work_magnitude = 0.0;
-  SecondOrderSystem::Powers before;
-  if (dissipates || loaded) before = system.PowersAt(0.0, x0, v0);
+  EnergyLedger ledger(system, x0, v0);
   summary.initial_energy_j = system.EnergyAt(x0, v0).Total();
   auto record = [&] {
     recorder.RecordObserved(integrator.X(), integrator.V());
     recorder.RecordForces(system.LastContactForces());
     recorder.RecordEnergy([&] { return system.EnergyAt(integrator.X(), integrator.V()); },
-                          dissipated, work);
+                          ledger.Dissipated(), ledger.Work());
   };
   record();
   if (options.track_max_contact_force) {
@@ -292,26 +317,22 @@ TransientResult RunNewmark(SecondOrderSystem& system, NewmarkParameters scheme,
       RaiseToMaxInPlace(result.max_contact_force_n, system.LastContactForces());
     }
     if (impacts) impacts->Step(integrator.V());
-    if (dissipates || loaded) {
-      const auto now = system.PowersAt(integrator.T(), integrator.X(), integrator.V());
-      dissipated += 0.5 * dt * (before.dissipated_w + now.dissipated_w);
-      work += 0.5 * dt * (before.external_w + now.external_w);
-      work_magnitude += 0.5 * dt * (std::abs(before.external_w) + std::abs(now.external_w));
-      before = now;
-    }
+    ledger.Step(dt, integrator.T(), integrator.X(), integrator.V());
     if (--to_record == 0) {
       to_record = options.record_stride;
       record();
     }
     if (--to_check == 0 || n == summary.steps_requested) {
       to_check = options.divergence_check_stride;
-      const double total = system.EnergyAt(integrator.X(), integrator.V()).Total() + dissipated;
-      if (!book.Check(n, integrator.T(), total, integrator.X().allFinite(), work_magnitude)) {
+      const double total =
+          system.EnergyAt(integrator.X(), integrator.V()).Total() + ledger.Dissipated();
+      if (!book.Check(n, integrator.T(), total, integrator.X().allFinite(),
+                      ledger.WorkMagnitude())) {
         return finish();
       }
     }
   }
-  book.Complete(dissipates);
+  book.Complete(system.Dissipates());
   return finish();
 }
 

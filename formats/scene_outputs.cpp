@@ -102,106 +102,140 @@ Json SceneRunToJson(const Scene& scene, const SceneRun& run) {
   return json;
 }
 
+namespace {
+
+// displacements.csv: the time, then each displacement output's displacement and velocity.
+void WriteDisplacements(const Scene& scene, const TransientResult& r,
+                        const std::filesystem::path& dir,
+                        std::vector<std::filesystem::path>& written) {
+  std::string header = "t_s";
+  for (const auto& p : scene.outputs.displacements) {
+    header += "," + CsvField(p.name + "_m") + "," + CsvField(p.name + "_velocity_m_s");
+  }
+  WriteCsv(
+      dir / "displacements.csv", header, r.displacement_m[0].values.size(),
+      [&](std::ostream& out, std::size_t i) {
+        out << r.displacement_m[0].TimeAt(i);
+        for (std::size_t p = 0; p < r.displacement_m.size(); ++p)
+          out << ',' << r.displacement_m[p].values[i] << ',' << r.velocity_m_s[p].values[i];
+        out << '\n';
+      },
+      written);
+}
+
+// contact_forces.csv: the time, then each recorded zone's force.
+void WriteContactForces(const Scene& scene, const SceneRun& run, const std::filesystem::path& dir,
+                        std::vector<std::filesystem::path>& written) {
+  const TransientResult& r = run.result;
+  std::string header = "t_s";
+  for (int z : run.recorded_zones) header += "," + CsvField(scene.zones[z].name + "_n");
+  WriteCsv(
+      dir / "contact_forces.csv", header, r.contact_force_n[0].values.size(),
+      [&](std::ostream& out, std::size_t i) {
+        out << r.contact_force_n[0].TimeAt(i);
+        for (const auto& f : r.contact_force_n) out << ',' << f.values[i];
+        out << '\n';
+      },
+      written);
+}
+
+// A CSV of `rows` rows whose columns are `columns`, row i those of value(i).
+template <typename Columns, typename Value>
+void WriteColumnsCsv(const std::filesystem::path& file, const Columns& columns, std::size_t rows,
+                     Value value, std::vector<std::filesystem::path>& written) {
+  WriteCsv(
+      file, CsvHeaderOf(columns), rows,
+      [&](std::ostream& out, std::size_t i) {
+        WriteCsvFields(out, OutputValuesOf(value(i), columns));
+        out << '\n';
+      },
+      written);
+}
+
+// shocks.csv: one row per shock of every recorded zone, the zone's name first.
+void WriteShocks(const Scene& scene, const SceneRun& run, const std::filesystem::path& dir,
+                 std::vector<std::filesystem::path>& written) {
+  std::vector<std::pair<std::size_t, const Shock*>> rows;
+  for (std::size_t i = 0; i < run.shocks.size(); ++i) {
+    for (const Shock& s : run.shocks[i]) rows.emplace_back(run.recorded_zones[i], &s);
+  }
+  WriteCsv(
+      dir / "shocks.csv", "zone," + CsvHeaderOf(kShockColumns), rows.size(),
+      [&](std::ostream& out, std::size_t i) {
+        out << CsvField(scene.zones[rows[i].first].name) << ',';
+        WriteCsvFields(out, OutputValuesOf(*rows[i].second, kShockColumns));
+        out << '\n';
+      },
+      written);
+}
+
+// impact_statistics.csv: one row per zone, its name first.
+void WriteImpactStatistics(const Scene& scene, const SceneRun& run,
+                           const std::filesystem::path& dir,
+                           std::vector<std::filesystem::path>& written) {
+  WriteCsv(
+      dir / "impact_statistics.csv", "zone," + CsvHeaderOf(kImpactStatisticsColumns),
+      scene.zones.size(),
+      [&](std::ostream& out, std::size_t i) {
+        out << CsvField(scene.zones[i].name) << ',';
+        WriteCsvFields(out,
+                       OutputValuesOf(ZoneImpactStatistics{run.impact_statistics[i], scene.wear},
+                                      kImpactStatisticsColumns));
+        out << '\n';
+      },
+      written);
+}
+
+// impacts.csv: one row per impact of the zones the scene lists, the zone's name and the
+// impact's number (from 1) first.
+void WriteImpactTable(const Scene& scene, const SceneRun& run, const std::filesystem::path& dir,
+                      std::vector<std::filesystem::path>& written) {
+  std::vector<std::tuple<int, int, const ImpactRecord*>> rows;
+  for (int z : scene.outputs.impact_table_zones) {
+    const auto& records = run.impact_statistics[static_cast<std::size_t>(z)].records;
+    for (std::size_t k = 0; k < records.size(); ++k)
+      rows.emplace_back(z, static_cast<int>(k) + 1, &records[k]);
+  }
+  WriteCsv(
+      dir / "impacts.csv", "zone,impact," + CsvHeaderOf(kImpactRecordColumns), rows.size(),
+      [&](std::ostream& out, std::size_t i) {
+        const auto& [zone, number, record] = rows[i];
+        out << CsvField(scene.zones[static_cast<std::size_t>(zone)].name) << ',' << number << ',';
+        WriteCsvFields(out, OutputValuesOf(*record, kImpactRecordColumns));
+        out << '\n';
+      },
+      written);
+}
+
+}  // namespace
+
 std::vector<std::filesystem::path> WriteSceneOutputs(const Scene& scene, const SceneRun& run,
                                                      const std::filesystem::path& dir) {
   CreateOutputDirectory(dir);
   std::vector<std::filesystem::path> written;
   const TransientResult& r = run.result;
-
-  if (!r.displacement_m.empty()) {
-    std::string header = "t_s";
-    for (const auto& p : scene.outputs.displacements) {
-      header += "," + CsvField(p.name + "_m") + "," + CsvField(p.name + "_velocity_m_s");
-    }
-    WriteCsv(
-        dir / "displacements.csv", header, r.displacement_m[0].values.size(),
-        [&](std::ostream& out, std::size_t i) {
-          out << r.displacement_m[0].TimeAt(i);
-          for (std::size_t p = 0; p < r.displacement_m.size(); ++p)
-            out << ',' << r.displacement_m[p].values[i] << ',' << r.velocity_m_s[p].values[i];
-          out << '\n';
-        },
-        written);
-  }
-  if (!r.contact_force_n.empty()) {
-    std::string header = "t_s";
-    for (int z : run.recorded_zones) header += "," + CsvField(scene.zones[z].name + "_n");
-    WriteCsv(
-        dir / "contact_forces.csv", header, r.contact_force_n[0].values.size(),
-        [&](std::ostream& out, std::size_t i) {
-          out << r.contact_force_n[0].TimeAt(i);
-          for (const auto& f : r.contact_force_n) out << ',' << f.values[i];
-          out << '\n';
-        },
-        written);
-  }
+  if (!r.displacement_m.empty()) WriteDisplacements(scene, r, dir, written);
+  if (!r.contact_force_n.empty()) WriteContactForces(scene, run, dir, written);
   if (!r.energy.kinetic_j.values.empty()) {
-    const EnergyHistory& e = r.energy;
-    WriteCsv(
-        dir / "energies.csv", "t_s,kinetic_j,strain_j,contact_j,dissipated_j,external_work_j",
-        e.kinetic_j.values.size(),
-        [&](std::ostream& out, std::size_t i) {
-          out << e.kinetic_j.TimeAt(i) << ',' << e.kinetic_j.values[i] << ','
-              << e.strain_j.values[i] << ',' << e.contact_j.values[i] << ','
-              << e.dissipated_j.values[i] << ',' << e.external_work_j.values[i] << '\n';
+    WriteColumnsCsv(
+        dir / "energies.csv", kEnergyColumns, r.energy.kinetic_j.values.size(),
+        [&](std::size_t i) {
+          return EnergySample{r.energy, i};
         },
         written);
   }
   if (!run.max_contact_force_n.empty()) {
-    WriteCsv(
-        dir / "max_contact_force.csv", "zone,beam,against,height_m,y_m,z_m,max_force_n",
-        scene.zones.size(),
-        [&](std::ostream& out, std::size_t i) {
-          const SceneZone& z = scene.zones[i];
-          out << CsvField(z.name) << ',' << CsvField(scene.SideName(z, false)) << ','
-              << CsvField(scene.SideName(z, true)) << ',' << z.height_m << ',' << z.y_m << ','
-              << z.z_m << ',' << run.max_contact_force_n[i] << '\n';
+    WriteColumnsCsv(
+        dir / "max_contact_force.csv", kLargestForceColumns, scene.zones.size(),
+        [&](std::size_t i) {
+          return ZoneLargestForce{scene, scene.zones[i], run.max_contact_force_n[i]};
         },
         written);
   }
-  if (!run.shocks.empty()) {
-    std::vector<std::pair<std::size_t, const Shock*>> rows;
-    for (std::size_t i = 0; i < run.shocks.size(); ++i) {
-      for (const Shock& s : run.shocks[i]) rows.emplace_back(run.recorded_zones[i], &s);
-    }
-    WriteCsv(
-        dir / "shocks.csv", "zone," + CsvHeaderOf(kShockColumns), rows.size(),
-        [&](std::ostream& out, std::size_t i) {
-          out << CsvField(scene.zones[rows[i].first].name) << ',';
-          WriteCsvFields(out, OutputValuesOf(*rows[i].second, kShockColumns));
-          out << '\n';
-        },
-        written);
-  }
-  if (!run.impact_statistics.empty()) {
-    WriteCsv(
-        dir / "impact_statistics.csv", "zone," + CsvHeaderOf(kImpactStatisticsColumns),
-        scene.zones.size(),
-        [&](std::ostream& out, std::size_t i) {
-          out << CsvField(scene.zones[i].name) << ',';
-          WriteCsvFields(out,
-                         OutputValuesOf(ZoneImpactStatistics{run.impact_statistics[i], scene.wear},
-                                        kImpactStatisticsColumns));
-          out << '\n';
-        },
-        written);
-  }
+  if (!run.shocks.empty()) WriteShocks(scene, run, dir, written);
+  if (!run.impact_statistics.empty()) WriteImpactStatistics(scene, run, dir, written);
   if (!run.impact_statistics.empty() && !scene.outputs.impact_table_zones.empty()) {
-    std::vector<std::tuple<int, int, const ImpactRecord*>> rows;
-    for (int z : scene.outputs.impact_table_zones) {
-      const auto& records = run.impact_statistics[static_cast<std::size_t>(z)].records;
-      for (std::size_t k = 0; k < records.size(); ++k)
-        rows.emplace_back(z, static_cast<int>(k) + 1, &records[k]);
-    }
-    WriteCsv(
-        dir / "impacts.csv", "zone,impact," + CsvHeaderOf(kImpactRecordColumns), rows.size(),
-        [&](std::ostream& out, std::size_t i) {
-          const auto& [zone, number, record] = rows[i];
-          out << CsvField(scene.zones[static_cast<std::size_t>(zone)].name) << ',' << number << ',';
-          WriteCsvFields(out, OutputValuesOf(*record, kImpactRecordColumns));
-          out << '\n';
-        },
-        written);
+    WriteImpactTable(scene, run, dir, written);
   }
   const auto summary = dir / "summary.json";
   WriteFileAtomically(summary, SceneRunToJson(scene, run).dump(2) + '\n');

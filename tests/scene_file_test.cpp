@@ -547,6 +547,9 @@ TEST_F(SceneFiles, ShippedScenesRunAndDrawTheirContactForceMaps) {
     const auto r = RunShockmap(std::string("simulate --json --quiet ") + kScenes + name +
                                ".json --out " + out);
     ASSERT_EQ(r.exit_code, 0) << r.output;
+    // The headers are their column tables' names.
+    EXPECT_EQ(FirstLine(out + "/max_contact_force.csv"), Joined(ColumnNames(kLargestForceColumns)));
+    EXPECT_EQ(FirstLine(out + "/energies.csv"), Joined(ColumnNames(kEnergyColumns)));
     const Json summary = Json::parse(r.output);
     EXPECT_EQ(summary["status"], "ok");
     EXPECT_LT(summary["max_energy_ratio"].get<double>(), 1.1);
