@@ -11,6 +11,7 @@
 #include "engine/study_run.h"
 #include "python/bindings.h"
 #include "python/interrupted_run.h"
+#include "python/progress_callback.h"
 
 namespace shockmap::python {
 namespace {
@@ -54,21 +55,6 @@ py::dict SummaryDict(const StudyRunSummary& s) {
   d["reference_wall_s"] = s.reference_wall_s;
   d["point_wall_s"] = s.point_wall_s;
   return d;
-}
-
-// The listener that calls `callback` with the GIL held. An exception it raises is kept, later
-// reports are skipped, and it is raised again once the run has ended.
-ProgressListener CallbackListener(const py::function& callback,
-                                  std::optional<py::error_already_set>& raised) {
-  return [&callback, &raised](std::string_view phase, double done, double total) {
-    const py::gil_scoped_acquire gil;
-    if (raised) return;
-    try {
-      callback(std::string(phase), done, total);
-    } catch (py::error_already_set& e) {
-      raised = std::move(e);
-    }
-  };
 }
 
 // `progress`: False, True (the command line's lines on stderr) or a callable(phase, done,

@@ -3,6 +3,7 @@
 // `shockmap check-advice` run them.
 
 #include <fmt/format.h>
+#include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
 #include <optional>
@@ -13,6 +14,7 @@
 #include "engine/stop_request.h"
 #include "python/bindings.h"
 #include "python/interrupted_run.h"
+#include "python/progress_callback.h"
 #include "views/advice_check_text.h"
 #include "workflows/advice_check_ladder.h"
 #include "workflows/study_report.h"
@@ -20,29 +22,53 @@
 namespace shockmap::python {
 namespace {
 
-// With `progress`, each line the workflow tells is printed by Python's print (the GIL taken for
-// it); without, nothing is told.
-WorkflowLog PrintedLog(bool progress) {
+// `progress`: False (nothing told), True (each line the workflow tells printed by Python's
+// print, the GIL taken for it) or a callable progress(phase, done, total), called as Study.run
+// calls it, an exception it raises kept in `raised`.
+struct PythonLog {
   WorkflowLog log;
-  if (!progress) return log;
-  log.say = [](const std::string& line) {
-    const py::gil_scoped_acquire gil;
-    py::print(line);
-  };
-  log.warn = [](const std::string& line) {
-    const py::gil_scoped_acquire gil;
-    py::print("warning: " + line);
-  };
-  return log;
-}
+  bool lines = false;
+  py::function callback;
+  std::optional<py::error_already_set> raised;
+
+  explicit PythonLog(const py::object& progress) {
+    if (PyCallable_Check(progress.ptr()) != 0) {
+      callback = progress.cast<py::function>();
+      log.progress = CallbackListener(callback, raised);
+      return;
+    }
+    lines = progress.cast<bool>();
+    if (!lines) return;
+    log.say = [](const std::string& line) {
+      const py::gil_scoped_acquire gil;
+      py::print(line);
+    };
+    log.warn = [](const std::string& line) {
+      const py::gil_scoped_acquire gil;
+      py::print("warning: " + line);
+    };
+  }
+  PythonLog(const PythonLog&) = delete;
+  PythonLog& operator=(const PythonLog&) = delete;
+
+  // Raises what the callable raised, once the run has ended. Call with the GIL held.
+  void RaiseFromCallback() {
+    if (raised) throw std::move(*raised);
+  }
+};
 
 std::string Report(const std::string& database_path, const std::string& study,
                    const std::map<std::string, double, std::less<>>& thresholds,
-                   const std::string& out, bool progress) {
+                   const std::string& out, const py::object& progress) {
   const StudyReportRequest request{database_path, study, thresholds, out, "out"};
-  const WorkflowLog log = PrintedLog(progress);
-  py::gil_scoped_release release;
-  return WriteStudyReport(request, log).string();
+  PythonLog python(progress);
+  std::string page;
+  {
+    py::gil_scoped_release release;
+    page = WriteStudyReport(request, python.log).string();
+  }
+  python.RaiseFromCallback();
+  return page;
 }
 
 // `value` within its bounds (strict or not), else InputError naming it as Python spells it.
@@ -99,17 +125,19 @@ AdviceCheckRequest CheckedRequest(AdviceCheckRequest request, const CheckAdviceA
   return request;
 }
 
-py::dict CheckAdvice(const AdviceCheckRequest& request, bool progress) {
-  const WorkflowLog log = PrintedLog(progress);
+py::dict CheckAdvice(AdviceCheckRequest request, const py::object& progress) {
+  PythonLog python(progress);
+  request.progress_lines = python.lines;
   AdviceCheckLadder ladder;
   int stop_signal = 0;  // The run's, or one that came after its last check.
   {
     py::gil_scoped_release release;
     const StopHandlersDuringRun stop_handlers;
-    ladder = CheckAdviceOnMembers(request, log);
-    if (ladder.check && !request.record.empty()) RecordAdviceCheck(request, ladder, log);
+    ladder = CheckAdviceOnMembers(request, python.log);
+    if (ladder.check && !request.record.empty()) RecordAdviceCheck(request, ladder, python.log);
     stop_signal = ladder.stop_signal != 0 ? ladder.stop_signal : StopSignal();
   }
+  python.RaiseFromCallback();
   RaiseStop(stop_signal);
   if (ladder.stop_signal != 0) {
     ThrowInterrupted(fmt::format(
@@ -131,7 +159,7 @@ void BindWorkflows(py::module_& m) {
          std::optional<int> members, std::optional<double> window_s,
          std::vector<std::string> states, std::optional<int> jobs, std::optional<double> quantile,
          std::optional<double> tolerance, std::optional<int> max_rungs, const std::string& record,
-         const std::string& write_study, bool progress) {
+         const std::string& write_study, const py::object& progress) {
         AdviceCheckRequest request;
         request.study_file = study;
         request.database_path = db;
@@ -139,7 +167,6 @@ void BindWorkflows(py::module_& m) {
         request.states = std::move(states);
         request.record = record;
         request.write_study = write_study;
-        request.progress_lines = progress;
         return CheckAdvice(CheckedRequest(std::move(request), {members, jobs, max_rungs, window_s,
                                                                quantile, tolerance}),
                            progress);

@@ -300,12 +300,18 @@ def point(db, study, point_id):
                            _integer("point_id", point_id, 1, _ID_MAX))
 
 
+def _progress(progress):
+    """A workflow's progress: a callable progress(phase, done, total) as given, else a bool."""
+    return progress if callable(progress) else bool(progress)
+
+
 def report(db=DEFAULT_DATABASE, study=None, *, out, progress=False, **thresholds):
     """The HTML report of a stored study into the folder `out`, as `shockmap report`; returns
     the path of its index.html. thresholds (err_max=0.1, srf_min=0.9, ...) over the study's own;
-    progress=True prints what is drawn. A report refused half-way leaves no folder it created."""
+    progress: True prints what is drawn, a callable gets ("Fig. 3 of point N", done, total).
+    A report refused half-way leaves no folder it created."""
     return _shockmap.report(_database(db), _text("study", study or ""), _thresholds(thresholds),
-                            _text("out", out), bool(progress))
+                            _text("out", out), _progress(progress))
 
 
 def check_advice(study, db=DEFAULT_DATABASE, *, criteria=None, members=None, window_s=None,
@@ -321,7 +327,9 @@ def check_advice(study, db=DEFAULT_DATABASE, *, criteria=None, members=None, win
     warnings) and, unless write_study names a file for the ladder's study instead, the check:
     verdict (text), table (DataFrame, one row per state and zone family), factors,
     cpu_s_per_member, converged, undecided. record: an outcomes file a decided check is added
-    to. Ctrl-C stops it as it stops `check-advice`: the members computed are stored."""
+    to. progress: True prints the command line's lines, a callable gets the study engine's
+    (phase, done, total) of each rung's run. Ctrl-C stops it as it stops `check-advice`: the
+    members computed are stored."""
     if states is not None:
         states = [_text("states", state) for state in ([states] if isinstance(states, str)
                                                         else states)]
@@ -330,7 +338,7 @@ def check_advice(study, db=DEFAULT_DATABASE, *, criteria=None, members=None, win
                                                                                  criteria),
         members, window_s, states or [], jobs, quantile, tolerance, max_rungs,
         "" if record is None else _text("record", record),
-        "" if write_study is None else _text("write_study", write_study), bool(progress))
+        "" if write_study is None else _text("write_study", write_study), _progress(progress))
     if "table" in result:
         result["table"] = _frame(result["table"])
     return result

@@ -275,7 +275,7 @@ def report(
     study: Optional[str] = None,
     *,
     out: PathLike,
-    progress: bool = False,
+    progress: Union[bool, ProgressCallback] = False,
     **thresholds: float,
 ) -> str:
     """The HTML report of a stored study into `out`, as `shockmap report`; returns the path of
@@ -295,7 +295,7 @@ def check_advice(
     max_rungs: Optional[int] = None,
     record: Optional[PathLike] = None,
     write_study: Optional[PathLike] = None,
-    progress: bool = False,
+    progress: Union[bool, ProgressCallback] = False,
 ) -> Dict[str, Any]:
     """The advice for an ensemble study's scene checked on its members, as `shockmap
     check-advice`: dt_ratio, r_ftrunc (per beam), warnings, and the check's verdict, table

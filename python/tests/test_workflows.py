@@ -126,3 +126,27 @@ def test_report_of_a_study_the_database_lacks_is_refused_creating_nothing(checke
     with pytest.raises(shockmap.InputError, match="no_such_study"):
         shockmap.report(db, "no_such_study", out=tmp_path / "out")
     assert not (tmp_path / "out").exists()
+
+
+def test_a_progress_callable_sees_each_rung_s_run_and_each_figure(row_study, source_dir,
+                                                                   tmp_path):
+    seen = []
+    shockmap.check_advice(row_study, tmp_path / "fresh.db",
+                          criteria=source_dir / shockmap.SCENE_CRITERIA,
+                          progress=lambda *report: seen.append(report), **LADDER)
+    assert ("points", 9.0, 9.0) in seen and {phase for phase, _, _ in seen} == {
+        "references", "points"}
+    spec = {"kind": "canonical", "name": "tiny", "scoring": {"window_s": 0.03},
+            "grids": [{"rk": [100], "rftrunc": [10, 100], "dt": {"rule": "sharp", "factor": [0.1]}}]}
+    tiny = tmp_path / "tiny.db"
+    shockmap.Study.load(write_json(tmp_path / "tiny.json", spec)).run(db=tiny, jobs=2)
+    figures = []
+    shockmap.report(tiny, out=tmp_path / "report", progress=lambda *r: figures.append(r))
+    assert [done for _, done, _ in figures] == [1.0, 2.0]
+    assert all(phase.startswith("Fig. 3 of point ") and total == 2.0 for phase, _, total in figures)
+
+    def fails(*_):
+        raise RuntimeError("from the callable")
+
+    with pytest.raises(RuntimeError, match="from the callable"):
+        shockmap.report(tiny, out=tmp_path / "again", progress=fails)
