@@ -81,19 +81,17 @@ std::string AdvisedTruncations(const SceneAdvice& advice) {
   return text;
 }
 
-// A ladder's sizing statistics and what its members were: their number per state and rung,
-// their window and the clearance states; or the stop that ended it.
+// A ladder's run, and its sizing statistics unless a signal stopped it.
 struct LadderRun {
-  EnsembleSizing sizing;
-  int members = 0;
-  double window_s = 0.0;
-  std::vector<std::string> states;
   StudyRunSummary summary;
+  EnsembleSizing sizing;
 };
 
 // Runs the ladder's study (only the members not stored yet) and, unless a signal stopped it,
-// reads its sizing statistics.
-LadderRun RunLadder(const AdviceCheckRequest& r, const Json& study, const WorkflowLog& log) {
+// reads its sizing statistics and sets what `outcome` says of its members: their clearance
+// states, their number per state and rung, their window.
+LadderRun RunLadder(const AdviceCheckRequest& r, const Json& study, const WorkflowLog& log,
+                    AdviceCheckOutcome& outcome) {
   const StudyFile parsed = ParseStudyFile(study, r.study_file, r.access);
   StudyRunOptions options;
   options.database_path = r.database_path;
@@ -110,9 +108,10 @@ LadderRun RunLadder(const AdviceCheckRequest& r, const Json& study, const Workfl
   const std::string name = study.at("name");
   const auto& spec = std::get<EnsembleStudySpec>(parsed);
   run.sizing = SizeEnsemble(CurrentMembers(ReadEnsemble(db, name)), name, r.sizing);
-  run.members = spec.members;
-  run.window_s = spec.window_s;
-  for (const ClearanceState& state : spec.states) run.states.push_back(state.name);
+  outcome.members = spec.members;
+  outcome.window_s = spec.window_s;
+  outcome.states.clear();
+  for (const ClearanceState& state : spec.states) outcome.states.push_back(state.name);
   return run;
 }
 
@@ -169,7 +168,7 @@ AdviceCheckLadder CheckAdviceOnMembers(const AdviceCheckRequest& r, const Workfl
       return ladder;
     }
     log.Say(fmt::format("ladder: x {:.4g} of the advised truncations", fmt::join(factors, ", x ")));
-    const LadderRun run = RunLadder(r, study, log);
+    const LadderRun run = RunLadder(r, study, log, ladder.outcome);
     if (run.summary.stop_signal != 0) {
       ladder.stop_signal = run.summary.stop_signal;
       ladder.members_computed = run.summary.points_computed;
@@ -180,9 +179,6 @@ AdviceCheckLadder CheckAdviceOnMembers(const AdviceCheckRequest& r, const Workfl
     const bool may_refine =
         rungs < r.max_rungs && RungFits(advice, LadderFactors(rungs + 1).back());
     if (check.converged || check.undecided || !may_refine) {
-      ladder.outcome.states = run.states;
-      ladder.outcome.members = run.members;
-      ladder.outcome.window_s = run.window_s;
       ladder.check = std::move(check);
       return ladder;
     }
