@@ -234,8 +234,6 @@ DiffedStudy LoadDiffedStudy(const std::string& database_path, const std::string&
   d.database_path = database_path;
   const StudySpec spec = StoredCanonicalSpec(database_path, d.name, role);
   const CriteriaOptions options = StudyCriteriaOptions(database_path, d.name, given);
-  std::string error;
-  if (!options.IsValid(&error)) throw InputError(error);
   d.settings = SettingsOf(spec, options);
   d.criteria = DeriveCriteria(LoadCriteriaPoints(database_path, d.name), options);
   d.points = LoadDiffPoints(database_path, d.name);

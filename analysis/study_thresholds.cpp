@@ -1,5 +1,6 @@
 #include "analysis/study_thresholds.h"
 
+#include "core/input_error.h"
 #include "db/report_queries.h"
 #include "formats/study_file.h"
 
@@ -12,6 +13,8 @@ CriteriaOptions StudyCriteriaOptions(const std::string& database_path, const std
     options.thresholds = StudyThresholds(*stored, database_path + ": stored study " + study);
   }
   for (const auto& [name, threshold] : given) options.thresholds[name] = threshold;
+  std::string error;
+  if (!options.IsValid(&error)) throw InputError(error);
   return options;
 }
 

@@ -11,8 +11,9 @@
 namespace shockmap {
 
 // The criteria options of `study` in the database, with `given` (by score name) over its own
-// thresholds. Throws InputError when the stored study file's thresholds are unreadable, DbError
-// as the read-only queries do.
+// thresholds. Throws InputError when the stored study file's thresholds are unreadable or the
+// options are not valid (CriteriaOptions::IsValid's message: an unknown score, a threshold out
+// of its range), DbError as the read-only queries do.
 CriteriaOptions StudyCriteriaOptions(const std::string& database_path, const std::string& study,
                                      const std::map<std::string, double, std::less<>>& given = {});
 

@@ -140,8 +140,6 @@ std::string CriteriaJson(const std::string& database_path, const std::string& st
                          const std::map<std::string, double, std::less<>>& given) {
   const std::string name = ResolveCanonicalStudy(database_path, study, "criteria derive");
   const CriteriaOptions options = StudyCriteriaOptions(database_path, name, given);
-  std::string error;
-  if (!options.IsValid(&error)) throw InputError(error);
   py::gil_scoped_release release;
   const auto points = LoadCriteriaPoints(database_path, name);
   return CriteriaToJson(name, DeriveCriteria(points, options)).dump();

@@ -121,6 +121,13 @@ def test_report_takes_thresholds_as_criteria_does(tmp_path, cli):
     assert not (tmp_path / "bad").exists()
 
 
+def test_a_threshold_out_of_its_range_is_refused_before_the_report_draws(checked, tmp_path):
+    db, _ = checked
+    with pytest.raises(shockmap.InputError, match=re.escape("err_max = -1: must be in")):
+        shockmap.report(db, "row_advice_check", out=tmp_path / "out", err_max=-1)
+    assert not (tmp_path / "out").exists()
+
+
 def test_report_of_a_study_the_database_lacks_is_refused_creating_nothing(checked, tmp_path):
     db, _ = checked
     with pytest.raises(shockmap.InputError, match="no_such_study"):
