@@ -1,6 +1,6 @@
 #pragma once
 // Whether the advice held on the bundle (docs/ensembles.md, "Advice checked on the bundle"):
-// the sizing statistics of an advice-check study (formats/advice_check_study.h), one group per
+// the sizing statistics of an advice-check study (specs/advice_check_study.h), one group per
 // clearance state and rung of the ladder, read per zone family an engineer sizes (the hottest
 // wire, duct pad, pin-wrapper contact). The ladder has converged at the coarsest rung every finer
 // rung agrees with at every state and family (analysis/ensemble_sizing.h Agrees: their intervals of

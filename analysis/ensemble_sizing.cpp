@@ -9,7 +9,7 @@
 
 #include "core/input_error.h"
 #include "db/stored_json.h"
-#include "formats/ensemble_study_spec.h"
+#include "specs/ensemble_study_spec.h"
 
 namespace shockmap {
 namespace {

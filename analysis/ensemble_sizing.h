@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "db/ensemble_members.h"
-#include "formats/zone_family.h"
+#include "specs/zone_family.h"
 #include "statistics/bootstrap.h"
 #include "statistics/quantile_interval.h"
 #include "statistics/wilks.h"

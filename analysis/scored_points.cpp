@@ -7,8 +7,8 @@
 #include "db/corrupt_rows.h"
 #include "db/report_queries.h"
 #include "db/study_queries.h"
-#include "formats/study_file.h"
 #include "records/canonical_records.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 namespace {

@@ -16,7 +16,7 @@
 #include "db/report_queries.h"
 #include "db/study_queries.h"
 #include "formats/json_reader.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 namespace {

@@ -2,7 +2,7 @@
 
 #include "core/input_error.h"
 #include "db/report_queries.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

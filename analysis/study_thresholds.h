@@ -1,6 +1,6 @@
 #pragma once
 // The thresholds a stored study is judged with: the `thresholds` of its stored study file over
-// the registry's defaults (formats/study_file.h StudyThresholds, validation/scores.h), and the
+// the registry's defaults (specs/study_file.h StudyThresholds, validation/scores.h), and the
 // caller's over them (a command's flags, a Python keyword).
 
 #include <map>

@@ -15,7 +15,7 @@
 #include "formats/counted.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 #include "views/comparison_plot.h"
 
 namespace shockmap {

@@ -18,8 +18,8 @@
 #include "formats/history_csv.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
-#include "formats/study_file.h"
 #include "formats/table_output.h"
+#include "specs/study_file.h"
 #include "views/signal_csv.h"
 
 namespace shockmap {

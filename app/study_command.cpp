@@ -17,8 +17,8 @@
 #include "engine/study_run.h"
 #include "formats/counted.h"
 #include "formats/output_file.h"
-#include "formats/study_file.h"
 #include "formats/table_output.h"
+#include "specs/study_file.h"
 #include "views/setting_legend.h"
 
 namespace shockmap {

@@ -1,6 +1,6 @@
 #pragma once
 // The thresholds a command judges validity with: the study's own (the `thresholds` of its
-// stored study file over the registry's defaults, formats/study_file.h StudyThresholds), each
+// stored study file over the registry's defaults, specs/study_file.h StudyThresholds), each
 // replaced by its flag when one is given (--err-max, --srf-min, ...: one per score of the
 // registry, validation/scores.h).
 

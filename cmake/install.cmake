@@ -4,7 +4,7 @@
 # the component mpi), the shared data, the bash completion and the man page.
 include(CMakePackageConfigHelpers)
 
-set(SHOCKMAP_LIBRARIES core records reference validation statistics compare formats db analysis engine views workflows)
+set(SHOCKMAP_LIBRARIES core records reference validation statistics compare formats specs db analysis engine views workflows)
 set(SHOCKMAP_LIBRARY_TARGETS)
 foreach(folder IN LISTS SHOCKMAP_LIBRARIES)
   set_target_properties(shockmap_${folder} PROPERTIES EXPORT_NAME ${folder})

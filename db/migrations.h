@@ -268,7 +268,7 @@ DROP TABLE scene_points;
 ALTER TABLE scene_points_v7 RENAME TO scene_points;
 CREATE INDEX scene_points_by_status ON scene_points(study_id, status);
 )sql",
-    // 7 -> 8: ensemble studies of a scene (formats/ensemble_study_spec.h). A point is one
+    // 7 -> 8: ensemble studies of a scene (specs/ensemble_study_spec.h). A point is one
     // member: a clearance state, a numerical setting and the member's index; its zones' rows
     // hold the largest force and the impact statistics of the member's run. A reference is a
     // state's nominal run (every draw at its centre) at the refined setting.

@@ -30,7 +30,7 @@ struct ParameterView {
 // parameter columns are the kind's (its parameter record's column table), bound in this order.
 struct PointTable {
   std::string_view name;
-  std::string_view kind;  // The study file's "kind" (formats/study_file.h).
+  std::string_view kind;  // The study file's "kind" (specs/study_file.h).
   std::vector<std::string> parameter_columns;
   std::string_view results_view;  // One row per point, with its study's name (column study).
   // Parameter columns `study status` also counts the points by (ensemble members by clearance

@@ -8,7 +8,7 @@
 #include "compare/comparison.h"
 #include "db/canonical_points.h"
 #include "engine/study_kind.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

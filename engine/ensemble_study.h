@@ -6,7 +6,7 @@
 
 #include "db/ensemble_members.h"
 #include "engine/study_kind.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

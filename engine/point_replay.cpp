@@ -7,7 +7,7 @@
 #include "db/report_queries.h"
 #include "db/stored_signals.h"
 #include "engine/reference_store.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "compare/comparison.h"
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 
 namespace shockmap {
 

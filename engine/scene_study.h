@@ -5,7 +5,7 @@
 
 #include "db/scene_points.h"
 #include "engine/study_kind.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

@@ -23,8 +23,8 @@
 #include "core/run_status.h"
 #include "db/study_database.h"
 #include "engine/byte_codec.h"
-#include "formats/setting_change.h"
-#include "formats/study_file.h"
+#include "specs/setting_change.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 
@@ -70,7 +70,7 @@ concept StudyKind = requires(const K& kind, StudyDatabase& db, const typename K:
   { K::kFileKind } -> std::convertible_to<StudyFileKind>;
   { K::kChangeableSettings } -> std::convertible_to<std::string_view>;
   // The first lifelong setting (what the stored scores depend on, declared as the kind's
-  // settings key; formats/setting_change.h) in which a stored spec of this kind (parsed JSON;
+  // settings key; specs/setting_change.h) in which a stored spec of this kind (parsed JSON;
   // `text` names the database) differs from this one; nullopt when it keeps them all. May
   // throw InputError when the stored spec is unreadable.
   { kind.ChangedSetting(stored, text) } -> std::same_as<std::optional<SettingChange>>;

@@ -8,7 +8,7 @@
 #include "engine/ensemble_study.h"
 #include "engine/scene_study.h"
 #include "engine/study_engine.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

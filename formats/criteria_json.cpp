@@ -27,7 +27,7 @@ struct Allowed {
 constexpr Allowed kPassingDtRatio{0.0, 1.0, true,
                                   "above 1 the explicit scheme is past its stability bound"};
 constexpr Allowed kDtRatio{0.0, 1e3};
-// As a study's axes allow (formats/study_spec.cpp).
+// As a study's axes allow (specs/study_spec.cpp).
 constexpr Allowed kRk{0.0, kMaxRk};
 constexpr Allowed kRftrunc{1.0, 1e5, false};
 // 0: nothing studied below the boundary.

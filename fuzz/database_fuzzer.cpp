@@ -32,9 +32,9 @@
 #include "db/study_queries.h"
 #include "engine/reference_store.h"
 #include "formats/json_reader.h"
-#include "formats/scene_study_spec.h"
-#include "formats/study_file.h"
-#include "formats/study_spec.h"
+#include "specs/scene_study_spec.h"
+#include "specs/study_file.h"
+#include "specs/study_spec.h"
 #include "validation/advice.h"
 #include "views/cost_front.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "core/input_error.h"
-#include "formats/advice_check_outcomes.h"
 #include "formats/json_reader.h"
-#include "formats/study_file.h"
+#include "specs/advice_check_outcomes.h"
+#include "specs/study_file.h"
 
 // The bytes go through the text parser every study file goes through (nesting depth, repeated
 // keys, syntax), then the study parser and the outcomes parser.

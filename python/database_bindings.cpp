@@ -18,12 +18,12 @@
 #include "db/schema.h"
 #include "db/stored_signals.h"
 #include "formats/criteria_json.h"
-#include "formats/study_file.h"
 #include "python/bindings.h"
 #include "python/signal_arrays.h"
 #include "records/canonical_records.h"
 #include "records/ensemble_records.h"
 #include "records/scene_records.h"
+#include "specs/study_file.h"
 #include "views/sizing_tables.h"
 
 namespace shockmap::python {

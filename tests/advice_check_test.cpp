@@ -13,10 +13,10 @@
 
 #include "core/cantilever_impact.h"
 #include "core/input_error.h"
-#include "formats/advice_check_study.h"
 #include "formats/criteria_json.h"
-#include "formats/ensemble_study_spec.h"
 #include "formats/scene_file.h"
+#include "specs/advice_check_study.h"
+#include "specs/ensemble_study_spec.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 #include "validation/scene_advice.h"

@@ -14,7 +14,7 @@
 #include "analysis/scored_points.h"
 #include "compare/comparison.h"
 #include "engine/study_run.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 #include "views/advice_summary.h"
 
 namespace shockmap {

@@ -12,7 +12,7 @@
 
 #include "compare/comparison_options.h"
 #include "core/input_error.h"
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 #include "tests/run_command.h"
 
 namespace shockmap {

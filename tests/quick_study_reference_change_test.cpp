@@ -24,7 +24,7 @@
 #include "compare/reference_run.h"
 #include "compare/score_spread.h"
 #include "engine/study_run.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 #include "tests/database_rows.h"
 
 namespace shockmap {

@@ -22,7 +22,7 @@
 #include "analysis/cost_front.h"
 #include "analysis/scored_points.h"
 #include "formats/scene_file.h"
-#include "formats/zone_family.h"
+#include "specs/zone_family.h"
 #include "tests/run_command.h"
 #include "views/contact_force_map.h"
 #include "views/cost_front.h"

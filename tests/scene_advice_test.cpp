@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "core/input_error.h"
-#include "formats/advice_check_outcomes.h"
 #include "formats/criteria_json.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
+#include "specs/advice_check_outcomes.h"
 #include "views/scene_advice_summary.h"
 
 namespace shockmap {

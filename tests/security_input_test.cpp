@@ -25,7 +25,7 @@
 #include "core/input_error.h"
 #include "formats/json_reader.h"
 #include "formats/scene_file.h"
-#include "formats/scene_study_spec.h"
+#include "specs/scene_study_spec.h"
 #include "tests/run_command.h"
 #include "tests/temp_dir.h"
 

@@ -26,7 +26,7 @@
 #include "engine/study_run.h"
 #include "engine/task_queue.h"
 #include "engine/worker_pool.h"
-#include "formats/setting_change.h"
+#include "specs/setting_change.h"
 #include "tests/run_command.h"
 #include "validation/psd.h"
 

@@ -43,7 +43,7 @@ struct SceneAdvice {
   // Where the advice is not a measured single-beam boundary: R_k outside the criteria's
   // studied range; R_k the criteria's study left unscored and studied R_k where no truncation
   // passes, each among the studied R_k around the zones'. An ensemble of the scene that held the
-  // advice answers them (formats/advice_check_outcomes.h).
+  // advice answers them (specs/advice_check_outcomes.h).
   std::vector<std::string> warnings;
 };
 

@@ -11,7 +11,7 @@
 
 #include "core/input_error.h"
 #include "formats/output_file.h"
-#include "formats/zone_family.h"
+#include "specs/zone_family.h"
 #include "views/gnuplot.h"
 
 namespace shockmap {
@@ -43,7 +43,7 @@ struct ZoneExtent {
   std::set<double> heights_m;
 };
 
-// A zone between a pin of a generated bundle and its wrapper (formats/zone_family.h).
+// A zone between a pin of a generated bundle and its wrapper (specs/zone_family.h).
 bool AgainstWrapper(const Scene& scene, const SceneZone& z) {
   return z.beam_a >= 0 && z.beam_b >= 0 &&
          FamilyOfZone(scene.beams[static_cast<std::size_t>(z.beam_a)].name,

@@ -13,7 +13,7 @@
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "db/stored_json.h"
-#include "formats/advice_check_study.h"
+#include "specs/advice_check_study.h"
 #include "views/advice_check_text.h"
 #include "views/html_report.h"
 #include "views/html_text.h"
@@ -173,7 +173,7 @@ std::string Pictures(const ReportContext& ctx, const EnsembleSizing& s,
   return html;
 }
 
-// The advice's verdict when the study is an advice check (formats/advice_check_study.h): what
+// The advice's verdict when the study is an advice check (specs/advice_check_study.h): what
 // `check-advice` prints, at the quantile and tolerance it judged with; nullopt for any other
 // ensemble.
 std::optional<ReportSection> AdviceCheckSection(const ReportContext& ctx,

@@ -11,7 +11,7 @@
 #include "core/input_error.h"
 #include "db/report_queries.h"
 #include "formats/output_file.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 #include "views/cost_front.h"
 #include "views/criteria_report.h"
 #include "views/fig4_plot.h"

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "db/read_only_query.h"
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 #include "validation/scores.h"
 
 namespace shockmap {

@@ -1,11 +1,11 @@
 #pragma once
 // The advice for a scene (validation/scene_advice.h) as the terminal shows it, with the outcome
 // of the check of that advice on the scene's own ensemble when one is recorded
-// (formats/advice_check_outcomes.h).
+// (specs/advice_check_outcomes.h).
 
 #include <string>
 
-#include "formats/advice_check_outcomes.h"
+#include "specs/advice_check_outcomes.h"
 #include "validation/scene_advice.h"
 
 namespace shockmap {

@@ -2,7 +2,7 @@
 // The pictures of `shockmap sizing` (docs/ensembles.md, "Pictures"), drawn with gnuplot: per
 // clearance state at its refined setting, the paper's Fig. 5b map coloured by the sizing value
 // (and, where the members have wear volumes, the same map of the wear volume's); per state and
-// zone family (the hottest wire, pad, pin-wrapper contact: formats/zone_family.h), the
+// zone family (the hottest wire, pad, pin-wrapper contact: specs/zone_family.h), the
 // convergence of its hottest zone's estimate with the number of members (its interval as a band)
 // and the histogram of that zone's maximum; per family, across states, the sizing force and wear
 // work rate, and across settings, the sizing force against the setting.

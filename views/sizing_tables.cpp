@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "formats/zone_family.h"
+#include "specs/zone_family.h"
 #include "statistics/wilks.h"
 #include "views/setting_names.h"
 #include "views/sizing_text.h"

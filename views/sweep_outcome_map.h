@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "formats/scene_study_spec.h"
+#include "specs/scene_study_spec.h"
 #include "validation/validity_criteria.h"
 
 namespace shockmap {

@@ -12,13 +12,13 @@
 #include "db/schema.h"
 #include "db/sqlite_handle.h"
 #include "engine/study_run.h"
-#include "formats/advice_check_outcomes.h"
-#include "formats/advice_check_study.h"
 #include "formats/criteria_json.h"
-#include "formats/ensemble_study_spec.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
-#include "formats/study_file.h"
+#include "specs/advice_check_outcomes.h"
+#include "specs/advice_check_study.h"
+#include "specs/ensemble_study_spec.h"
+#include "specs/study_file.h"
 #include "views/advice_check_text.h"
 
 namespace shockmap {

@@ -13,8 +13,8 @@
 #include "analysis/advice_check.h"
 #include "analysis/ensemble_sizing.h"
 #include "db/study_database.h"
-#include "formats/advice_check_outcomes.h"
 #include "formats/scene_file.h"
+#include "specs/advice_check_outcomes.h"
 #include "validation/scene_advice.h"
 #include "workflows/workflow_log.h"
 

@@ -22,7 +22,7 @@
 #include "formats/history_csv.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 #include "views/comparison_plot.h"
 #include "views/contact_force_map.h"
 #include "views/fig3_svg.h"

@@ -27,7 +27,7 @@
 
 #include "bench/cluster_model/cluster_simulation.h"
 #include "bench/cluster_model/task_costs.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "bench/cluster_model/cluster_simulation.h"
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 namespace shockmap {
 

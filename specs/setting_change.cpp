@@ -1,4 +1,4 @@
-#include "formats/setting_change.h"
+#include "specs/setting_change.h"
 
 #include <fmt/format.h>
 

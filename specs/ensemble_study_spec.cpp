@@ -1,4 +1,4 @@
-#include "formats/ensemble_study_spec.h"
+#include "specs/ensemble_study_spec.h"
 
 #include <fmt/format.h>
 
@@ -11,11 +11,11 @@
 #include "compare/scene_run.h"
 #include "core/input_error.h"
 #include "core/scene_model.h"
-#include "formats/advice_check_study.h"
 #include "formats/json_reader.h"
 #include "formats/output_file.h"
 #include "formats/parameter_path.h"
-#include "formats/study_spec.h"
+#include "specs/advice_check_study.h"
+#include "specs/study_spec.h"
 
 namespace shockmap {
 namespace {

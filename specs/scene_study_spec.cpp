@@ -1,4 +1,4 @@
-#include "formats/scene_study_spec.h"
+#include "specs/scene_study_spec.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "formats/json_reader.h"
 #include "formats/parameter_path.h"
 #include "formats/scene_file.h"
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 
 namespace shockmap {
 namespace {

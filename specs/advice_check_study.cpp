@@ -1,4 +1,4 @@
-#include "formats/advice_check_study.h"
+#include "specs/advice_check_study.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -1,11 +1,11 @@
-#include "formats/advice_check_outcomes.h"
+#include "specs/advice_check_outcomes.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "formats/ensemble_draws.h"
 #include "formats/json_reader.h"
+#include "specs/ensemble_draws.h"
 
 namespace shockmap {
 namespace {

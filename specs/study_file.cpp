@@ -1,4 +1,4 @@
-#include "formats/study_file.h"
+#include "specs/study_file.h"
 
 #include "core/input_error.h"
 #include "formats/json_reader.h"

@@ -1,4 +1,4 @@
-#include "formats/zone_family.h"
+#include "specs/zone_family.h"
 
 #include <algorithm>
 #include <cctype>

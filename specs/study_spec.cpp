@@ -1,4 +1,4 @@
-#include "formats/study_spec.h"
+#include "specs/study_spec.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ std::pair<std::string, std::string> ReadStudyTitle(JsonObjectReader& r, std::str
   std::string description = r.Text("description", "");
   if (const std::string given = r.String("kind", std::string(kind)); given != kind) {
     r.Fail("kind", "this reader takes \"" + std::string(kind) + "\" studies, got \"" + given +
-                       "\" (formats/study_file.h dispatches)");
+                       "\" (specs/study_file.h dispatches)");
   }
   return {std::move(name), std::move(description)};
 }

@@ -3,7 +3,7 @@
 // scene run as many members, each the scene under its own random draws (the scatter of numeric
 // parameters by path, and the pin and wrapper gaps of its clearance state), for every
 // clearance state and every numerical setting. Members are seeded reproducibly
-// (formats/ensemble_draws.h); the member count may grow, and only new members are computed.
+// (specs/ensemble_draws.h); the member count may grow, and only new members are computed.
 
 #include <cstdint>
 #include <nlohmann/json.hpp>
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/scene.h"
-#include "formats/ensemble_draws.h"
 #include "formats/scene_file.h"
+#include "specs/ensemble_draws.h"
 
 namespace shockmap {
 

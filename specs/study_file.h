@@ -3,11 +3,11 @@
 // kind's reader.
 //
 //   "kind": "canonical"    the paper's problem: grids of (R_k, R_ftrunc, dt) points
-//                          (formats/study_spec.h);
+//                          (specs/study_spec.h);
 //   "kind": "scene_sweep"  a scene file with a sweep of its numeric parameters
-//                          (formats/scene_study_spec.h);
+//                          (specs/scene_study_spec.h);
 //   "kind": "scene_ensemble"  a scene run as an ensemble of randomly drawn members, per
-//                          clearance state and numerical setting (formats/ensemble_study_spec.h).
+//                          clearance state and numerical setting (specs/ensemble_study_spec.h).
 // Files written before the field existed are still read: without "kind", a file naming a
 // "scene" is a scene sweep, any other a study of the paper's problem.
 
@@ -17,9 +17,9 @@
 #include <string_view>
 #include <variant>
 
-#include "formats/ensemble_study_spec.h"
-#include "formats/scene_study_spec.h"
-#include "formats/study_spec.h"
+#include "specs/ensemble_study_spec.h"
+#include "specs/scene_study_spec.h"
+#include "specs/study_spec.h"
 
 namespace shockmap {
 

@@ -1,4 +1,4 @@
-#include "formats/ensemble_draws.h"
+#include "specs/ensemble_draws.h"
 
 #include <algorithm>
 #include <cmath>
