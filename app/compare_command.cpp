@@ -4,29 +4,26 @@
 
 #include <algorithm>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "app/flag_checks.h"
 #include "compare/comparison.h"
-#include "compare/comparison_limits.h"
-#include "core/modal_basis.h"
-#include "core/transient_run.h"
+#include "compare/comparison_options.h"
 #include "formats/comparison_json.h"
 #include "formats/counted.h"
 #include "formats/history_csv.h"
 #include "formats/output_file.h"
-#include "specs/study_spec.h"
 #include "views/comparison_plot.h"
 
 namespace shockmap {
 namespace {
 
+// The declared options' values as CLI11 parses them (their defaults until given), and the
+// command's own flags.
 struct CompareFlags {
-  CantileverImpact problem;
-  ComparisonOptions options;
-  double dt_s = 0.0;
-  std::string dt_rule;  // The declared defaults, as AddDeclaredOption sets them.
-  std::string scheme;
+  std::map<const NumberOption*, double> numbers;
+  std::map<const ChoiceOption*, std::string> choices;
   std::string out_dir;
   bool json = false;
   bool plot = false;
@@ -51,19 +48,21 @@ void PrintShock(const char* label, const std::vector<Shock>& shocks) {
       Counted(s.Rebounds(), "rebound"));
 }
 
-void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
+void PrintHuman(const ComparisonRequest& request, const ComparisonResult& r) {
   const auto& ref = *r.reference;
   fmt::print("shockmap compare: R_k = {:g}, R_ftrunc = {:g}, {}, window [0, {:g}] s\n",
-             f.problem.r_k, f.options.r_ftrunc, ToString(f.options.scheme), f.options.window_s);
+             request.problem.r_k, request.options.r_ftrunc, ToString(request.options.scheme),
+             request.options.window_s);
   fmt::print("  status            {}{}\n", ToString(r.status),
              r.message.empty() ? "" : " (" + r.message + ")");
   for (const ScoreDefinition& score : Scores()) {
     fmt::print("  {:<18}{}  ({}: {})\n", score.label, Scored(r, score.name), score.source,
                score.meaning);
   }
-  if (f.options.scheme == Scheme::kExplicitModal) {
+  if (request.options.scheme == Scheme::kExplicitModal) {
     fmt::print("  modes kept        {} below f_trunc = {:.1f} Hz ({} elements, {} unknowns)\n",
-               r.n_modes, f.options.r_ftrunc * f.problem.F1Hz(), r.n_elements, r.n_dofs);
+               r.n_modes, request.options.r_ftrunc * request.problem.F1Hz(), r.n_elements,
+               r.n_dofs);
   } else {
     fmt::print("  model             the full FE model, {} elements, {} unknowns (no modal basis)\n",
                r.n_elements, r.n_dofs);
@@ -86,34 +85,36 @@ void PrintHuman(const CompareFlags& f, const ComparisonResult& r) {
              ref.wall_s, r.numerical.wall_s, r.numerical.cpu_s);
 }
 
-void Run(const CompareFlags& flags) {
-  CompareFlags f = flags;
-  if (f.dt_s > 0.0) f.options.dt.dt_s = f.dt_s;
-  if (f.options.reference.r_fref == 0.0)
-    f.options.reference.r_fref = ReferenceTruncationRule{}.For(f.problem.r_k);
-  f.options.dt.rule = *DtRuleFromString(f.dt_rule);
-  f.options.scheme = *SchemeFromString(f.scheme);
-  std::string error;
-  if (!f.problem.IsValid(&error) || !f.options.IsValid(&error)) throw InputError(error);
-  CheckComparisonAffordable(
-      f.problem, f.options,
-      {"--rftrunc", "--rfref", "--window", "--elements", "--dt", "--dt-factor"});
-  // The outputs are checked before the run and written before anything is reported.
-  if (!f.out_dir.empty()) PrepareOutputDirectory(f.out_dir, "--out");
-  const ComparisonResult result = RunComparison(f.problem, f.options);
-  std::optional<std::filesystem::path> png;
-  if (!f.out_dir.empty()) {
-    WriteComparisonCsv(result, f.out_dir);
-    if (f.plot) png = PlotComparison(result, f.problem, f.options, f.out_dir);
+// The options given on the command line, by declaration.
+GivenOptions Given(const CompareFlags& flags, const CLI::App& command) {
+  GivenOptions given;
+  for (const auto& [option, value] : flags.numbers) {
+    if (command.count(std::string(option->names.flag)) > 0) given.numbers[option] = value;
   }
-  if (f.json) {
-    std::cout << ComparisonToJson(f.problem, f.options, result).dump(2) << '\n';
+  for (const auto& [option, value] : flags.choices) {
+    if (command.count(std::string(option->names.flag)) > 0) given.choices[option] = value;
+  }
+  return given;
+}
+
+void Run(const CompareFlags& flags, const CLI::App& command) {
+  const ComparisonRequest request = ComparisonAsked(Given(flags, command), &OptionNames::flag);
+  // The outputs are checked before the run and written before anything is reported.
+  if (!flags.out_dir.empty()) PrepareOutputDirectory(flags.out_dir, "--out");
+  const ComparisonResult result = RunComparison(request.problem, request.options);
+  std::optional<std::filesystem::path> png;
+  if (!flags.out_dir.empty()) {
+    WriteComparisonCsv(result, flags.out_dir);
+    if (flags.plot) png = PlotComparison(result, request.problem, request.options, flags.out_dir);
+  }
+  if (flags.json) {
+    std::cout << ComparisonToJson(request.problem, request.options, result).dump(2) << '\n';
     return;
   }
-  PrintHuman(f, result);
+  PrintHuman(request, result);
   if (png) fmt::print("  plot              {}\n", png->string());
-  if (!f.out_dir.empty()) {
-    fmt::print("  histories         {}/numerical.csv, reference.csv\n", f.out_dir);
+  if (!flags.out_dir.empty()) {
+    fmt::print("  histories         {}/numerical.csv, reference.csv\n", flags.out_dir);
   }
 }
 
@@ -125,25 +126,26 @@ void AddCompareCommand(CLI::App& app) {
       "compare",
       "Run the numerical solver and the semi-analytical reference on the paper's "
       "beam-impact problem and score them (Err, SRf)");
-  AddDeclaredOption(cmd, kRkOption, flags->problem.r_k)->required();
-  AddDeclaredOption(cmd, kRftruncOption, flags->options.r_ftrunc)->required();
-  auto* dt = AddDeclaredOption(cmd, kDtOption, flags->dt_s);
-  AddDeclaredOption(cmd, kDtFactorOption, flags->options.dt.factor)->excludes(dt);
-  AddDeclaredOption(cmd, kDtRuleOption, flags->dt_rule)->excludes(dt);
-  AddDeclaredOption(cmd, kWindowOption, flags->options.window_s);
-  AddDeclaredOption(cmd, kSchemeOption, flags->scheme);
-  flags->options.reference.r_fref = 0.0;  // The studies' rule unless given.
-  AddDeclaredOption(cmd, kRfrefOption, flags->options.reference.r_fref);
-  AddDeclaredOption(cmd, kElementsOption, flags->options.n_elements);
+  for (const NumberOption* option : ComparisonNumberOptions()) {
+    CLI::Option* added = AddDeclaredOption(cmd, *option, flags->numbers[option]);
+    if (option->required) added->required();
+  }
+  for (const ChoiceOption* option : ComparisonChoiceOptions()) {
+    AddDeclaredOption(cmd, *option, flags->choices[option]);
+  }
+  // A step given in seconds leaves no bound to take a factor of.
+  CLI::Option* dt = cmd->get_option(std::string(kDtOption.names.flag));
+  cmd->get_option(std::string(kDtFactorOption.names.flag))->excludes(dt);
+  cmd->get_option(std::string(kDtRuleOption.names.flag))->excludes(dt);
   cmd->add_option("--out", flags->out_dir, "directory for the CSV histories (and the plot)");
   cmd->add_flag("--json", flags->json, "print the result as one JSON object");
   cmd->add_flag("--plot", flags->plot,
                 "draw the histories as the paper's Fig. 3 (PNG, needs --out)");
-  cmd->callback([flags] {
+  cmd->callback([flags, cmd] {
     if (flags->plot && flags->out_dir.empty()) {
       throw CLI::ValidationError("--plot", "needs --out DIR to write the CSV files and PNG into");
     }
-    Run(*flags);
+    Run(*flags, *cmd);
   });
 }
 

@@ -47,6 +47,7 @@ CLI::Option* AddDeclaredOption(CLI::App* command, const NumberOption& option, T&
   CLI::Option* added =
       command->add_option(std::string(option.names.flag), target, help)->check(Within(option));
   if (option.default_value) added->capture_default_str();
+  if (option.whole) added->type_name("INT");
   return added;
 }
 CLI::Option* AddDeclaredOption(CLI::App* command, const ChoiceOption& option, std::string& target);

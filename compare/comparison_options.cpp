@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "compare/comparison_limits.h"
+#include "compare/reference_run.h"
 #include "core/input_error.h"
 
 namespace shockmap {
@@ -53,6 +55,49 @@ void RequireOption(const NumberOption& option, std::string_view name, double val
 
 void RequireOption(const ChoiceOption& option, std::string_view name, std::string_view value) {
   if (!option.Contains(value)) throw InputError(fmt::format("{}: {}", name, option.Refusal(value)));
+}
+
+const NumberOption* ComparisonNumberOption(std::string_view name, OptionSpelling spelling) {
+  for (const NumberOption* o : ComparisonNumberOptions()) {
+    if (o->names.*spelling == name) return o;
+  }
+  return nullptr;
+}
+
+const ChoiceOption* ComparisonChoiceOption(std::string_view name, OptionSpelling spelling) {
+  for (const ChoiceOption* o : ComparisonChoiceOptions()) {
+    if (o->names.*spelling == name) return o;
+  }
+  return nullptr;
+}
+
+ComparisonRequest ComparisonAsked(const GivenOptions& given, OptionSpelling spelling) {
+  ComparisonRequest request;
+  for (const NumberOption* o : ComparisonNumberOptions()) {
+    const auto value = given.numbers.find(o);
+    if (value == given.numbers.end()) {
+      if (o->required)
+        throw InputError(fmt::format("{}: required, {}", o->names.*spelling, o->Allowed()));
+      continue;
+    }
+    RequireOption(*o, o->names.*spelling, value->second);
+    o->set(request, value->second);
+  }
+  for (const auto& [option, value] : given.choices) {
+    RequireOption(*option, option->names.*spelling, value);
+    option->set(request, value);
+  }
+  if (!given.numbers.contains(&kRfrefOption)) {
+    request.options.reference.r_fref = ReferenceTruncationRule{}.For(request.problem.r_k);
+  }
+  std::string error;
+  if (!request.problem.IsValid(&error) || !request.options.IsValid(&error)) throw InputError(error);
+  CheckComparisonAffordable(
+      request.problem, request.options,
+      {std::string(kRftruncOption.names.*spelling), std::string(kRfrefOption.names.*spelling),
+       std::string(kWindowOption.names.*spelling), std::string(kElementsOption.names.*spelling),
+       std::string(kDtOption.names.*spelling), std::string(kDtFactorOption.names.*spelling)});
+  return request;
 }
 
 std::string MeshCost(double elements) {

@@ -8,7 +8,6 @@
 #include <string>
 
 #include "compare/comparison.h"
-#include "compare/comparison_limits.h"
 #include "compare/comparison_options.h"
 #include "compare/output_columns.h"
 #include "engine/point_replay.h"
@@ -91,39 +90,31 @@ py::dict ScoreDict(const ComparisonResult& r) {
   return d;
 }
 
-// `value` when `option` contains it; InputError naming its keyword otherwise.
-double Checked(const NumberOption& option, double value) {
-  RequireOption(option, option.names.keyword, value);
-  return value;
+// The options given by keyword (None: not given), each read as its declaration's type; an
+// unknown keyword is refused naming the declared ones.
+GivenOptions GivenByKeyword(const py::dict& keywords) {
+  GivenOptions given;
+  for (const auto& [key, value] : keywords) {
+    const std::string keyword = py::str(key);
+    if (value.is_none()) continue;
+    if (const NumberOption* o = ComparisonNumberOption(keyword, &OptionNames::keyword)) {
+      given.numbers[o] = value.cast<double>();
+    } else if (const ChoiceOption* c = ComparisonChoiceOption(keyword, &OptionNames::keyword)) {
+      given.choices[c] = value.cast<std::string>();
+    } else {
+      throw InputError("compare(): unknown keyword \"" + keyword + "\"; see COMPARE_OPTIONS");
+    }
+  }
+  return given;
 }
 
-const std::string& Checked(const ChoiceOption& option, const std::string& value) {
-  RequireOption(option, option.names.keyword, value);
-  return value;
-}
-
-// The element count as a double, so that a Python int beyond a C int is named by the range.
-Comparison Compare(double r_k, double r_ftrunc, std::optional<double> dt_s, double dt_factor,
-                   const std::string& dt_rule, double window_s, const std::string& scheme,
-                   std::optional<double> r_fref, double elements) {
-  CantileverImpact problem;
-  problem.r_k = Checked(kRkOption, r_k);
-  ComparisonOptions options;
-  options.r_ftrunc = Checked(kRftruncOption, r_ftrunc);
-  if (dt_s) options.dt.dt_s = Checked(kDtOption, *dt_s);
-  options.dt.factor = Checked(kDtFactorOption, dt_factor);
-  options.dt.rule = *DtRuleFromString(Checked(kDtRuleOption, dt_rule));
-  options.scheme = *SchemeFromString(Checked(kSchemeOption, scheme));
-  options.window_s = Checked(kWindowOption, window_s);
-  if (r_fref) options.reference.r_fref = Checked(kRfrefOption, *r_fref);
-  options.n_elements = static_cast<int>(Checked(kElementsOption, elements));
-  std::string error;
-  if (!problem.IsValid(&error) || !options.IsValid(&error)) throw InputError(error);
-  CheckComparisonAffordable(problem, options,
-                            {"rftrunc", "rfref", "window_s", "elements", "dt", "dt_factor"});
+// compare()'s keywords, as shockmap/__init__.py passes them (numbers as float, words as str).
+Comparison Compare(const py::dict& keywords) {
+  const ComparisonRequest request =
+      ComparisonAsked(GivenByKeyword(keywords), &OptionNames::keyword);
   py::gil_scoped_release release;
-  return {std::make_shared<const ComparisonResult>(RunComparison(problem, options)), problem,
-          options};
+  return {std::make_shared<const ComparisonResult>(RunComparison(request.problem, request.options)),
+          request.problem, request.options};
 }
 
 Comparison Point(const std::string& database_path, const std::string& study,
@@ -157,6 +148,7 @@ py::dict OptionDict(const NumberOption& o) {
   d["low_strict"] = o.low_strict;
   d["high"] = o.high;
   d["whole"] = o.whole;
+  d["required"] = o.required;
   d["allowed"] = o.Allowed();
   return d;
 }
@@ -218,9 +210,7 @@ void BindComparison(py::module_& m) {
           [](const Comparison& c) { return ShockList(c.result->reference->shocks); })
       .def_property_readonly("numerical", &NumericalHistories)
       .def_property_readonly("reference", &ReferenceHistories);
-  m.def("compare", &Compare, py::arg("rk"), py::arg("rftrunc"), py::arg("dt"), py::arg("dt_factor"),
-        py::arg("dt_rule"), py::arg("window_s"), py::arg("scheme"), py::arg("rfref"),
-        py::arg("elements"));
+  m.def("compare", &Compare, py::arg("keywords"));
   m.def("compare_options", &ComparisonOptionDicts,
         "The options of compare() as declared once for the command line, Python and study files");
   m.def("point", &Point, py::arg("db"), py::arg("study"), py::arg("point_id"));

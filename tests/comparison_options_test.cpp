@@ -1,6 +1,7 @@
 // The options of a comparison (compare/comparison_options.h): the command line and the study
 // files take each declared default and refuse each value outside its declared range, saying what
-// is allowed. (python/tests/test_options.py holds Python to the same, beside both.)
+// is allowed; the request both the command line and Python make from their options.
+// (python/tests/test_options.py holds Python to the same, beside both.)
 
 #include <gtest/gtest.h>
 
@@ -150,6 +151,67 @@ TEST(ComparisonOptions, TheCommandLineTakesTheDeclaredDefaults) {
   // The declared 0 asks for the default mesh of the truncation.
   ASSERT_EQ(*kElementsOption.default_value, 0.0);
   EXPECT_EQ(j.at("n_elements").get<int>(), DefaultElementCount(kRftrunc));
+}
+
+// The message of the InputError `asked` throws, or "" when it throws none.
+template <typename Call>
+std::string Refusal(Call asked) {
+  try {
+    asked();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ComparisonOptions, ARequestIsEachGivenValueSetThroughItsDeclaration) {
+  GivenOptions given;
+  given.numbers = {{&kRkOption, 1e6},
+                   {&kRftruncOption, 30.0},
+                   {&kDtFactorOption, 0.5},
+                   {&kWindowOption, 0.01},
+                   {&kElementsOption, 40.0}};
+  given.choices = {{&kDtRuleOption, "paper"}, {&kSchemeOption, "implicit-full"}};
+  ComparisonRequest r = ComparisonAsked(given, &OptionNames::keyword);
+  EXPECT_EQ(r.problem.r_k, 1e6);
+  EXPECT_EQ(r.options.r_ftrunc, 30.0);
+  EXPECT_EQ(r.options.dt.factor, 0.5);
+  EXPECT_EQ(r.options.dt.dt_s, TimeStepRequest{}.dt_s);
+  EXPECT_EQ(r.options.dt.rule, DtRule::kPaper);
+  EXPECT_EQ(r.options.window_s, 0.01);
+  EXPECT_EQ(r.options.n_elements, 40);
+  EXPECT_EQ(r.options.scheme, Scheme::kImplicitFull);
+  // Not given, the reference's truncation follows the studies' rule, max(3000, 10 sqrt(R_k)),
+  // on every front end.
+  EXPECT_EQ(r.options.reference.r_fref, 1e4);
+  given.numbers[&kRfrefOption] = 5000.0;
+  given.numbers[&kDtOption] = 1e-5;
+  r = ComparisonAsked(given, &OptionNames::flag);
+  EXPECT_EQ(r.options.reference.r_fref, 5000.0);
+  EXPECT_EQ(r.options.dt.dt_s, 1e-5);
+}
+
+TEST(ComparisonOptions, ARequestIsRefusedAsItsFrontEndSpellsTheOption) {
+  GivenOptions given;
+  given.numbers = {{&kRftruncOption, kRftrunc}};
+  EXPECT_EQ(Refusal([&] { ComparisonAsked(given, &OptionNames::flag); }),
+            "--rk: required, " + kRkOption.Allowed());
+  EXPECT_EQ(Refusal([&] { ComparisonAsked(given, &OptionNames::keyword); }),
+            "rk: required, " + kRkOption.Allowed());
+  given.numbers[&kRkOption] = kRk;
+  given.numbers[&kWindowOption] = 200.0;
+  EXPECT_EQ(Refusal([&] { ComparisonAsked(given, &OptionNames::keyword); }),
+            "window_s: " + kWindowOption.Refusal(200.0));
+  given.numbers.erase(&kWindowOption);
+  given.choices[&kSchemeOption] = "fast";
+  EXPECT_EQ(Refusal([&] { ComparisonAsked(given, &OptionNames::flag); }),
+            "--scheme: " + kSchemeOption.Refusal("fast"));
+  // Within every range but more steps than a run may take: named by its spelling too.
+  given.choices.clear();
+  given.numbers[&kDtOption] = 1e-9;
+  given.numbers[&kWindowOption] = 1.0;
+  EXPECT_EQ(Refusal([&] { ComparisonAsked(given, &OptionNames::keyword); }).rfind("dt: 1e-09 s", 0),
+            0u);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@ Runs release the GIL, so Python threads run several at once. Bad input raises In
 ValueError) with the command line's own message; database faults raise DatabaseError.
 """
 
+import inspect as _inspect
 import json as _json
 
 try:
@@ -80,19 +81,36 @@ def _database(db):
 COMPARE_OPTIONS = {option["keyword"]: option for option in _shockmap.compare_options()}
 
 
-def _compare_default(keyword):
-    return COMPARE_OPTIONS[keyword]["default"]
+def _compare_signature():
+    """compare()'s signature, made from the declarations: the required options first, then the
+    others keyword-only with their declared defaults (None where a rule sets the value)."""
+    required = [_inspect.Parameter(keyword, _inspect.Parameter.POSITIONAL_OR_KEYWORD)
+                for keyword, option in COMPARE_OPTIONS.items() if option.get("required")]
+    optional = [_inspect.Parameter(keyword, _inspect.Parameter.KEYWORD_ONLY,
+                                   default=option["default"])
+                for keyword, option in COMPARE_OPTIONS.items() if not option.get("required")]
+    return _inspect.Signature(required + optional)
 
 
-def compare(rk, rftrunc, *, dt=None, dt_factor=_compare_default("dt_factor"),
-            dt_rule=_compare_default("dt_rule"), window_s=_compare_default("window_s"),
-            scheme=_compare_default("scheme"), rfref=None,
-            elements=_compare_default("elements")):
+def _option_value(keyword, value):
+    """A value of a declared option as the library reads it: a word as str, a number as float;
+    None (not given) as it is."""
+    if value is None:
+        return None
+    if "choices" in COMPARE_OPTIONS[keyword]:
+        return _text(keyword, value)
+    return _real(value)
+
+
+def compare(*args, **kwargs):
     """One run of the paper's problem scored against its reference, as `shockmap compare`;
-    each option's help, unit and range are in COMPARE_OPTIONS."""
-    return _shockmap.compare(float(rk), float(rftrunc), dt, float(dt_factor),
-                             _text("dt_rule", dt_rule), float(window_s), _text("scheme", scheme),
-                             rfref, _real(elements))
+    each option's help, unit and range are in COMPARE_OPTIONS, from which the signature is made."""
+    given = compare.__signature__.bind(*args, **kwargs).arguments
+    return _shockmap.compare({keyword: _option_value(keyword, value)
+                              for keyword, value in given.items()})
+
+
+compare.__signature__ = _compare_signature()
 
 
 def _score(self, name):

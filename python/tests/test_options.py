@@ -78,6 +78,14 @@ def test_python_keywords_default_to_the_declaration():
             inspect.Parameter.empty if keyword in ("rk", "rftrunc") else None), keyword
 
 
+def test_python_and_the_command_line_take_the_same_reference_truncation(cli):
+    """Without rfref, both apply the studies' rule max(3000, 10 sqrt(R_k)): 1e4 at R_k = 1e6."""
+    arguments = {"rk": 1e6, "rftrunc": RFTRUNC, "window_s": 0.005}
+    command_line = json.loads(cli("compare", *_flags(arguments), "--json").stdout)
+    python = shockmap.compare(**arguments).summary
+    assert command_line["r_fref"] == python["r_fref"] == 1e4
+
+
 def test_the_three_front_ends_run_the_declared_defaults(cli, stored_point):
     command_line = json.loads(cli("compare", *_flags({"rk": RK, "rftrunc": RFTRUNC}),
                                   "--json").stdout)
