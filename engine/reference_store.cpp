@@ -3,7 +3,9 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <type_traits>
 
 #include "db/stored_json.h"
 #include "formats/comparison_json.h"
@@ -35,6 +37,31 @@ Shock ShockFromJson(const nlohmann::json& j, const StoredCell& cell) {
   return s;
 }
 
+// Calls visit(row's member, run's member) for each value a stored reference keeps as its run
+// holds it: the one list ToReferenceRow and FromReferenceRow copy through, in opposite
+// directions. `Row` and `Run` are ReferenceRow and ReferenceRun, either of them const.
+template <typename Row, typename Run, typename Visit>
+void VisitStoredValues(Row& row, Run& run, Visit visit) {
+  visit(row.r_fref, run.convergence.r_fref);
+  visit(row.r_fref_check, run.convergence.r_fref_check);
+  visit(row.convergence, run.convergence.difference);
+  visit(row.estimate_tip, run.convergence.tip.error);
+  visit(row.estimate_impulse, run.convergence.impulse.error);
+  visit(row.estimate_err, run.convergence.induced_err.error);
+  visit(row.n_modes_free, run.summary.n_modes_free);
+  visit(row.n_modes_contact, run.summary.n_modes_contact);
+  visit(row.n_transitions, run.summary.n_transitions);
+  visit(row.wall_s, run.wall_s);
+  visit(row.output_dt_s, run.tip_m.dt_s);  // The force's samples are the tip's.
+  visit(row.tip_m, run.tip_m.values);
+  visit(row.force_n, run.force_n.values);
+}
+
+template <typename T>
+constexpr bool kIsOptional = false;
+template <typename T>
+constexpr bool kIsOptional<std::optional<T>> = true;
+
 }  // namespace
 
 ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& reference_key, double r_k,
@@ -42,20 +69,8 @@ ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& referenc
   ReferenceRow row;
   row.reference_key = reference_key;
   row.r_k = r_k;
-  row.r_fref = run.convergence.r_fref;
-  row.r_fref_check = run.convergence.r_fref_check;
   row.window_s = window_s;
-  row.convergence = run.convergence.difference;
-  row.estimate_tip = run.convergence.tip.error;
-  row.estimate_impulse = run.convergence.impulse.error;
-  row.estimate_err = run.convergence.induced_err.error;
-  row.n_modes_free = run.summary.n_modes_free;
-  row.n_modes_contact = run.summary.n_modes_contact;
-  row.n_transitions = run.summary.n_transitions;
-  row.wall_s = run.wall_s;
-  row.output_dt_s = run.tip_m.dt_s;
-  row.tip_m = run.tip_m.values;
-  row.force_n = run.force_n.values;
+  VisitStoredValues(row, run, [](auto& stored, const auto& value) { stored = value; });
   nlohmann::json shocks = nlohmann::json::array();
   for (const auto& s : run.shocks) shocks.push_back(ShockToJson(s));
   row.shocks_json = shocks.dump();
@@ -64,8 +79,15 @@ ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& referenc
 
 ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& database_path) {
   ReferenceRun run;
-  run.tip_m = {0.0, row.output_dt_s, row.tip_m};
-  run.force_n = {0.0, row.output_dt_s, row.force_n};
+  VisitStoredValues(row, run, [&row](const auto& stored, auto& value) {
+    // A reference stored before its parts were has its whole estimate as each part's bound.
+    if constexpr (kIsOptional<std::decay_t<decltype(stored)>>) {
+      value = stored.value_or(row.convergence);
+    } else {
+      value = stored;
+    }
+  });
+  run.force_n.dt_s = run.tip_m.dt_s;
   const StoredCell cell{database_path, "reference " + std::to_string(row.reference_id),
                         "shocks_json"};
   run.shocks = ReadStoredJson(cell, row.shocks_json, [&cell](const nlohmann::json& shocks) {
@@ -75,17 +97,6 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
     }
     return read;
   });
-  run.summary.n_modes_free = row.n_modes_free;
-  run.summary.n_modes_contact = row.n_modes_contact;
-  run.summary.n_transitions = row.n_transitions;
-  run.convergence.r_fref = row.r_fref;
-  run.convergence.r_fref_check = row.r_fref_check;
-  run.convergence.difference = row.convergence;
-  // A reference stored before its parts were has its whole estimate as each part's bound.
-  run.convergence.tip.error = row.estimate_tip.value_or(row.convergence);
-  run.convergence.impulse.error = row.estimate_impulse.value_or(row.convergence);
-  run.convergence.induced_err.error = row.estimate_err.value_or(row.convergence);
-  run.wall_s = row.wall_s;
   return run;
 }
 
