@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "compare/output_columns.h"
 #include "compare/score_columns.h"
 
 namespace shockmap {
@@ -75,24 +76,12 @@ SceneScore ScoreSceneRun(const Scene& scene, const SceneRun& run,
 std::vector<EnsembleZoneRow> MemberZoneRows(const Scene& scene, const SceneRun& run) {
   std::vector<EnsembleZoneRow> zones(run.max_contact_force_n.size());
   for (std::size_t i = 0; i < zones.size(); ++i) {
-    EnsembleZoneRow& z = zones[i];
-    z.max_force_n = run.max_contact_force_n[i];
+    // The run's largest force over its whole time, where the statistics' is over their window.
+    zones[i].max_force_n = run.max_contact_force_n[i];
     if (i >= run.impact_statistics.size()) continue;
-    const ImpactStatistics& s = run.impact_statistics[i];
-    z.impacts = s.impacts;
-    z.impacts_per_s = s.impacts_per_s;
-    z.rebounds_per_impact = s.rebounds_per_impact;
-    z.mean_impact_duration_s = s.mean_impact_duration_s;
-    z.longest_impact_duration_s = s.longest_impact_duration_s;
-    z.contact_time_fraction = s.contact_time_fraction;
-    z.mean_force_n = s.mean_force_n;
-    z.mean_force_in_contact_n = s.mean_force_in_contact_n;
-    z.rms_force_n = s.rms_force_n;
-    z.impulse_n_s = s.impulse_n_s;
-    if (s.wear_available) z.wear_work_rate_w = s.wear_work_rate_w;
-    if (scene.wear && s.wear_available)
-      z.wear_volume_m3 = ArchardWearVolume(*scene.wear, s.wear_work_rate_w);
-    if (std::isfinite(s.friction_power_w)) z.friction_power_w = s.friction_power_w;
+    SetColumnsFromOutputs(zones[i], kEnsembleZoneColumns,
+                          ZoneImpactStatistics{run.impact_statistics[i], scene.wear},
+                          kImpactStatisticsColumns, {"max_force_n"});
   }
   return zones;
 }
@@ -103,18 +92,10 @@ std::vector<EnsembleImpactRow> MemberImpactRows(const Scene& scene, const SceneR
   for (const int zone : scene.outputs.impact_table_zones) {
     const auto& records = run.impact_statistics[static_cast<std::size_t>(zone)].records;
     for (std::size_t k = 0; k < records.size(); ++k) {
-      const ImpactRecord& r = records[k];
       EnsembleImpactRow& row = rows.emplace_back();
       row.zone = zone;
       row.impact = static_cast<std::int64_t>(k) + 1;
-      row.start_s = r.start_s;
-      row.duration_s = r.duration_s;
-      row.peak_force_n = r.peak_force_n;
-      row.peak_time_s = r.peak_time_s;
-      row.impulse_n_s = r.impulse_n_s;
-      if (std::isfinite(r.impact_speed_m_s)) row.impact_speed_m_s = r.impact_speed_m_s;
-      row.rebounds = r.contacts - 1;
-      row.truncated = r.truncated ? 1 : 0;
+      SetColumnsFromOutputs(row, kEnsembleImpactColumns, records[k], kImpactRecordColumns);
     }
   }
   return rows;

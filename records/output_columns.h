@@ -5,9 +5,14 @@
 // header and rows, the JSON objects and the Python dicts are derived from that table
 // (formats/output_values.h, python/); no header is written by hand.
 
+#include <algorithm>
 #include <cstdint>
+#include <initializer_list>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -33,6 +38,70 @@ std::vector<OutputValue> OutputValuesOf(const T& x, const Columns& columns) {
   std::vector<OutputValue> values;
   for (const OutputColumn<T>& c : columns) values.push_back(c.value(x));
   return values;
+}
+
+namespace detail {
+
+template <typename T>
+struct HeldType {
+  using type = T;
+};
+template <typename T>
+struct HeldType<std::optional<T>> {
+  using type = T;
+};
+
+// Whether a member holding `Held` takes an output value of type V: a text a text, a real a real,
+// a flag or an integer any number.
+template <typename Held, typename V>
+constexpr bool kTakes = std::is_same_v<V, std::string> ? std::is_same_v<Held, std::string>
+                        : std::is_floating_point_v<V>  ? std::is_floating_point_v<Held>
+                                                       : std::is_arithmetic_v<Held>;
+
+// `member` set to `value`: none empties an optional member; a flag, an integer, a real or a text
+// is assigned to a member that takes it (a flag as 0 or 1). Throws std::logic_error for a value
+// the member cannot hold: a record and an output declared apart that disagree on a column.
+template <typename Member>
+void AssignOutputValue(Member& member, const OutputValue& value, std::string_view name) {
+  std::visit(
+      [&](const auto& v) {
+        using V = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<V, std::monostate>) {
+          if constexpr (requires { member.reset(); }) {
+            member.reset();
+          } else {
+            throw std::logic_error("output column " + std::string(name) +
+                                   " is none where its record's column cannot be NULL");
+          }
+        } else if constexpr (kTakes<typename HeldType<Member>::type, V>) {
+          member = static_cast<typename HeldType<Member>::type>(v);
+        } else {
+          throw std::logic_error("output column " + std::string(name) +
+                                 " does not fit its record's column");
+        }
+      },
+      value);
+}
+
+}  // namespace detail
+
+// Sets each column of `record` whose name an output column of `x` has (but those in `except`)
+// to that output's value: a record filled from the declarations that write `x` to CSV and JSON
+// instead of member by member, so that a value added to both tables reaches the database by
+// itself. The record's other columns are left as they are.
+template <typename Record, typename T>
+void SetColumnsFromOutputs(Record& record, const auto& record_columns, const T& x,
+                           const auto& output_columns,
+                           std::initializer_list<std::string_view> except = {}) {
+  for (const Column<Record>& column : record_columns) {
+    if (std::ranges::find(except, column.name) != except.end()) continue;
+    for (const OutputColumn<T>& output : output_columns) {
+      if (output.name != column.name) continue;
+      VisitColumn(column, record, [&](auto& member) {
+        detail::AssignOutputValue(member, output.value(x), output.name);
+      });
+    }
+  }
 }
 
 }  // namespace shockmap

@@ -10,8 +10,10 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,6 +25,7 @@
 #include "engine/record_codec.h"
 #include "records/canonical_records.h"
 #include "records/ensemble_records.h"
+#include "records/output_columns.h"
 #include "records/scene_records.h"
 #include "tests/temp_dir.h"
 #include "validation/scores.h"
@@ -352,6 +355,59 @@ TEST_F(RecordsTest, ViewsWrittenByHandByEarlierVersionsAreAcceptedWithTheirLayou
     EXPECT_EQ(WithoutLayout(ViewSqlOf(seed, view.name)), WithoutLayout(CreateViewSql(view)));
     EXPECT_EQ(ColumnsOf(seed, view.name), ColumnsOf(fresh, view.name));
   }
+}
+
+// A record and an output of the same value, declared apart (records/output_columns.h).
+struct SampleRecord {
+  std::int64_t count = 0, flag = 0;
+  double kept = -1.0;
+  std::optional<double> rate = 7.0;
+  std::string label;
+};
+inline constexpr Column<SampleRecord> kSampleColumns[] = {
+    {"count", &SampleRecord::count, "", "a count"},
+    {"flag", &SampleRecord::flag, "", "a flag"},
+    {"kept", &SampleRecord::kept, "", "not taken from the outputs"},
+    {"rate", &SampleRecord::rate, "1/s", "a rate, none when unknown"},
+    {"label", &SampleRecord::label, "", "a text"},
+};
+struct SampleValue {
+  int count;
+  bool flag;
+  double kept;
+  double rate;
+};
+inline constexpr OutputColumn<SampleValue> kSampleOutputs[] = {
+    {"count", [](const SampleValue& v) -> OutputValue { return std::int64_t{v.count}; }, "", ""},
+    {"flag", [](const SampleValue& v) -> OutputValue { return v.flag; }, "", ""},
+    {"kept", [](const SampleValue& v) -> OutputValue { return v.kept; }, "", ""},
+    {"rate",
+     [](const SampleValue& v) -> OutputValue {
+       if (v.rate < 0.0) return {};
+       return v.rate;
+     },
+     "1/s", ""},
+    {"only_in_outputs", [](const SampleValue&) -> OutputValue { return 1.0; }, "", ""},
+};
+inline constexpr OutputColumn<SampleValue> kMismatchedOutputs[] = {
+    {"label", [](const SampleValue& v) -> OutputValue { return v.kept; }, "", ""},
+};
+
+TEST(SetColumnsFromOutputs, SetsTheRecordsColumnsTheOutputsName) {
+  SampleRecord r;
+  SetColumnsFromOutputs(r, kSampleColumns, SampleValue{3, true, 2.5, -1.0}, kSampleOutputs,
+                        {"kept"});
+  EXPECT_EQ(r.count, 3);
+  EXPECT_EQ(r.flag, 1);
+  EXPECT_EQ(r.kept, -1.0);           // Left out by `except`.
+  EXPECT_FALSE(r.rate.has_value());  // None empties it.
+  EXPECT_EQ(r.label, "");            // No output of that name.
+  SetColumnsFromOutputs(r, kSampleColumns, SampleValue{4, false, 2.5, 0.25}, kSampleOutputs);
+  EXPECT_EQ(r.flag, 0);
+  EXPECT_EQ(r.kept, 2.5);
+  EXPECT_EQ(r.rate, 0.25);
+  EXPECT_THROW(SetColumnsFromOutputs(r, kSampleColumns, SampleValue{}, kMismatchedOutputs),
+               std::logic_error);
 }
 
 }  // namespace
