@@ -12,19 +12,13 @@
 namespace shockmap {
 namespace {
 
-// Cost, bounds and the largest force of a run; the first shock of the scored zone.
+// Cost, bounds and the largest force of a run; the first shock of the scored zone. The columns
+// `simulate`'s summary also writes (the model's size, the step's bounds, the step count, the
+// times, the energy ratio) come from kSceneRunColumns.
 SceneScoreRow Measure(const Scene& scene, const SceneRun& run) {
-  const RunSummary& s = run.result.summary;
   SceneScoreRow score;
-  score.coordinates = run.coordinates;
-  score.zones = static_cast<int>(scene.zones.size());
-  score.dt_used_s = s.dt_used_s;
-  score.dt_paper_s = run.bounds.dt_paper_s;
-  score.dt_sharp_s = run.bounds.dt_sharp_s;
-  score.steps = s.steps_taken;
-  score.wall_s = s.wall_s;
-  score.cpu_s = s.cpu_s;
-  score.max_energy_ratio = s.max_energy_ratio;
+  SetColumnsFromOutputs(score, kSceneScoreColumns, SceneRunOutput{scene, run}, kSceneRunColumns);
+  score.dt_used_s = run.result.summary.dt_used_s;
   const auto largest =
       std::max_element(run.max_contact_force_n.begin(), run.max_contact_force_n.end());
   score.largest_force_n = *largest;

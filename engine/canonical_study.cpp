@@ -4,6 +4,7 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "compare/output_columns.h"
 #include "compare/score_columns.h"
 #include "compare/score_spread.h"
 #include "engine/record_codec.h"
@@ -13,21 +14,18 @@
 namespace shockmap {
 namespace {
 
-ScoreRow ToScoreRow(const ComparisonResult& r, std::int64_t reference_id) {
+// The point's score row: the columns `compare --json` also writes (the model's size, the step,
+// its bounds, the step count, the energy ratio) from kComparisonColumns, the scores from the
+// registry, and the rest from the run.
+ScoreRow ToScoreRow(const ComparisonOutput& c, std::int64_t reference_id) {
+  const ComparisonResult& r = c.result;
   ScoreRow s;
   s.reference_id = reference_id;
   SetScoreColumns(s, kScoreColumns, r.scores);
-  s.n_modes = r.n_modes;
-  s.n_elements = r.n_elements;
-  s.n_dofs = r.n_dofs;
-  s.dt_requested_s = r.numerical.dt_requested_s;
+  SetColumnsFromOutputs(s, kScoreColumns, c, kComparisonColumns);
   s.dt_used_s = r.numerical.dt_used_s;
-  s.dt_paper_s = r.bounds.dt_paper_s;
-  s.dt_sharp_s = r.bounds.dt_sharp_s;
-  s.steps = r.numerical.steps_taken;
   s.wall_s = r.numerical.wall_s;
   s.cpu_s = r.numerical.cpu_s;
-  s.max_energy_ratio = r.numerical.max_energy_ratio;
   s.n_shocks = static_cast<int>(r.shocks_numerical.size());
   nlohmann::json shocks = nlohmann::json::array();
   for (const auto& shock : r.shocks_numerical) shocks.push_back(ShockToJson(shock));
@@ -130,7 +128,7 @@ CanonicalStudy::Outcome CanonicalStudy::Score(const Point& point, const Referenc
         problem, options, reference.run, RecordedHistories::kScored, ShortRunTiming(spec_.scoring));
     out.status = r.status;
     out.message = r.message;
-    out.score = ToScoreRow(r, reference_id);
+    out.score = ToScoreRow({problem, options, r}, reference_id);
     if (r.status == RunStatus::kOk && point.r_k >= spec_.scoring.spread_from_rk)
       SetSpread(*out.score, SpreadAgainstReference(problem, options, r));
   } catch (const std::exception& e) {
