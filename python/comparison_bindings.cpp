@@ -91,7 +91,7 @@ py::dict ScoreDict(const ComparisonResult& r) {
 }
 
 // The options given by keyword (None: not given), each read as its declaration's type; an
-// unknown keyword is refused naming the declared ones.
+// unknown keyword (shockmap.compare() binds its own signature first) is an InputError.
 GivenOptions GivenByKeyword(const py::dict& keywords) {
   GivenOptions given;
   for (const auto& [key, value] : keywords) {
