@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "compare/comparison_limits.h"
-#include "compare/reference_run.h"
 #include "core/input_error.h"
 
 namespace shockmap {
@@ -57,18 +56,26 @@ void RequireOption(const ChoiceOption& option, std::string_view name, std::strin
   if (!option.Contains(value)) throw InputError(fmt::format("{}: {}", name, option.Refusal(value)));
 }
 
-const NumberOption* ComparisonNumberOption(std::string_view name, OptionSpelling spelling) {
-  for (const NumberOption* o : ComparisonNumberOptions()) {
+namespace {
+
+// The option of `options` spelled `name`, or nullptr.
+template <typename Option>
+const Option* Spelled(std::span<const Option* const> options, std::string_view name,
+                      OptionSpelling spelling) {
+  for (const Option* o : options) {
     if (o->names.*spelling == name) return o;
   }
   return nullptr;
 }
 
+}  // namespace
+
+const NumberOption* ComparisonNumberOption(std::string_view name, OptionSpelling spelling) {
+  return Spelled(ComparisonNumberOptions(), name, spelling);
+}
+
 const ChoiceOption* ComparisonChoiceOption(std::string_view name, OptionSpelling spelling) {
-  for (const ChoiceOption* o : ComparisonChoiceOptions()) {
-    if (o->names.*spelling == name) return o;
-  }
-  return nullptr;
+  return Spelled(ComparisonChoiceOptions(), name, spelling);
 }
 
 ComparisonRequest ComparisonAsked(const GivenOptions& given, OptionSpelling spelling) {
@@ -87,16 +94,13 @@ ComparisonRequest ComparisonAsked(const GivenOptions& given, OptionSpelling spel
     RequireOption(*option, option->names.*spelling, value);
     option->set(request, value);
   }
-  if (!given.numbers.contains(&kRfrefOption)) {
-    request.options.reference.r_fref = ReferenceTruncationRule{}.For(request.problem.r_k);
+  // The rules read the values given, so they come after them.
+  for (const NumberOption* o : ComparisonNumberOptions()) {
+    if (o->rule != nullptr && !given.numbers.contains(o)) o->rule(request);
   }
   std::string error;
   if (!request.problem.IsValid(&error) || !request.options.IsValid(&error)) throw InputError(error);
-  CheckComparisonAffordable(
-      request.problem, request.options,
-      {std::string(kRftruncOption.names.*spelling), std::string(kRfrefOption.names.*spelling),
-       std::string(kWindowOption.names.*spelling), std::string(kElementsOption.names.*spelling),
-       std::string(kDtOption.names.*spelling), std::string(kDtFactorOption.names.*spelling)});
+  CheckComparisonAffordable(request.problem, request.options, spelling);
   return request;
 }
 

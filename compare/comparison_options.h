@@ -55,6 +55,9 @@ struct NumberOption {
   bool required = false;
   // Puts a value given into the request; nullptr for an option no comparison takes.
   void (*set)(ComparisonRequest& request, double value) = nullptr;
+  // Sets the value of an option not given from the rest of the request (the rule its help
+  // states), or nullptr: the default stands.
+  void (*rule)(ComparisonRequest& request) = nullptr;
 
   bool Contains(double value) const;
   // What is allowed: "> 0 and <= 1e+12", "a whole number from 0 to 1500".
@@ -162,7 +165,6 @@ inline const NumberOption kElementsOption{
     .beyond_high = &MeshCost,
     .set = [](ComparisonRequest& r, double v) { r.options.n_elements = static_cast<int>(v); }};
 // No bound above: the reference's budget (reference/reference_cost.h) refuses what costs.
-// Without it, ComparisonAsked applies ReferenceTruncationRule.
 inline const NumberOption kRfrefOption{
     .names = {"--rfref", "rfref", ""},
     .help =
@@ -170,7 +172,11 @@ inline const NumberOption kRfrefOption{
         "sqrt(R_k)), as studies; raised until its estimated error is below 0.02)",
     .low = 1.0,
     .high = HUGE_VAL,
-    .set = [](ComparisonRequest& r, double v) { r.options.reference.r_fref = v; }};
+    .set = [](ComparisonRequest& r, double v) { r.options.reference.r_fref = v; },
+    .rule =
+        [](ComparisonRequest& r) {
+          r.options.reference.r_fref = ReferenceTruncationRule{}.For(r.problem.r_k);
+        }};
 
 // Every number option and every choice, in the order `shockmap compare --help` lists them.
 inline std::span<const NumberOption* const> ComparisonNumberOptions() {
@@ -201,8 +207,8 @@ struct GivenOptions {
 };
 
 // The comparison `given` asks for, as every front end runs it: each value checked by its
-// option and set through it, the others at their defaults, the reference's truncation, when not
-// given, by ReferenceTruncationRule for the problem's R_k; then the problem and the options
+// option and set through it, the others at their defaults or by their rules (the reference's
+// truncation: ReferenceTruncationRule for the problem's R_k); then the problem and the options
 // checked whole and their cost (CheckComparisonAffordable). Throws InputError naming the option
 // as `spelling` spells it: a required option missing, a value out of its range, a run beyond
 // its budget.

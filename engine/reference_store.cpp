@@ -3,9 +3,7 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <string>
-#include <type_traits>
 
 #include "db/stored_json.h"
 #include "formats/comparison_json.h"
@@ -57,11 +55,6 @@ void VisitStoredValues(Row& row, Run& run, Visit visit) {
   visit(row.force_n, run.force_n.values);
 }
 
-template <typename T>
-constexpr bool kIsOptional = false;
-template <typename T>
-constexpr bool kIsOptional<std::optional<T>> = true;
-
 }  // namespace
 
 ReferenceRow ToReferenceRow(const ReferenceRun& run, const std::string& reference_key, double r_k,
@@ -81,7 +74,7 @@ ReferenceRun FromReferenceRow(const ReferenceRow& row, const std::string& databa
   ReferenceRun run;
   VisitStoredValues(row, run, [&row](const auto& stored, auto& value) {
     // A reference stored before its parts were has its whole estimate as each part's bound.
-    if constexpr (kIsOptional<std::decay_t<decltype(stored)>>) {
+    if constexpr (requires { stored.value_or(row.convergence); }) {
       value = stored.value_or(row.convergence);
     } else {
       value = stored;

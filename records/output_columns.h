@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -42,15 +41,6 @@ std::vector<OutputValue> OutputValuesOf(const T& x, const Columns& columns) {
 
 namespace detail {
 
-template <typename T>
-struct HeldType {
-  using type = T;
-};
-template <typename T>
-struct HeldType<std::optional<T>> {
-  using type = T;
-};
-
 // Whether a member holding `Held` takes an output value of type V: a text a text, a real a real,
 // a flag or an integer any number.
 template <typename Held, typename V>
@@ -67,14 +57,14 @@ void AssignOutputValue(Member& member, const OutputValue& value, std::string_vie
       [&](const auto& v) {
         using V = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<V, std::monostate>) {
-          if constexpr (requires { member.reset(); }) {
+          if constexpr (ColumnValue<Member>::kNullable) {
             member.reset();
           } else {
             throw std::logic_error("output column " + std::string(name) +
                                    " is none where its record's column cannot be NULL");
           }
-        } else if constexpr (kTakes<typename HeldType<Member>::type, V>) {
-          member = static_cast<typename HeldType<Member>::type>(v);
+        } else if constexpr (kTakes<typename ColumnValue<Member>::Type, V>) {
+          member = static_cast<typename ColumnValue<Member>::Type>(v);
         } else {
           throw std::logic_error("output column " + std::string(name) +
                                  " does not fit its record's column");
